@@ -1,0 +1,58 @@
+/* fix nve/gear: integrates point masses (wire beads, or any atom with a mass) with the
+   6-value fifth-order Gear predictor–corrector, or with velocity Verlet.
+
+   fix ID group nve/gear [scheme gear5|verlet] [forces position|velocity]
+
+   The Gear history (x'' ... x^(5) per atom) migrates with the atoms and is written to
+   restart files, so a restarted run continues the same trajectory. */
+
+#ifdef FIX_CLASS
+
+FixStyle(nve/gear,FixNVEGear)
+
+#else
+
+#ifndef LMP_FIX_NVE_GEAR_H
+#define LMP_FIX_NVE_GEAR_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixNVEGear : public Fix {
+ public:
+  FixNVEGear(class LAMMPS *, int, char **);
+  ~FixNVEGear();
+  int setmask();
+  void init();
+  void setup(int);
+  void initial_integrate(int);
+  void final_integrate();
+  void reset_dt();
+  double memory_usage();
+
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  void set_arrays(int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
+  int pack_restart(int, double *);
+  void unpack_restart(int, int);
+  int size_restart(int);
+  int maxsize_restart();
+
+ private:
+  enum Scheme { GEAR5, VERLET };
+  Scheme scheme_;
+  bool velocity_forces_;   // Gear c0 = 3/20 instead of 3/16
+  double dt_;
+  // per atom: 12 history values (x'', x''', x^(4), x^(5)) and a started flag
+  double **history_;
+  double mass_of(int i) const;
+  void start_history(int i);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

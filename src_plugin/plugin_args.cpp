@@ -1,0 +1,76 @@
+#include "plugin_args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+
+#include "error.h"
+
+namespace wiregrain_lmp {
+
+namespace {
+std::string make_prefix(const std::string& kind, const std::string& style, const std::string& id) {
+  return kind + " " + style + " (id " + id + "): ";
+}
+}  // namespace
+
+StyleArgs::StyleArgs(LAMMPS_NS::Error* error, std::string kind, std::string style,
+                     std::string id, int narg, char** arg, int first)
+    : error_(error), prefix_(make_prefix(kind, style, id)), narg_(narg), arg_(arg), pos_(first) {}
+
+std::string StyleArgs::next_keyword() { return std::string(arg_[pos_++]); }
+
+std::string StyleArgs::value_word(const std::string& keyword) {
+  if (pos_ >= narg_) fail("missing value after '" + keyword + "'");
+  return std::string(arg_[pos_++]);
+}
+
+double StyleArgs::value_double(const std::string& keyword) {
+  const std::string word = value_word(keyword);
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(word.c_str(), &end);
+  if (end == word.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    fail("value of '" + keyword + "' must be a finite number, got '" + word + "'");
+  return v;
+}
+
+long StyleArgs::value_int(const std::string& keyword) {
+  const std::string word = value_word(keyword);
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(word.c_str(), &end, 10);
+  if (end == word.c_str() || *end != '\0' || errno == ERANGE)
+    fail("value of '" + keyword + "' must be an integer, got '" + word + "'");
+  return v;
+}
+
+double StyleArgs::value_positive(const std::string& keyword) {
+  const double v = value_double(keyword);
+  if (!(v > 0.0)) fail("value of '" + keyword + "' must be > 0, got " + arg_[pos_ - 1]);
+  return v;
+}
+
+double StyleArgs::value_nonnegative(const std::string& keyword) {
+  const double v = value_double(keyword);
+  if (!(v >= 0.0)) fail("value of '" + keyword + "' must be >= 0, got " + arg_[pos_ - 1]);
+  return v;
+}
+
+void StyleArgs::unknown_keyword(const std::string& keyword) const {
+  fail("unknown keyword '" + keyword + "'");
+}
+
+void StyleArgs::fail(const std::string& what) const {
+  error_->all(FLERR, (prefix_ + what).c_str());
+  std::abort();  // error->all does not return; keeps [[noreturn]] honest
+}
+
+void style_error(LAMMPS_NS::Error* error, const std::string& kind, const std::string& style,
+                 const std::string& id, const std::string& what) {
+  error->all(FLERR, (make_prefix(kind, style, id) + what).c_str());
+  std::abort();
+}
+
+}  // namespace wiregrain_lmp

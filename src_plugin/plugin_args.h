@@ -1,0 +1,51 @@
+// Argument parsing and error messages shared by the plugin's LIGGGHTS styles.
+// Every message reads "<kind> <style> (id <ID>): <what>", so a user sees which
+// command and which argument are wrong; LIGGGHTS prefixes it with "ERROR: ".
+#ifndef WIREGRAIN_PLUGIN_ARGS_H
+#define WIREGRAIN_PLUGIN_ARGS_H
+
+#include <string>
+
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace wiregrain_lmp {
+
+class StyleArgs {
+ public:
+  // kind: "fix", "pair", "compute", ...; style and id as the user gave them.
+  StyleArgs(LAMMPS_NS::Error* error, std::string kind, std::string style, std::string id,
+            int narg, char** arg, int first);
+
+  bool done() const { return pos_ >= narg_; }
+  // the next word, for keyword dispatch
+  std::string next_keyword();
+  // the value following `keyword`; stops with "missing value after 'keyword'"
+  std::string value_word(const std::string& keyword);
+  double value_double(const std::string& keyword);
+  long value_int(const std::string& keyword);
+  // value_double with a domain check, e.g. "value of 'E' must be > 0, got -1"
+  double value_positive(const std::string& keyword);
+  double value_nonnegative(const std::string& keyword);
+
+  [[noreturn]] void unknown_keyword(const std::string& keyword) const;
+  [[noreturn]] void fail(const std::string& what) const;
+  const std::string& prefix() const { return prefix_; }
+
+ private:
+  LAMMPS_NS::Error* error_;
+  std::string prefix_;
+  int narg_;
+  char** arg_;
+  int pos_;
+};
+
+// "<kind> <style> (id <ID>): <what>" through error->all, for checks outside parsing.
+[[noreturn]] void style_error(LAMMPS_NS::Error* error, const std::string& kind,
+                              const std::string& style, const std::string& id,
+                              const std::string& what);
+
+}  // namespace wiregrain_lmp
+
+#endif
