@@ -95,9 +95,10 @@ WireChainElasticity wire_chain_elasticity(const std::vector<Eigen::Vector3d>& no
 double wire_axial_frequency_max(const WireMaterial& material);
 double wire_bending_frequency_max(const WireMaterial& material);
 // dt_crit = 2 / ω_max: the stability limit of velocity Verlet (central differences) for
-// the elastic forces alone (contacts add their own stiffness). Run at a fraction of it;
-// docs/core_wire.md gives the measured limit of the Gear predictor–corrector, which is
-// smaller. +infinity when m_elo = m_rot = 0.
+// the elastic forces alone (contacts add their own stiffness). Run at a fraction of it:
+// the fifth-order Gear predictor–corrector (c0 = 3/16) is stable on a harmonic mode only
+// for ω dt < 0.313, i.e. dt < 0.156 dt_crit, so use dt ≤ 0.1 dt_crit with Gear
+// (docs/core_wire.md). +infinity when m_elo = m_rot = 0.
 double wire_critical_time_step(const WireMaterial& material);
 
 }  // namespace wiregrain

@@ -3,8 +3,10 @@
 // the Verlet stability limit.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -416,12 +418,14 @@ TEST(WireDynamics, TwoNodeAxialVibrationWithGear) {
 
 namespace {
 
+enum class Scheme { verlet, gear5 };
+
 // A straight free chain of `nodes` nodes along x, every node displaced by
 // amplitude·(−1)^k along `axis` (the zigzag pattern, whose projection is largest on the
-// highest modes), integrated by velocity Verlet for `steps` steps at `dt`. Returns the
-// largest total (kinetic + elastic) energy over the run divided by the initial one.
-double verlet_energy_growth(const WireMaterial& m, int nodes, int axis, double amplitude,
-                            double dt, long steps) {
+// highest modes), integrated from rest for `steps` steps at `dt`. Returns the largest
+// total (kinetic + elastic) energy over the run divided by the initial one.
+double energy_growth(Scheme scheme, const WireMaterial& m, int nodes, int axis,
+                     double amplitude, double dt, long steps) {
   const double l = m.segment_length, mass = m.node_mass();
   std::vector<Vector3d> x(nodes), v(nodes, Vector3d::Zero());
   for (int k = 0; k < nodes; ++k) {
@@ -429,6 +433,12 @@ double verlet_energy_growth(const WireMaterial& m, int nodes, int axis, double a
     x[k][axis] += (k % 2 == 0 ? 1.0 : -1.0) * amplitude;
   }
   WireChainElasticity c = wire_chain_elasticity(x, m);
+  std::vector<std::array<double, kGearHistorySize>> history(nodes);
+  for (int k = 0; k < nodes; ++k) {
+    const Vector3d a = c.forces[k] / mass;
+    gear5_start(history[k].data(), a.data());
+  }
+  const GearCorrector corrector(GearCoefficients::position_forces(), dt);
   const auto kinetic = [&]() {
     double e = 0.0;
     for (const auto& vk : v) e += 0.5 * mass * vk.squaredNorm();
@@ -437,20 +447,47 @@ double verlet_energy_growth(const WireMaterial& m, int nodes, int axis, double a
   const double e0 = c.total_energy();
   double largest = e0;
   for (long s = 0; s < steps; ++s) {
-    for (int k = 0; k < nodes; ++k) {
-      const Vector3d a = c.forces[k] / mass;
-      verlet_kick_drift(x[k].data(), v[k].data(), a.data(), dt);
-    }
-    c = wire_chain_elasticity(x, m);
-    for (int k = 0; k < nodes; ++k) {
-      const Vector3d a = c.forces[k] / mass;
-      verlet_kick(v[k].data(), a.data(), dt);
+    if (scheme == Scheme::verlet) {
+      for (int k = 0; k < nodes; ++k) {
+        const Vector3d a = c.forces[k] / mass;
+        verlet_kick_drift(x[k].data(), v[k].data(), a.data(), dt);
+      }
+      c = wire_chain_elasticity(x, m);
+      for (int k = 0; k < nodes; ++k) {
+        const Vector3d a = c.forces[k] / mass;
+        verlet_kick(v[k].data(), a.data(), dt);
+      }
+    } else {
+      for (int k = 0; k < nodes; ++k)
+        gear5_predict(x[k].data(), v[k].data(), history[k].data(), dt);
+      c = wire_chain_elasticity(x, m);
+      for (int k = 0; k < nodes; ++k) {
+        const Vector3d a = c.forces[k] / mass;
+        gear5_correct(x[k].data(), v[k].data(), history[k].data(), a.data(), corrector);
+      }
     }
     const double e = kinetic() + c.total_energy();
     largest = std::max(largest, e);
     if (!(e < 1e6 * e0)) return e / e0;  // blown up (or NaN)
   }
   return largest / e0;
+}
+
+// Spectral radius of one Gear step (predict + correct, c0 = 3/16) on x'' = −ω² x, as a
+// function of ω dt: the 6×6 linear map of (x, v, x'', x''', x⁽⁴⁾, x⁽⁵⁾), column by column.
+double gear5_spectral_radius(double omega_dt) {
+  Eigen::Matrix<double, 6, 6> step;
+  const GearCorrector corrector(GearCoefficients::position_forces(), 1.0);
+  for (int col = 0; col < 6; ++col) {
+    double x[3] = {0, 0, 0}, v[3] = {0, 0, 0}, h[kGearHistorySize] = {};
+    double* state[6] = {&x[0], &v[0], &h[0], &h[3], &h[6], &h[9]};
+    *state[col] = 1.0;
+    gear5_predict(x, v, h, 1.0);
+    const double a[3] = {-omega_dt * omega_dt * x[0], 0.0, 0.0};
+    gear5_correct(x, v, h, a, corrector);
+    for (int row = 0; row < 6; ++row) step(row, col) = *state[row];
+  }
+  return step.eigenvalues().cwiseAbs().maxCoeff();
 }
 
 }  // namespace
@@ -475,8 +512,8 @@ TEST(WireTimeStep, VerletStabilityLimitAxial) {
   const WireMaterial m;
   const double dt_crit = wire_critical_time_step(m);
   const double amplitude = 0.01 * m.segment_length;
-  const double stable = verlet_energy_growth(m, 64, 0, amplitude, 0.9 * dt_crit, 20000);
-  const double unstable = verlet_energy_growth(m, 64, 0, amplitude, 1.1 * dt_crit, 2000);
+  const double stable = energy_growth(Scheme::verlet, m, 64, 0, amplitude, 0.9 * dt_crit, 20000);
+  const double unstable = energy_growth(Scheme::verlet, m, 64, 0, amplitude, 1.1 * dt_crit, 2000);
   std::printf("axial zigzag, Verlet: energy growth %.3g at 0.9 dt_crit, %.3g at 1.1 dt_crit\n",
               stable, unstable);
   EXPECT_LT(stable, 10.0);
@@ -491,10 +528,35 @@ TEST(WireTimeStep, VerletStabilityLimitBending) {
   m.rotation_multiplier = 1.0;
   const double dt_crit = wire_critical_time_step(m);
   const double amplitude = 1e-6 * m.segment_length;
-  const double stable = verlet_energy_growth(m, 64, 1, amplitude, 0.9 * dt_crit, 20000);
-  const double unstable = verlet_energy_growth(m, 64, 1, amplitude, 1.1 * dt_crit, 2000);
+  const double stable = energy_growth(Scheme::verlet, m, 64, 1, amplitude, 0.9 * dt_crit, 20000);
+  const double unstable = energy_growth(Scheme::verlet, m, 64, 1, amplitude, 1.1 * dt_crit, 2000);
   std::printf("bending zigzag, Verlet: energy growth %.3g at 0.9 dt_crit, %.3g at 1.1 dt_crit\n",
               stable, unstable);
   EXPECT_LT(stable, 10.0);
+  EXPECT_GT(unstable, 1e3);
+}
+
+// The fifth-order Gear predictor–corrector has a much shorter stability interval than
+// Verlet: its one-step map on a harmonic mode has spectral radius ≤ 1 only up to
+// ω dt ≈ 0.31 (printed), beyond which the growth is slow at first (1e-4 per step at
+// ω dt = 0.5) and fast later (0.3 per step at ω dt = 1). Hence the recommendation
+// dt ≤ 0.1 dt_crit for Gear (ω_max dt ≤ 0.2). The chain at 0.1 dt_crit stays bounded;
+// at 0.5 dt_crit (ω_max dt = 1) it blows up.
+TEST(WireTimeStep, GearNeedsASmallerFraction) {
+  double lo = 0.1, hi = 1.0;  // bisection for the end of the stable interval
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (gear5_spectral_radius(mid) <= 1.0 + 1e-12 ? lo : hi) = mid;
+  }
+  std::printf("gear5 stable for omega*dt < %.4f, i.e. dt < %.4f dt_crit\n", lo, lo / 2.0);
+  EXPECT_GT(lo, 0.2);  // the recommended fraction 0.1 dt_crit is inside
+  const WireMaterial m;
+  const double dt_crit = wire_critical_time_step(m);
+  const double amplitude = 0.01 * m.segment_length;
+  const double stable = energy_growth(Scheme::gear5, m, 64, 0, amplitude, 0.1 * dt_crit, 20000);
+  const double unstable = energy_growth(Scheme::gear5, m, 64, 0, amplitude, 0.5 * dt_crit, 2000);
+  std::printf("axial zigzag, gear5: energy growth %.3g at 0.1 dt_crit, %.3g at 0.5 dt_crit\n",
+              stable, unstable);
+  EXPECT_LT(stable, 1.01);
   EXPECT_GT(unstable, 1e3);
 }
