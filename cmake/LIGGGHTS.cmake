@@ -61,7 +61,11 @@ endif()
 
 # ---------------------------------------------------------------------------------------
 # 2. stage, patch, generate style headers
-set(LIGGGHTS_STAGE "${CMAKE_BINARY_DIR}/liggghts")
+set(LIGGGHTS_STAGE "${CMAKE_BINARY_DIR}/liggghts-staged")
+# style class macro : generated header style_<kind>.h that the plugin may add to
+set(_style_classes ANGLE_CLASS:angle ATOM_CLASS:atom BOND_CLASS:bond COMMAND_CLASS:command
+    COMPUTE_CLASS:compute DUMP_CLASS:dump FIX_CLASS:fix PAIR_CLASS:pair REGION_CLASS:region)
+
 set(LIGGGHTS_STAGED_SRC "${LIGGGHTS_STAGE}/src")
 file(GLOB _patches "${CMAKE_SOURCE_DIR}/cmake/patches/*.patch")
 list(SORT _patches)
@@ -101,18 +105,21 @@ if(NOT _old_key STREQUAL _stage_key)
   string(STRIP "${_vers}" _vers)
   file(WRITE "${LIGGGHTS_STAGED_SRC}/version_liggghts.h"
        "#define LIGGGHTS_VERSION \"PUBLIC ${_vers} + wiregrain ${PROJECT_VERSION}\"\n")
-  # keep the generated style headers so the plugin includes can be re-appended
-  file(GLOB _gen "${LIGGGHTS_STAGED_SRC}/style_*.h")
-  foreach(_g IN LISTS _gen)
-    file(RENAME "${_g}" "${_g}.upstream")
+  # keep the generated style headers the plugin adds to, so its includes can be re-appended
+  foreach(_entry IN LISTS _style_classes)
+    string(REGEX REPLACE ".*:" "" _kind "${_entry}")
+    set(_g "${LIGGGHTS_STAGED_SRC}/style_${_kind}.h")
+    if(EXISTS "${_g}")
+      file(RENAME "${_g}" "${_g}.upstream")
+    else()
+      file(WRITE "${_g}.upstream" "")
+    endif()
   endforeach()
   file(WRITE "${_stamp}" "${_stage_key}")
 endif()
 
 # Append the plugin style headers to the generated style_*.h. A header registers a style
 # when it holds the class macro block (e.g. "#ifdef FIX_CLASS") as LIGGGHTS' own do.
-set(_style_classes ANGLE_CLASS:angle ATOM_CLASS:atom BOND_CLASS:bond COMMAND_CLASS:command
-    COMPUTE_CLASS:compute DUMP_CLASS:dump FIX_CLASS:fix PAIR_CLASS:pair REGION_CLASS:region)
 file(GLOB PLUGIN_STYLE_HEADERS CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.h")
 file(GLOB PLUGIN_STYLE_SOURCES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.cpp")
 set(WIREGRAIN_REGISTERED_STYLES "")
@@ -121,10 +128,7 @@ foreach(_entry IN LISTS _style_classes)
   list(GET _pair 0 _macro)
   list(GET _pair 1 _kind)
   set(_file "${LIGGGHTS_STAGED_SRC}/style_${_kind}.h")
-  set(_text "")
-  if(EXISTS "${_file}.upstream")
-    file(READ "${_file}.upstream" _text)
-  endif()
+  file(READ "${_file}.upstream" _text)
   foreach(_h IN LISTS PLUGIN_STYLE_HEADERS)
     file(STRINGS "${_h}" _hits REGEX "^#ifdef ${_macro}$")
     if(_hits)

@@ -117,9 +117,10 @@ void FixNVEGear::final_integrate() {
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const wiregrain::GearCoefficients coeff = velocity_forces_
+  const wiregrain::GearCorrector corrector(velocity_forces_
                                                 ? wiregrain::GearCoefficients::velocity_forces()
-                                                : wiregrain::GearCoefficients::position_forces();
+                                                : wiregrain::GearCoefficients::position_forces(),
+                                            dt_);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double inv_m = force->ftm2v / mass_of(i);
@@ -132,7 +133,7 @@ void FixNVEGear::final_integrate() {
       wiregrain::gear5_start(history_[i], a);
       history_[i][kStartedFlag] = 1.0;
     } else {
-      wiregrain::gear5_correct(x[i], v[i], history_[i], a, dt_, coeff);
+      wiregrain::gear5_correct(x[i], v[i], history_[i], a, corrector);
     }
   }
 }

@@ -1,0 +1,127 @@
+"""fix nve/gear against analytic motions, against stock fix nve, and its error messages."""
+
+import math
+
+import numpy as np
+
+from liggghts_run import DeckTestCase, deck, main, read_dump, run
+
+POINT_MASS = """
+units           lj
+atom_style      atomic
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -50 50 -50 50 -50 50
+create_box      1 box
+create_atoms    1 single 0.0 0.0 0.0
+mass            1 2.0
+velocity        all set {vx} 0.0 {vz}
+timestep        {dt}
+{forces}
+fix             integr all nve/gear {options}
+variable        x equal x[1]
+variable        z equal z[1]
+variable        vz equal vz[1]
+thermo_style    custom step time v_x v_z v_vz
+thermo_modify   format float %.17g
+thermo          {every}
+run             {steps}
+"""
+
+
+def point_mass(forces, options="", dt=0.01, steps=1000, every=100, vx=0.0, vz=0.0):
+    text = POINT_MASS.format(forces=forces, options=options, dt=dt, steps=steps, every=every,
+                             vx=vx, vz=vz)
+    return run(text)
+
+
+class FreeFall(DeckTestCase):
+    # Under constant gravity both schemes reproduce z = v0 t - g t²/2 to round-off.
+    def test_free_fall_exact(self):
+        for scheme in ("gear5", "verlet"):
+            r = point_mass("fix grav all gravity 1.5 vector 0 0 -1", f"scheme {scheme}", vz=3.0)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            z_exact = 3.0 * t["Time"] - 0.5 * 1.5 * t["Time"] ** 2
+            self.assertLess(np.max(np.abs(t["z"] - z_exact)), 1e-11, scheme)
+            self.assertLess(np.max(np.abs(t["vz"] - (3.0 - 1.5 * t["Time"]))), 1e-11, scheme)
+
+
+class Oscillator(DeckTestCase):
+    """A mass on fix spring/self (k = 2, m = 2, so omega = 1)."""
+
+    def error(self, scheme, dt, start):
+        # start "rest": released at rest from x0 = 1, x(t) = cos t (initial jerk 0);
+        # start "moving": from x0 = 0 with v0 = 1, x(t) = sin t (initial jerk -1).
+        if start == "rest":
+            forces, vx, exact = "fix spring all spring/self 2.0\nset atom 1 x 1.0", 0.0, np.cos
+        else:
+            forces, vx, exact = "fix spring all spring/self 2.0", 1.0, np.sin
+        r = point_mass(forces, f"scheme {scheme}", dt=dt, steps=int(round(20.0 / dt)),
+                       every=int(round(1.0 / dt)), vx=vx)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        return np.max(np.abs(t["x"] - exact(t["Time"])))
+
+    def errors(self, start):
+        e = {(s, dt): self.error(s, dt, start) for s in ("gear5", "verlet") for dt in (0.02, 0.01)}
+        print(f"oscillator from {start}, max error over 20 time units (dt 0.02 / 0.01): "
+              f"gear5 {e['gear5', 0.02]:.3e} / {e['gear5', 0.01]:.3e}, "
+              f"verlet {e['verlet', 0.02]:.3e} / {e['verlet', 0.01]:.3e}")
+        return e
+
+    def test_gear_from_rest_is_high_order(self):
+        e = self.errors("rest")
+        self.assertAlmostEqual(math.log2(e["verlet", 0.02] / e["verlet", 0.01]), 2.0, delta=0.1)
+        self.assertGreater(math.log2(e["gear5", 0.02] / e["gear5", 0.01]), 3.8)
+        self.assertLess(e["gear5", 0.01], 1e-2 * e["verlet", 0.01])
+
+    def test_gear_started_with_unknown_jerk(self):
+        # The history starts with jerk 0 although the true jerk is -1: a start-up error
+        # of order dt^2 remains, still well below Verlet's.
+        e = self.errors("moving")
+        self.assertAlmostEqual(math.log2(e["gear5", 0.02] / e["gear5", 0.01]), 2.0, delta=0.1)
+        self.assertLess(e["gear5", 0.01], 0.2 * e["verlet", 0.01])
+
+
+class SameAsStockNve(DeckTestCase):
+    # scheme verlet is velocity Verlet, as stock fix nve: the settling example must give the
+    # same trajectory up to round-off.
+    def test_verlet_matches_fix_nve(self):
+        text = deck("examples/settle_gear/in.settle_gear")
+        stock = text.replace("nve/gear scheme ${scheme}", "nve")
+        self.assertNotEqual(stock, text)
+        settings = {"scheme": "verlet", "nsteps": 400, "dumpevery": 400}
+        runs = {"verlet": run(text, variables=settings), "nve": run(stock, variables=settings)}
+        for r in runs.values():
+            self.assertRanCleanly(r)
+        a = read_dump(runs["verlet"].path("dump.settle_gear"))
+        b = read_dump(runs["nve"].path("dump.settle_gear"))
+        self.assertEqual(len(a["id"]), len(b["id"]))
+        self.assertGreater(len(a["id"]), 400)
+        for c in ("x", "y", "z", "vx", "vy", "vz"):
+            self.assertLess(np.max(np.abs(a[c] - b[c])), 1e-12, c)
+
+
+class BadInput(DeckTestCase):
+    def check(self, options, message):
+        r = point_mass("", options, steps=10)
+        self.assertStopsWith(r, message)
+
+    def test_unknown_keyword(self):
+        self.check("schme gear5", "fix nve/gear (id integr): unknown keyword 'schme'")
+
+    def test_missing_value(self):
+        self.check("scheme", "fix nve/gear (id integr): missing value after 'scheme'")
+
+    def test_bad_scheme(self):
+        self.check("scheme rk4",
+                   "fix nve/gear (id integr): value of 'scheme' must be gear5 or verlet, got 'rk4'")
+
+    def test_bad_forces(self):
+        self.check("forces both",
+                   "fix nve/gear (id integr): value of 'forces' must be position or velocity")
+
+
+if __name__ == "__main__":
+    main()

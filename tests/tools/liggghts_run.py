@@ -1,0 +1,130 @@
+"""Run build/liggghts on a deck and read what it wrote; shared by the styles and
+regression tests. Paths come from the environment that ctest sets:
+LIGGGHTS (the executable), MPIEXEC (mpirun), WIREGRAIN_SOURCE (repository root)."""
+
+import os
+import re
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+
+LIGGGHTS = os.environ.get("LIGGGHTS", "liggghts")
+MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
+SOURCE = os.environ.get("WIREGRAIN_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
+TIMEOUT = 600
+
+
+class Run:
+    """The outcome of one liggghts run: return code, screen output, working directory."""
+
+    def __init__(self, returncode, output, workdir):
+        self.returncode = returncode
+        self.output = output
+        self.workdir = workdir
+
+    def path(self, name):
+        return os.path.join(self.workdir, name)
+
+    def errors(self):
+        return [line for line in self.output.splitlines() if line.startswith("ERROR")]
+
+    def thermo(self):
+        """The thermo table of the last run as {column: numpy array}."""
+        lines = self.output.splitlines()
+        heads = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]]
+        if not heads:
+            raise AssertionError("no thermo output found:\n" + self.output[-3000:])
+        header = lines[heads[-1]].split()
+        rows = []
+        for line in lines[heads[-1] + 1:]:
+            words = line.split()
+            if len(words) != len(header):
+                break
+            try:
+                rows.append([float(w) for w in words])
+            except ValueError:
+                break
+        data = np.array(rows)
+        return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_args=()):
+    """Write deck_text to in.deck in a fresh directory (or workdir) and run it.
+    files: {name: text} written next to the deck."""
+    workdir = workdir or tempfile.mkdtemp(prefix="wiregrain-")
+    with open(os.path.join(workdir, "in.deck"), "w") as f:
+        f.write(deck_text)
+    for name, text in (files or {}).items():
+        with open(os.path.join(workdir, name), "w") as f:
+            f.write(text)
+    cmd = [LIGGGHTS, "-echo", "screen", "-log", "log.liggghts", "-in", "in.deck"]
+    for key, value in (variables or {}).items():
+        cmd += ["-var", key, str(value)]
+    cmd += list(extra_args)
+    if np_ranks > 1:
+        cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(np_ranks)] + cmd
+    env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
+    proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          stdin=subprocess.DEVNULL, timeout=TIMEOUT, env=env)
+    return Run(proc.returncode, proc.stdout.decode(errors="replace"), workdir)
+
+
+def read_dump(path, columns=None):
+    """Last snapshot of a LAMMPS 'dump custom' text file as {column: array}, sorted by id."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
+    if not starts:
+        raise AssertionError(f"{path}: no snapshot")
+    block = lines[starts[-1]:]
+    natoms = int(block[3])
+    k = next(k for k, line in enumerate(block) if line.startswith("ITEM: ATOMS"))
+    names = block[k].split()[2:]
+    data = np.array([[float(w) for w in line.split()] for line in block[k + 1:k + 1 + natoms]])
+    data = data.reshape(natoms, len(names))
+    if "id" in names:
+        data = data[np.argsort(data[:, names.index("id")])]
+    return {name: data[:, j] for j, name in enumerate(names)}
+
+
+def align_by_position(reference, other, columns=("x", "y", "z")):
+    """Reorder the snapshot `other` so that atom k is the one nearest to atom k of
+    `reference` (atom ids from create_atoms depend on the MPI decomposition)."""
+    p = np.column_stack([reference[c] for c in columns])
+    q = np.column_stack([other[c] for c in columns])
+    assert len(p) == len(q), (len(p), len(q))
+    d2 = ((p[:, None, :] - q[None, :, :]) ** 2).sum(axis=2)
+    order = np.argmin(d2, axis=1)
+    assert len(set(order.tolist())) == len(order), "positions do not match one to one"
+    return {name: values[order] for name, values in other.items()}
+
+
+def deck(name):
+    """Text of a deck shipped in the repository (path relative to the repository root)."""
+    with open(os.path.join(SOURCE, name)) as f:
+        return f.read()
+
+
+class DeckTestCase(unittest.TestCase):
+    """Assertions shared by deck tests."""
+
+    def assertRanCleanly(self, result):
+        if result.returncode != 0 or result.errors():
+            self.fail(f"liggghts failed (exit {result.returncode}) in {result.workdir}:\n"
+                      + result.output[-4000:])
+
+    def assertStopsWith(self, result, message):
+        """The run must stop with 'ERROR: <message>' (and not crash or hang)."""
+        errors = result.errors()
+        self.assertNotEqual(result.returncode, 0, "run did not fail:\n" + result.output[-2000:])
+        self.assertTrue(errors, "no ERROR line; output:\n" + result.output[-2000:])
+        self.assertTrue(any(message in line for line in errors),
+                        f"expected an ERROR line containing {message!r}, got {errors}")
+        for crash in ("Segmentation fault", "Aborted", "core dumped", "signal"):
+            self.assertNotIn(crash, result.output)
+
+
+def main():
+    unittest.main(verbosity=2)
