@@ -1,0 +1,153 @@
+// Convex polyhedral grain shapes (spheropolyhedra) and their exact mass properties.
+//
+// A ConvexShape is a convex polyhedron P given in its own frame (vertices, edges and
+// faces) together with a sweep radius r >= 0: the grain is the spheropolyhedron
+// P ⊕ B_r (Minkowski sum of P and a ball of radius r), i.e. every point within distance r
+// of P. Conventions:
+//   - faces are vertex-index loops, counter-clockwise seen from outside, so that the
+//     outward unit normal n satisfies n ∝ Σ_i v_i × v_{i+1} (Newell); coplanar triangles
+//     of the hull are merged into one convex polygon (a cube has 6 quadrilaterals), and
+//     vertices that are not corners of the hull (on an edge or inside a face) are dropped;
+//   - each face stores its plane n·x = offset; every vertex satisfies n·x <= offset;
+//   - edges are vertex-index pairs (i < j), each shared by exactly two faces.
+//
+// Mass properties come in two flavours, both exact (closed form, rounding only):
+//   - "sharp": the polyhedron P alone, without the dilation by r;
+//   - "dilated": the spheropolyhedron P ⊕ B_r, decomposed into P, one prism r thick on
+//     every face, one cylindrical wedge on every edge and one spherical sector on every
+//     vertex (the Steiner decomposition of a convex body's parallel set).
+// Which one a simulation uses is the caller's choice; the difference is O(r·area/volume).
+//
+// Input errors throw wiregrain::InvalidArgument whose argument() is the C++ parameter name
+// below (n_vertices, a, b_over_a, c_over_a, sweep_radius, points, path, edge, ...).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace wiregrain {
+
+// Volume, mass, centre of mass and inertia tensor about the centre of mass, in the axes
+// of the frame the shape is given in.
+struct MassProperties {
+  double volume = 0.0;
+  double mass = 0.0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+};
+
+// Principal moments (ascending) and principal axes (columns, a right-handed rotation
+// matrix: det = +1) of a symmetric inertia tensor: inertia = axes · diag(moments) · axesᵀ.
+struct PrincipalAxes {
+  Eigen::Vector3d moments = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+};
+
+// Which body the mass properties describe: the polyhedron alone or the dilated grain.
+enum class MassModel { sharp_polyhedron, dilated };
+
+class ConvexShape {
+ public:
+  struct Face {
+    std::vector<int> vertices;  // counter-clockwise seen from outside
+    Eigen::Vector3d normal;     // outward unit normal
+    double offset = 0.0;        // plane: normal · x = offset
+  };
+
+  // Convex hull (CGAL, exact predicates) of at least 4 points that span a volume.
+  // Rejects: fewer than 4 points, two points closer than 1e-10 times the size of the
+  // point cloud (duplicates), all points within 1e-10 times that size of one plane
+  // (flat or collinear: zero volume), non-finite coordinates, sweep_radius < 0.
+  static ConvexShape from_points(const std::vector<Eigen::Vector3d>& points,
+                                 double sweep_radius);
+
+  // Convex hull of n_vertices random points on the surface of the ellipsoid with
+  // semi-axes a ≥ b ≥ c along x, y, z (b = b_over_a·a, c = c_over_a·a). Each point is a
+  // direction drawn uniformly on the unit sphere (z uniform in [-1, 1], azimuth uniform:
+  // Archimedes) scaled by (a, b, c); the points are therefore denser near the ends of
+  // the long axis than an area-uniform sample would be. Every point is a hull vertex
+  // (the ellipsoid is strictly convex). The random numbers are taken from the raw
+  // 64-bit output of the engine, so a seed gives the same shape on every platform.
+  // Rejects n_vertices < 4, a <= 0, b_over_a outside (0, 1], c_over_a outside
+  // (0, b_over_a], sweep_radius < 0.
+  static ConvexShape random_ellipsoid(std::mt19937_64& rng, int n_vertices, double a,
+                                      double b_over_a, double c_over_a,
+                                      double sweep_radius);
+  static ConvexShape random_ellipsoid(std::uint64_t seed, int n_vertices, double a,
+                                      double b_over_a, double c_over_a,
+                                      double sweep_radius);
+
+  // Regular solids centred at the origin (for tests and simple setups).
+  static ConvexShape cube(double edge, double sweep_radius = 0.0);
+  static ConvexShape box(double lx, double ly, double lz, double sweep_radius = 0.0);
+  static ConvexShape regular_tetrahedron(double edge, double sweep_radius = 0.0);
+  static ConvexShape regular_octahedron(double edge, double sweep_radius = 0.0);
+
+  // Hull of the points in a text file, one "x y z" per line; '#' starts a comment,
+  // blank lines are skipped. An unreadable file or a malformed line throws
+  // InvalidArgument("path", ...) naming the file (and the line).
+  static ConvexShape from_vertex_file(const std::string& path, double sweep_radius);
+
+  const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
+  const std::vector<std::array<int, 2>>& edges() const { return edges_; }
+  const std::vector<Face>& faces() const { return faces_; }
+  double sweep_radius() const { return sweep_radius_; }
+  // max |v| over the vertices plus the sweep radius: the radius of a sphere about the
+  // frame origin that contains the grain (about the centroid once in the body frame).
+  double bounding_radius() const;
+
+  // The same shape moved rigidly: every point x becomes rotation·x + translation.
+  // `rotation` must be a rotation matrix (orthonormal, det +1).
+  ConvexShape transformed(const Eigen::Matrix3d& rotation,
+                          const Eigen::Vector3d& translation) const;
+
+  // Exact mass properties of the polyhedron P (no dilation) for a uniform density:
+  // divergence theorem on signed tetrahedra (reference point, face-fan triangle), with
+  // ∫_T x xᵀ dV = V_T/20 (Σ_k v_k v_kᵀ + s sᵀ), s = Σ_k v_k, over the 4 vertices of T.
+  MassProperties sharp_mass_properties(double density) const;
+
+  // Exact mass properties of the spheropolyhedron P ⊕ B_r. Its volume is Steiner's
+  // V_r = V + S r + (r²/2) Σ_edges L_e α_e + (4π/3) r³ (α_e: angle between the normals
+  // of the edge's two faces). See convex_shape.cpp for the pieces' moments.
+  MassProperties dilated_mass_properties(double density) const;
+
+  MassProperties mass_properties(double density, MassModel model) const;
+
+ private:
+  ConvexShape() = default;
+  // Builds faces/edges from a triangulated hull; merges coplanar triangles.
+  static ConvexShape from_hull_triangles(const std::vector<Eigen::Vector3d>& points,
+                                         const std::vector<std::array<int, 3>>& triangles,
+                                         double sweep_radius, double length_scale);
+
+  std::vector<Eigen::Vector3d> vertices_;
+  std::vector<std::array<int, 2>> edges_;
+  std::vector<Face> faces_;
+  double sweep_radius_ = 0.0;
+};
+
+// Principal moments (ascending) and right-handed principal axes of an inertia tensor
+// (Eigen::SelfAdjointEigenSolver).
+PrincipalAxes principal_axes(const Eigen::Matrix3d& inertia);
+
+// A shape re-expressed in its body frame: centre of mass at the origin, principal axes
+// of inertia along x, y, z with ascending moments, right-handed. A point x_body of the
+// body-frame shape is the point  rotation · x_body + centroid  of the input shape.
+struct BodyFrameShape {
+  ConvexShape shape;
+  Eigen::Quaterniond rotation;      // body frame -> input frame (unit quaternion)
+  Eigen::Vector3d centroid;         // centre of mass in the input frame
+  MassProperties mass;              // in the body frame: centroid 0, inertia diagonal
+  Eigen::Vector3d principal_moments;  // ascending, = mass.inertia diagonal
+};
+
+// Body frame from the mass properties of the chosen model (sharp or dilated).
+BodyFrameShape to_body_frame(const ConvexShape& shape, double density,
+                             MassModel model = MassModel::sharp_polyhedron);
+
+}  // namespace wiregrain
