@@ -30,6 +30,7 @@ class FixNVEGear : public Fix {
   void final_integrate();
   void reset_dt();
   double memory_usage();
+  bool uses_gear() const { return scheme_ == GEAR5; }
 
   void grow_arrays(int);
   void copy_arrays(int, int, int);

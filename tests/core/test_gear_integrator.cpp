@@ -105,3 +105,23 @@ TEST(GearIntegrator, HistoryNeverSubnormalAfterPulse) {
   EXPECT_EQ(subnormal_steps, 0);
   for (int k = 3; k < kGearHistorySize; ++k) EXPECT_EQ(h[k], 0.0) << k;
 }
+
+// The stability bound kGear5StableOmegaDt: an oscillator integrated at ω·dt just below it
+// keeps its amplitude, just above it the amplitude grows (slowly: +12 % over 2e5 steps).
+TEST(GearIntegrator, StabilityBoundOnHarmonicMode) {
+  const auto amplitude_growth = [](double omega_dt) {
+    const double omega = 1.0, dt = omega_dt / omega;
+    double x[3] = {1.0, 0.0, 0.0}, v[3] = {0.0, 0.0, 0.0}, h[kGearHistorySize], a[3];
+    const GearCorrector c(GearCoefficients::position_forces(), dt);
+    for (int d = 0; d < 3; ++d) a[d] = -omega * omega * x[d];
+    gear5_start(h, a);
+    for (int n = 0; n < 200000; ++n) {
+      gear5_predict(x, v, h, dt);
+      for (int d = 0; d < 3; ++d) a[d] = -omega * omega * x[d];
+      gear5_correct(x, v, h, a, c);
+    }
+    return std::sqrt(x[0] * x[0] + v[0] * v[0] / (omega * omega));
+  };
+  EXPECT_LT(amplitude_growth(0.97 * kGear5StableOmegaDt), 1.0 + 1e-6);
+  EXPECT_GT(amplitude_growth(1.03 * kGear5StableOmegaDt), 1.05);
+}

@@ -1,0 +1,87 @@
+/* atom_style wire: beads of an elastic wire (DESIGN.md section 4).
+
+   Per bead: position, velocity, force, radius (the wire radius r_w), mass, and the chain
+   links: the tags of the previous and next bead of the same wire (0 at a free end) and
+   the rest length of the segment to the next bead. Links travel with the bead between
+   MPI ranks, to ghosts, to restart files and to data files, so any number of wires can
+   coexist and be cut or joined by editing a data file.
+
+   Data file Atoms line:  atom-ID atom-type wire-prev wire-next rest-length radius mass x y z
+   Velocities line:       atom-ID vx vy vz
+
+   Other styles reach the link arrays through AtomVecWire::of(atom), which also finds the
+   wire sub-style of atom_style hybrid. */
+
+#ifdef ATOM_CLASS
+
+AtomStyle(wire,AtomVecWire)
+
+#else
+
+#ifndef LMP_ATOM_VEC_WIRE_H
+#define LMP_ATOM_VEC_WIRE_H
+
+#include "atom_vec.h"
+
+namespace LAMMPS_NS {
+
+class AtomVecWire : public AtomVec {
+ public:
+  AtomVecWire(class LAMMPS *);
+  ~AtomVecWire();
+  void settings(int, char **);
+  void init();
+  void grow(int);
+  void grow_reset();
+  void copy(int, int, int);
+  int pack_comm(int, int *, double *, int, int *);
+  int pack_comm_vel(int, int *, double *, int, int *);
+  void unpack_comm(int, int, double *);
+  void unpack_comm_vel(int, int, double *);
+  int pack_reverse(int, int, double *);
+  void unpack_reverse(int, int *, double *);
+  int pack_border(int, int *, double *, int, int *);
+  int pack_border_vel(int, int *, double *, int, int *);
+  int pack_border_hybrid(int, int *, double *);
+  void unpack_border(int, int, double *);
+  void unpack_border_vel(int, int, double *);
+  int unpack_border_hybrid(int, int, double *);
+  int pack_exchange(int, double *);
+  int unpack_exchange(double *);
+  int size_restart();
+  int pack_restart(int, double *);
+  int unpack_restart(double *);
+  void create_atom(int, double *);
+  void data_atom(double *, tagint, char **);
+  int data_atom_hybrid(int, char **);
+  void pack_data(double **);
+  int pack_data_hybrid(int, double *);
+  void write_data(FILE *, int, double **);
+  int write_data_hybrid(FILE *, double *);
+  bigint memory_usage();
+
+  // chain links, indexed like atom->x (owned and ghost beads)
+  int *wire_prev;       // tag of the previous bead, 0 at a free end
+  int *wire_next;       // tag of the next bead, 0 at a free end
+  double *wire_rest;    // rest length of the segment to the next bead
+
+  // The wire style of this system (plain or inside atom_style hybrid), or NULL.
+  static AtomVecWire *of(class Atom *);
+
+ private:
+  int *tag, *type, *mask;
+  tagint *image;
+  double **x, **v, **f;
+  double *radius, *rmass;
+
+  // shift of a periodic image for forward and border communication
+  void image_shift(int pbc_flag, int *pbc, bool border, double shift[3]) const;
+  // the bead values sent to ghosts besides position: tag type mask radius mass links
+  int pack_bead(int j, double *buf) const;
+  int unpack_bead(int i, const double *buf);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
