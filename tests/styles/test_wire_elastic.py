@@ -1,0 +1,372 @@
+"""The elastic wire (atom_style wire, create_wire, fix wire/elastic, fix nve/gear)
+against beam theory, wave propagation, the catenary, and its error messages."""
+
+import math
+import os
+
+import numpy as np
+
+from liggghts_run import DeckTestCase, main, read_dump, run
+
+HEADER = """
+units           lj
+atom_style      wire
+boundary        f f f
+region          box block -30 30 -30 30 -30 30
+create_box      1 box
+"""
+
+
+def data_file(positions, rest, radius, mass, box=30.0):
+    """A LIGGGHTS data file of one open chain through `positions` (N x 3)."""
+    n = len(positions)
+    lines = ["wire chain written by test_wire_elastic.py", "", f"{n} atoms", "1 atom types",
+             f"{-box} {box} xlo xhi", f"{-box} {box} ylo yhi", f"{-box} {box} zlo zhi", "",
+             "Atoms", ""]
+    for k, (x, y, z) in enumerate(positions):
+        prev = k if k > 0 else 0
+        nxt = k + 2 if k + 1 < n else 0
+        r = rest if k + 1 < n else 0.0
+        lines.append(f"{k + 1} 1 {prev} {nxt} {r!r} {radius!r} {mass!r} {x!r} {y!r} {z!r}")
+    return "\n".join(lines) + "\n"
+
+
+def bead_mass(density, radius, length):
+    return density * math.pi * radius ** 2 * length
+
+
+class AxialStretch(DeckTestCase):
+    # A straight chain stretched uniformly by strain eps: the end beads feel the tension
+    # m_elo E A eps, inner beads nothing.
+    def test_force_extension(self):
+        for m_elo in (1.0, 0.3):
+            eps, E, r, l, n = 1e-3, 100.0, 0.1, 0.2, 10
+            pos = [(k * l * (1 + eps), 0.0, 0.0) for k in range(n + 1)]
+            deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+fix el all wire/elastic E {E} m_elo {m_elo} m_rot 0.1
+dump d all custom 1 dump.f id x fx fy fz
+dump_modify d format "%d %.17g %.17g %.17g %.17g"
+run 0
+"""
+            res = run(deck, files={"chain.data": data_file(pos, l, r, 1.0)})
+            self.assertRanCleanly(res)
+            d = read_dump(res.path("dump.f"))
+            tension = m_elo * E * math.pi * r * r * eps
+            self.assertAlmostEqual(d["fx"][0] / tension, 1.0, delta=1e-10)
+            self.assertAlmostEqual(d["fx"][-1] / tension, -1.0, delta=1e-10)
+            self.assertLess(np.max(np.abs(d["fx"][1:-1])), 1e-10 * tension)
+
+
+def relax_run(deck, files, free_group, damping, dt, t_end, scheme="verlet"):
+    """Integrate `free_group` with viscous damping until t_end; returns the run."""
+    steps = int(round(t_end / dt))
+    text = deck + f"""
+fix int {free_group} nve/gear scheme {scheme}
+fix damp {free_group} viscous {damping!r}
+timestep {dt!r}
+dump d all custom {steps} dump.relax id x y z vx vy vz
+dump_modify d format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
+thermo {max(steps // 10, 1)}
+run {steps}
+"""
+    return run(text, files=files)
+
+
+class Cantilever(DeckTestCase):
+    # Tip load P on a cantilever of N free segments (two clamped beads set the root
+    # slope). Continuum: PL^3/3EI. Discrete chain: the moment P(L - x_j) at node j bends
+    # it by θ_j = M_j l/EI, so δ = P l^3/EI Σ k² = PL^3/3EI (1 + 3/(2N) + 1/(2N²)).
+    E, r, rho, length = 1.0e4, 0.02, 1.0, 1.0
+
+    def deflection(self, n):
+        E, r, rho, L = self.E, self.r, self.rho, self.length
+        l = L / n
+        EI = E * math.pi * r ** 4 / 4
+        load = 3 * EI * 0.005 * L / L ** 3           # continuum tip deflection 0.005 L
+        pos = [((k - 1) * l, 0.0, 0.0) for k in range(n + 2)]
+        mass = bead_mass(rho, r, l)
+        omega1 = 3.516 * math.sqrt(EI / (rho * math.pi * r * r * L ** 4))
+        deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+group clamp id 1 2
+group free subtract all clamp
+group tip id {n + 2}
+fix el all wire/elastic E {E} m_elo 1 m_rot 1
+fix load tip addforce 0.0 {-load!r} 0.0
+"""
+        k_ax = 2 * math.sqrt(E / rho) / l
+        k_b = 4 * math.sqrt(EI / (rho * math.pi * r * r)) / l ** 2
+        dt = 0.5 * 2 / math.hypot(k_ax, k_b)
+        res = relax_run(deck, {"chain.data": data_file(pos, l, r, mass)}, "free",
+                        damping=2 * omega1 * mass, dt=dt, t_end=16.0)
+        self.assertRanCleanly(res)
+        d = read_dump(res.path("dump.relax"))
+        # at rest: residual motion below 1e-6 of the deflection per unit time 1/ω1
+        self.assertLess(np.max(np.abs(d["vy"])), 1e-6 * 0.005 * L * omega1)
+        return -d["y"][-1], load * L ** 3 / (3 * EI)
+
+    def test_tip_deflection_converges_first_order(self):
+        errors = {}
+        for n in (10, 20, 40, 80):
+            delta, continuum = self.deflection(n)
+            discrete = continuum * (1 + 1.5 / n + 0.5 / n ** 2)
+            errors[n] = delta / continuum - 1
+            print(f"cantilever N={n}: tip deflection {delta:.6e}, PL^3/3EI {continuum:.6e}, "
+                  f"relative error {errors[n]:.4%} (discrete formula {discrete / continuum - 1:.4%})")
+            self.assertAlmostEqual(delta / discrete, 1.0, delta=2e-3)
+        orders = [math.log2(errors[n] / errors[2 * n]) for n in (10, 20, 40)]
+        print("observed orders", ", ".join(f"{o:.3f}" for o in orders))
+        for o in orders:
+            self.assertAlmostEqual(o, 1.0, delta=0.1)
+        self.assertLess(abs(errors[80]), 0.02)
+
+
+class Buckling(DeckTestCase):
+    # Pinned–pinned chain of N segments under an end load P. The discrete critical load is
+    # P_cr = (4EI/l²) sin²(π/2N): below it a lateral perturbation stays small, above it grows.
+    E, r, rho, length, n = 1.0e4, 0.02, 1.0, 1.0, 20
+
+    def lateral_growth(self, load_factor):
+        E, r, rho, L, n = self.E, self.r, self.rho, self.length, self.n
+        l = L / n
+        EI = E * math.pi * r ** 4 / 4
+        EA = E * math.pi * r * r
+        p_cr = 4 * EI / l ** 2 * math.sin(math.pi / (2 * n)) ** 2
+        load = load_factor * p_cr
+        strain = load / EA                         # start in axial equilibrium
+        amplitude = 1e-6 * L
+        pos = [(k * l * (1 - strain), amplitude * math.sin(math.pi * k / n), 0.0)
+               for k in range(n + 1)]
+        mass = bead_mass(rho, r, l)
+        deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+group pin id 1
+group roller id {n + 1}
+group free subtract all pin
+fix el all wire/elastic E {E} m_elo 1 m_rot 1
+fix guide roller setforce NULL 0.0 0.0
+fix load roller addforce {-load!r} 0.0 0.0
+"""
+        k_ax = 2 * math.sqrt(E / rho) / l
+        k_b = 4 * math.sqrt(EI / (rho * math.pi * r * r)) / l ** 2
+        dt = 0.5 * 2 / math.hypot(k_ax, k_b)
+        res = relax_run(deck, {"chain.data": data_file(pos, l, r, mass)}, "free",
+                        damping=1.0 * mass, dt=dt, t_end=20.0)
+        self.assertRanCleanly(res)
+        d = read_dump(res.path("dump.relax"))
+        return np.max(np.abs(d["y"])) / amplitude
+
+    def test_critical_load_within_one_percent(self):
+        below, above = self.lateral_growth(0.99), self.lateral_growth(1.01)
+        print(f"lateral amplitude after t=20: {below:.3g} x initial at 0.99 P_cr, "
+              f"{above:.3g} x initial at 1.01 P_cr")
+        self.assertLess(below, 1.0)
+        self.assertGreater(above, 100.0)
+
+
+class AxialWave(DeckTestCase):
+    # A Gaussian axial displacement splits into two pulses moving at c = sqrt(E/rho).
+    def test_wave_speed(self):
+        E, rho, r, l, n = 100.0, 1.0, 0.1, 0.05, 400
+        c = math.sqrt(E / rho)
+        x0, width, u0 = 10.0, 1.0, 1e-4
+        pos = [(k * l + u0 * math.exp(-((k * l - x0) / width) ** 2), 0.0, 0.0) for k in range(n + 1)]
+        t_end, dt = 0.5, 1e-4
+        deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+fix el all wire/elastic E {E} m_elo 1 m_rot 0
+fix int all nve/gear
+timestep {dt}
+dump d all custom {int(round(t_end / dt))} dump.w id x vx
+dump_modify d format "%d %.17g %.17g"
+run {int(round(t_end / dt))}
+"""
+        res = run(deck, files={"chain.data": data_file(pos, l, r, bead_mass(rho, r, l))})
+        self.assertRanCleanly(res)
+        d = read_dump(res.path("dump.w"))
+        rest_x = (d["id"] - 1) * l
+        right = rest_x > x0
+        w = d["vx"][right] ** 2
+        centre = np.sum(rest_x[right] * w) / np.sum(w)
+        speed = (centre - x0) / t_end
+        print(f"axial pulse speed {speed:.5f}, sqrt(E/rho) = {c:.5f}, error {speed / c - 1:.3e}")
+        self.assertAlmostEqual(speed / c, 1.0, delta=0.01)
+
+
+class Catenary(DeckTestCase):
+    # A flexible (m_rot = 0), nearly inextensible chain hanging between two fixed points
+    # at distance S comes to rest with the sag of the catenary of its length L:
+    # L = 2a sinh(S/2a), sag = a (cosh(S/2a) - 1).
+    def test_sag(self):
+        E, rho, r, l = 1.0e4, 1.0, 0.05, 0.1
+        arm, span = 12, 2.0
+        h = math.sqrt((arm * l) ** 2 - (span / 2) ** 2)
+        pos = [(-1.0 + k * (span / 2) / arm, -h * k / arm, 0.0) for k in range(arm + 1)]
+        pos += [(k * (span / 2) / arm, -h * (arm - k) / arm, 0.0) for k in range(1, arm + 1)]
+        length = 2 * arm * l
+        lo, hi = 0.1, 100.0                       # solve L = 2a sinh(S/2a) for a
+        for _ in range(200):
+            a = 0.5 * (lo + hi)
+            if 2 * a * math.sinh(span / (2 * a)) > length:
+                lo = a
+            else:
+                hi = a
+        sag = a * (math.cosh(span / (2 * a)) - 1)
+        mass = bead_mass(rho, r, l)
+        deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+group ends id 1 {2 * arm + 1}
+group free subtract all ends
+fix el all wire/elastic E {E} m_elo 1 m_rot 0
+fix g free gravity 1.0 vector 0 -1 0
+"""
+        res = relax_run(deck, {"chain.data": data_file(pos, l, r, mass)}, "free",
+                        damping=2.0 * mass, dt=2e-4, t_end=25.0)
+        self.assertRanCleanly(res)
+        d = read_dump(res.path("dump.relax"))
+        measured = -np.min(d["y"])
+        print(f"catenary sag {measured:.6f}, continuous catenary {sag:.6f}, "
+              f"error {measured / sag - 1:.3e}")
+        self.assertLess(np.max(np.abs(d["vy"])), 1e-8)
+        self.assertAlmostEqual(measured / sag, 1.0, delta=0.01)
+
+
+class EnergyConservation(DeckTestCase):
+    """An undamped free loop: the drift of kinetic + elastic energy over t = 10 for both
+    schemes at two time steps. Started from rest with displaced beads (jerk 0 at t = 0,
+    as in a deposition) and started with velocities (the Gear history then starts with an
+    unknown jerk, which leaves an O(dt^2) velocity error)."""
+
+    START = {
+        "rest": """
+variable        dx atom x+0.01*sin(7.0*y)
+variable        dz atom z+0.01*cos(5.0*x)
+set             group all x v_dx z v_dz
+""",
+        "moving": """
+variable        vx0 atom 0.3*sin(3.1*y)
+variable        vy0 atom 0.3*cos(2.3*x)
+variable        vz0 atom 0.2*sin(1.7*x+0.4*y)
+set             group all vx v_vx0 vy v_vy0 vz v_vz0
+""",
+    }
+
+    def energy_error(self, scheme, dt, start, t_end=10.0):
+        steps = int(round(t_end / dt))
+        deck = HEADER + f"""
+create_wire     1 loop 0 0 0 1.5 1 0.0 segment 0.2
+{self.START[start]}
+fix             el all wire/elastic E 100 m_elo 1 m_rot 1
+fix             int all nve/gear scheme {scheme}
+compute         ke all ke
+variable        etot equal c_ke+f_el[3]
+timestep        {dt!r}
+thermo_style    custom step v_etot
+thermo_modify   format float %.15g norm no
+thermo          {steps // 200}
+run             {steps}
+"""
+        res = run(deck)
+        self.assertRanCleanly(res)
+        e = res.thermo()["etot"]
+        return np.max(np.abs(e - e[0])) / e[0]
+
+    def errors(self, start):
+        # dt_crit of this wire is 0.0137; Gear is stable below 0.156 of it (0.0021).
+        err = {(s, dt): self.energy_error(s, dt, start) for s in ("gear5", "verlet")
+               for dt in (1e-3, 5e-4)}
+        for s in ("gear5", "verlet"):
+            order = math.log2(err[s, 1e-3] / err[s, 5e-4])
+            print(f"start {start}, {s}: max relative energy error over t=10: {err[s, 1e-3]:.3e} "
+                  f"(dt 1e-3), {err[s, 5e-4]:.3e} (dt 5e-4), observed order {order:.2f}")
+        return err
+
+    def test_from_rest(self):
+        err = self.errors("rest")
+        self.assertAlmostEqual(math.log2(err["verlet", 1e-3] / err["verlet", 5e-4]), 2.0, delta=0.2)
+        self.assertGreater(math.log2(err["gear5", 1e-3] / err["gear5", 5e-4]), 3.0)
+        self.assertLess(err["gear5", 5e-4], 0.01 * err["verlet", 5e-4])
+
+    def test_with_initial_velocities(self):
+        err = self.errors("moving")
+        for s in ("gear5", "verlet"):
+            self.assertAlmostEqual(math.log2(err[s, 1e-3] / err[s, 5e-4]), 2.0, delta=0.2)
+            self.assertLess(err[s, 5e-4], 1e-5)
+
+
+class BadInput(DeckTestCase):
+    def check(self, body, message, files=None):
+        self.assertStopsWith(run(HEADER + body + "\nrun 1\n", files=files), message)
+
+    def test_nonpositive_modulus(self):
+        self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic E 0",
+                   "fix wire/elastic (id el): value of 'E' must be > 0, got 0")
+        self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic E -5",
+                   "fix wire/elastic (id el): value of 'E' must be > 0, got -5")
+
+    def test_negative_multiplier(self):
+        self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic m_rot -0.1",
+                   "fix wire/elastic (id el): value of 'm_rot' must be >= 0, got -0.1")
+
+    def test_nonpositive_geometry(self):
+        self.check("create_wire 1 line 0 0 0 1 0 0 radius 0",
+                   "command create_wire (id -): value of 'radius' must be > 0, got 0")
+        self.check("create_wire 1 line 0 0 0 1 0 0 segment -0.2",
+                   "command create_wire (id -): value of 'segment' must be > 0, got -0.2")
+        self.check("create_wire 1 line 0 0 0 1 0 0 density 0",
+                   "command create_wire (id -): value of 'density' must be > 0, got 0")
+
+    def test_missing_value(self):
+        self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic E",
+                   "fix wire/elastic (id el): missing value after 'E'")
+        self.check("create_wire 1 loop 0 0 0 1 2",
+                   "command create_wire (id -): missing value after 'pitch'")
+
+    def test_unknown_keyword(self):
+        self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic stiffness 3",
+                   "fix wire/elastic (id el): unknown keyword 'stiffness'")
+
+    def test_polyline_with_repeated_point(self):
+        self.check("create_wire 1 polyline path.txt",
+                   "command create_wire (id -): 'points'",
+                   files={"path.txt": "0 0 0\n1 0 0\n1 0 0\n2 0 0\n"})
+
+    def test_zero_length_line(self):
+        self.check("create_wire 1 line 1 1 1 1 1 1", "command create_wire (id -):")
+
+    def test_wire_outside_box(self):
+        self.check("create_wire 1 line 0 0 0 50 0 0", "beads lie outside the simulation box")
+
+    def test_wrong_atom_style(self):
+        text = """
+units lj
+atom_style granular
+boundary f f f
+region box block -1 1 -1 1 -1 1
+create_box 1 box
+fix el all wire/elastic
+run 1
+"""
+        self.assertStopsWith(run(text), "fix wire/elastic (id el): needs atom_style wire")
+        self.assertStopsWith(run(text.replace("fix el all wire/elastic", "create_wire 1 line 0 0 0 1 0 0")),
+                             "command create_wire (id -): needs atom_style wire")
+
+
+if __name__ == "__main__":
+    main()
