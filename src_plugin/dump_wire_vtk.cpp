@@ -1,0 +1,401 @@
+#include "dump_wire_vtk.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "atom.h"
+#include "atom_vec_wire.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_wire_elastic.h"
+#include "modify.h"
+#include "update.h"
+
+#include "plugin_args.h"
+
+#ifdef LAMMPS_VTK
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
+#endif
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Columns of one bead in the dump buffer.
+enum Column { TAG, TYPE, PREV, NEXT, X, Y, Z, VX, VY, VZ, E_STRETCH, E_BEND };
+constexpr int kColumnsWithoutEnergy = 10;
+constexpr int kColumnsWithEnergy = 12;
+
+const char *const kKind = "dump";
+const char *const kStyle = "wire/vtk";
+
+bool ends_with(const std::string &s, const std::string &suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string json_string(const std::string &s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// A wire as written: rows of the gathered buffer in chain order; closed repeats the first.
+struct Chain {
+  std::vector<int> rows;
+  bool closed = false;
+};
+
+}  // namespace
+
+DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
+    : Dump(lmp, narg, arg), energy_fix_(-1), ascii_(false), wire_(NULL), series_loaded_(false) {
+  wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
+#ifndef LAMMPS_VTK
+  args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
+#endif
+  wire_ = AtomVecWire::of(atom);
+  if (!wire_)
+    args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
+
+  pattern_ = filename;
+  const std::string::size_type slash = pattern_.rfind('/');
+  const std::string dir = slash == std::string::npos ? "" : pattern_.substr(0, slash + 1);
+  const std::string name = pattern_.substr(dir.size());
+  if (name.find('*') == std::string::npos)
+    args.fail("file '" + pattern_ + "' must contain a '*' in its name (replaced by the time step)");
+  if (std::count(pattern_.begin(), pattern_.end(), '*') != 1)
+    args.fail("file '" + pattern_ + "' must contain exactly one '*', in its name");
+  if (!ends_with(name, ".vtp") || name.size() <= 4)
+    args.fail("file '" + pattern_ + "' must end in '.vtp'");
+  if (pattern_.find('%') != std::string::npos)
+    args.fail("file '" + pattern_ + "' must not contain '%' (rank 0 writes every snapshot)");
+
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (key == "energy") {
+      energy_fix_id_ = args.value_word(key);
+    } else if (key == "format") {
+      const std::string value = args.value_word(key);
+      if (value == "ascii") ascii_ = true;
+      else if (value == "binary") ascii_ = false;
+      else args.fail("value of 'format' must be 'ascii' or 'binary', got '" + value + "'");
+    } else {
+      args.unknown_keyword(key);
+    }
+  }
+  if (!energy_fix_id_.empty()) find_energy_fix(false);
+
+  // The series file: the snapshot name without the '*' and a separator just before it,
+  // e.g. post/wire_*.vtp -> post/wire.vtp.series; a name that is only '*.vtp' uses the ID.
+  const std::string::size_type star = name.find('*');
+  std::string before = name.substr(0, star);
+  const std::string after = name.substr(star + 1);  // ends in ".vtp"
+  if (!before.empty() && std::strchr("_-.", before.back())) before.pop_back();
+  std::string stem = before + after.substr(0, after.size() - 4);
+  if (stem.empty()) stem = id;
+  series_path_ = dir + stem + ".vtp.series";
+
+  size_one = energy_fix_id_.empty() ? kColumnsWithoutEnergy : kColumnsWithEnergy;
+  clearstep = 0;      // no compute is invoked
+  // Files are opened here, not by the base class: with multifile = 0 Dump::write() only
+  // counts, packs and gathers (openfile() and fclose() are skipped, fp stays NULL).
+  multifile = 0;
+  flush_flag = 0;
+}
+
+DumpWireVTK::~DumpWireVTK() {}
+
+int DumpWireVTK::find_energy_fix(bool at_init) {
+  const int ifix = modify->find_fix(energy_fix_id_.c_str());
+  if (ifix < 0)
+    wiregrain_lmp::style_error(error, kKind, kStyle, id,
+                               "energy fix '" + energy_fix_id_ + "' does not exist" +
+                                   (at_init ? " (was it unfixed?)" : " (define it before the dump)"));
+  if (!dynamic_cast<FixWireElastic *>(modify->fix[ifix]))
+    wiregrain_lmp::style_error(error, kKind, kStyle, id,
+                               "energy fix '" + energy_fix_id_ + "' is a fix " +
+                                   modify->fix[ifix]->style + ", not a fix wire/elastic");
+  return ifix;
+}
+
+void DumpWireVTK::init_style() {
+  energy_fix_ = energy_fix_id_.empty() ? -1 : find_energy_fix(true);
+}
+
+int DumpWireVTK::modify_param(int narg, char **arg) {
+  return 0;  // only the base-class dump_modify keywords
+}
+
+void DumpWireVTK::write() {
+  gathered_.clear();
+  Dump::write();  // count(), pack(), then write_header()/write_data() on rank 0
+  if (filewriter) {
+    const std::string path = snapshot_path();
+    write_snapshot(path);
+    update_series(path);
+  }
+}
+
+void DumpWireVTK::write_header(bigint ndump) {
+  gathered_.clear();
+  gathered_.reserve(static_cast<size_t>(ndump) * size_one);
+}
+
+void DumpWireVTK::pack(int *ids) {
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask, *tag = atom->tag, *type = atom->type;
+  double **x = atom->x, **v = atom->v;
+  const tagint *image = atom->image;
+  double **energy = energy_fix_ >= 0 ? modify->fix[energy_fix_]->array_atom : NULL;
+
+  int m = 0, n = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *row = buf + m;
+    row[TAG] = tag[i];
+    row[TYPE] = type[i];
+    row[PREV] = wire_->wire_prev[i];
+    row[NEXT] = wire_->wire_next[i];
+    double unwrapped[3];
+    domain->unmap(x[i], image[i], unwrapped);
+    row[X] = unwrapped[0];
+    row[Y] = unwrapped[1];
+    row[Z] = unwrapped[2];
+    row[VX] = v[i][0];
+    row[VY] = v[i][1];
+    row[VZ] = v[i][2];
+    if (energy) {
+      row[E_STRETCH] = energy[i][0];
+      row[E_BEND] = energy[i][1];
+    }
+    if (ids) ids[n] = tag[i];
+    m += size_one;
+    n++;
+  }
+}
+
+void DumpWireVTK::write_data(int n, double *mybuf) {
+  gathered_.insert(gathered_.end(), mybuf, mybuf + static_cast<size_t>(n) * size_one);
+}
+
+std::string DumpWireVTK::snapshot_path() const {
+  const std::string::size_type star = pattern_.find('*');
+  char step[64];
+  if (padflag == 0) snprintf(step, sizeof(step), BIGINT_FORMAT, update->ntimestep);
+  else snprintf(step, sizeof(step), "%0*lld", padflag, static_cast<long long>(update->ntimestep));
+  return pattern_.substr(0, star) + step + pattern_.substr(star + 1);
+}
+
+void DumpWireVTK::write_snapshot(const std::string &path) {
+#ifdef LAMMPS_VTK
+  const int nrows = static_cast<int>(gathered_.size() / size_one);
+  const auto value = [&](int r, int column) { return gathered_[static_cast<size_t>(r) * size_one + column]; };
+  const auto tag_of = [&](int r) { return static_cast<long>(value(r, TAG)); };
+
+  std::unordered_map<long, int> row_of;
+  row_of.reserve(nrows);
+  for (int r = 0; r < nrows; r++) row_of[tag_of(r)] = r;
+  const auto linked_row = [&](int r, int column) {  // row of the prev/next bead, -1 if none
+    const long t = static_cast<long>(value(r, column));
+    if (t == 0) return -1;
+    const auto it = row_of.find(t);
+    return it == row_of.end() ? -1 : it->second;
+  };
+  // r -> s is followed only when the link is mutual (s's prev is r), so a chain is cut
+  // where a link leaves the group or the two links disagree.
+  const auto next_row = [&](int r) {
+    const int s = linked_row(r, NEXT);
+    return s >= 0 && static_cast<long>(value(s, PREV)) == tag_of(r) ? s : -1;
+  };
+  const auto prev_row = [&](int r) {
+    const int p = linked_row(r, PREV);
+    return p >= 0 && static_cast<long>(value(p, NEXT)) == tag_of(r) ? p : -1;
+  };
+
+  std::vector<int> by_tag(nrows);
+  for (int r = 0; r < nrows; r++) by_tag[r] = r;
+  std::sort(by_tag.begin(), by_tag.end(), [&](int a, int b) { return tag_of(a) < tag_of(b); });
+
+  std::vector<char> visited(nrows, 0);
+  std::vector<Chain> chains;
+  const auto follow = [&](int start) {
+    Chain c;
+    int r = start;
+    while (r >= 0 && !visited[r]) {
+      visited[r] = 1;
+      c.rows.push_back(r);
+      r = next_row(r);
+    }
+    c.closed = r == start && c.rows.size() > 2;
+    chains.push_back(c);
+  };
+  for (int r : by_tag)  // open chains from their first bead
+    if (prev_row(r) < 0) follow(r);
+  for (int r : by_tag)  // what is left are rings: start at their lowest id
+    if (!visited[r]) follow(r);
+  std::sort(chains.begin(), chains.end(),
+            [&](const Chain &a, const Chain &b) { return tag_of(a.rows[0]) < tag_of(b.rows[0]); });
+
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nrows);
+  auto ids = vtkSmartPointer<vtkIntArray>::New();
+  ids->SetName("id");
+  ids->SetNumberOfTuples(nrows);
+  auto types = vtkSmartPointer<vtkIntArray>::New();
+  types->SetName("type");
+  types->SetNumberOfTuples(nrows);
+  auto velocity = vtkSmartPointer<vtkDoubleArray>::New();
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(nrows);
+  const bool with_energy = size_one == kColumnsWithEnergy;
+  vtkSmartPointer<vtkDoubleArray> energies[3];
+  const char *energy_names[3] = {"stretching_energy", "bending_energy", "elastic_energy"};
+  if (with_energy)
+    for (int k = 0; k < 3; k++) {
+      energies[k] = vtkSmartPointer<vtkDoubleArray>::New();
+      energies[k]->SetName(energy_names[k]);
+      energies[k]->SetNumberOfTuples(nrows);
+    }
+
+  // points in chain order; single beads become vertices, longer chains polylines
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<int> vert_wire, line_wire;
+  vtkIdType p = 0;
+  for (size_t w = 0; w < chains.size(); w++) {
+    const Chain &c = chains[w];
+    const vtkIdType first = p;
+    for (int r : c.rows) {
+      points->SetPoint(p, value(r, X), value(r, Y), value(r, Z));
+      ids->SetValue(p, static_cast<int>(value(r, TAG)));
+      types->SetValue(p, static_cast<int>(value(r, TYPE)));
+      velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
+      if (with_energy) {
+        energies[0]->SetValue(p, value(r, E_STRETCH));
+        energies[1]->SetValue(p, value(r, E_BEND));
+        energies[2]->SetValue(p, value(r, E_STRETCH) + value(r, E_BEND));
+      }
+      p++;
+    }
+    if (c.rows.size() == 1) {
+      verts->InsertNextCell(1);
+      verts->InsertCellPoint(first);
+      vert_wire.push_back(static_cast<int>(w));
+    } else {
+      lines->InsertNextCell(static_cast<vtkIdType>(c.rows.size() + (c.closed ? 1 : 0)));
+      for (vtkIdType k = first; k < p; k++) lines->InsertCellPoint(k);
+      if (c.closed) lines->InsertCellPoint(first);
+      line_wire.push_back(static_cast<int>(w));
+    }
+  }
+  // cell data follow vtkPolyData's cell order: vertices, then lines
+  auto wire_index = vtkSmartPointer<vtkIntArray>::New();
+  wire_index->SetName("wire");
+  for (int w : vert_wire) wire_index->InsertNextValue(w);
+  for (int w : line_wire) wire_index->InsertNextValue(w);
+
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  if (!vert_wire.empty()) poly->SetVerts(verts);
+  poly->SetLines(lines);
+  poly->GetPointData()->AddArray(ids);
+  poly->GetPointData()->AddArray(types);
+  poly->GetPointData()->AddArray(velocity);
+  if (with_energy)
+    for (int k = 0; k < 3; k++) poly->GetPointData()->AddArray(energies[k]);
+  poly->GetCellData()->AddArray(wire_index);
+
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(poly);
+  if (ascii_) {
+    writer->SetDataModeToAscii();
+  } else {
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();  // raw binary
+  }
+  if (writer->Write() != 1)
+    error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
+#else
+  (void)path;
+#endif
+}
+
+// With dump_modify append yes the snapshots of an earlier run listed in an existing
+// series file are kept (those before the current time), so a restarted simulation
+// continues the series; otherwise the file starts afresh.
+void DumpWireVTK::load_series() {
+  series_loaded_ = true;
+  if (!append_flag) return;
+  std::ifstream in(series_path_);
+  if (!in) return;
+  const double now = update->get_cur_time();
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::string::size_type n = line.find("\"name\"");
+    const std::string::size_type t = line.find("\"time\"");
+    if (n == std::string::npos || t == std::string::npos) continue;
+    const std::string::size_type q0 = line.find('"', line.find(':', n) + 1);
+    if (q0 == std::string::npos) continue;
+    std::string name;
+    std::string::size_type k = q0 + 1;
+    for (; k < line.size() && line[k] != '"'; k++) {
+      if (line[k] == '\\' && k + 1 < line.size()) k++;
+      name += line[k];
+    }
+    const double time = std::strtod(line.c_str() + line.find(':', t) + 1, NULL);
+    if (time < now) series_.emplace_back(name, time);
+  }
+}
+
+void DumpWireVTK::update_series(const std::string &path) {
+  if (!series_loaded_) load_series();
+  const std::string::size_type slash = path.rfind('/');
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  series_.erase(std::remove_if(series_.begin(), series_.end(),
+                               [&](const std::pair<std::string, double> &e) { return e.first == name; }),
+                series_.end());
+  series_.emplace_back(name, update->get_cur_time());
+
+  std::ostringstream out;
+  out << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+  for (size_t k = 0; k < series_.size(); k++) {
+    char time[64];
+    snprintf(time, sizeof(time), "%.17g", series_[k].second);
+    out << "    { \"name\" : " << json_string(series_[k].first) << ", \"time\" : " << time << " }"
+        << (k + 1 < series_.size() ? "," : "") << "\n";
+  }
+  out << "  ]\n}\n";
+
+  // write next to it and rename, so a reader never sees half a file
+  const std::string tmp = series_path_ + ".tmp";
+  const std::string text = out.str();
+  bool ok = false;
+  if (FILE *f = fopen(tmp.c_str(), "w")) {
+    ok = fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = fclose(f) == 0 && ok;
+  }
+  if (!ok || std::rename(tmp.c_str(), series_path_.c_str()) != 0)
+    error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + series_path_ + "'").c_str());
+}

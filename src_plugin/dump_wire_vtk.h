@@ -1,0 +1,68 @@
+/* dump wire/vtk: the wires of atom_style wire as VTK XML PolyData polylines, one file per
+   snapshot, plus a ParaView ".vtp.series" file listing the snapshots with their times.
+
+   dump ID group wire/vtk N file [energy fix-ID] [format binary|ascii]
+
+   file must contain one '*' (replaced by the time step) in its name and end in ".vtp".
+   Each wire (chain of beads linked by wire_prev/wire_next) becomes one polyline; only
+   beads of the group are written and a chain is cut where a link leaves the group. Point
+   data per bead: id, type, velocity and, with `energy fix-ID` (a fix wire/elastic),
+   stretching_energy, bending_energy, elastic_energy. Cell data: wire (index of the chain
+   in the file, chains ordered by their first bead's id).
+
+   Every rank packs its beads through the Dump base class (pack() into buf); rank 0
+   receives all buffers, assembles the chains from the tags and writes the files. */
+
+#ifdef DUMP_CLASS
+
+DumpStyle(wire/vtk,DumpWireVTK)
+
+#else
+
+#ifndef LMP_DUMP_WIRE_VTK_H
+#define LMP_DUMP_WIRE_VTK_H
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dump.h"
+
+namespace LAMMPS_NS {
+
+class DumpWireVTK : public Dump {
+ public:
+  DumpWireVTK(class LAMMPS *, int, char **);
+  ~DumpWireVTK();
+  void write();
+
+ protected:
+  void init_style();
+  void write_header(bigint);
+  void pack(int *);
+  void write_data(int, double *);
+  int modify_param(int, char **);
+
+ private:
+  std::string pattern_;          // the file name as given, with its '*'
+  std::string series_path_;      // <pattern without '*'>.vtp.series
+  std::string energy_fix_id_;    // empty: no energy columns
+  int energy_fix_;               // index of that fix in modify->fix, -1 if none
+  bool ascii_;                   // VTK XML data mode: ascii or binary (appended, raw)
+  class AtomVecWire *wire_;
+
+  std::vector<double> gathered_;                          // rank 0: all packed beads
+  std::vector<std::pair<std::string, double> > series_;  // rank 0: (file name, time)
+  bool series_loaded_;
+
+  int find_energy_fix(bool at_init);
+  std::string snapshot_path() const;
+  void write_snapshot(const std::string &path);
+  void update_series(const std::string &path);
+  void load_series();
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
