@@ -52,6 +52,7 @@ FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
       wire_(NULL),
       bead_energy_(NULL),
       sums_step_(-1),
+      forces_step_(-1),
       reported_time_step_(false) {
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/elastic", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
@@ -72,7 +73,7 @@ FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
   extscalar = 1;
   extvector = 0;
   peratom_flag = 1;
-  size_peratom_cols = 2;
+  size_peratom_cols = 3;
   peratom_freq = 1;
   local_sums_[0] = local_sums_[1] = local_sums_[2] = 0.0;
   global_sums_[0] = global_sums_[1] = global_sums_[2] = 0.0;
@@ -198,8 +199,7 @@ void FixWireElastic::post_force(int /*vflag*/) {
   const double *rest = wire_->wire_rest, *radius = atom->radius;
   const int nlocal = atom->nlocal;
 
-  for (int i = 0; i < nlocal; i++) bead_energy_[i][0] = bead_energy_[i][1] = 0.0;
-  double length = 0.0;
+  for (int i = 0; i < nlocal; i++) bead_energy_[i][0] = bead_energy_[i][1] = bead_energy_[i][2] = 0.0;
 
   // image of bead j nearest to position `ref`
   const auto image_near = [&](int j, const Eigen::Vector3d &ref) {
@@ -231,7 +231,7 @@ void FixWireElastic::post_force(int /*vflag*/) {
         add_force(f[n], s.force_j);
         bead_energy_[n][0] += 0.5 * s.energy;
       }
-      length += (xn - xi).norm();
+      bead_energy_[i][2] = (xn - xi).norm();
     }
     if (p >= nlocal) {  // segment from a ghost previous bead: our share only
       const wiregrain::StretchResult s = wiregrain::wire_stretch(xp, xi, axial(p), rest[p]);
@@ -257,19 +257,17 @@ void FixWireElastic::post_force(int /*vflag*/) {
     }
   }
 
-  local_sums_[0] = local_sums_[1] = 0.0;
-  for (int i = 0; i < nlocal; i++) {
-    local_sums_[0] += bead_energy_[i][0];
-    local_sums_[1] += bead_energy_[i][1];
-  }
-  local_sums_[2] = length;
-  if (!std::isfinite(local_sums_[0] + local_sums_[1] + length)) {
+  local_sums_[0] = local_sums_[1] = local_sums_[2] = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 3; k++) local_sums_[k] += bead_energy_[i][k];
+  if (!std::isfinite(local_sums_[0] + local_sums_[1] + local_sums_[2])) {
     const std::string msg = "fix wire/elastic (id " + std::string(id) + "): non-finite bead position or "
                             "elastic energy at step " + std::to_string(update->ntimestep) +
                             " (time step too large for the wire springs?)";
     error->one(FLERR, msg.c_str());
   }
   sums_step_ = -1;
+  forces_step_ = update->ntimestep;
 }
 
 void FixWireElastic::reduce_sums() {
@@ -296,13 +294,12 @@ double FixWireElastic::compute_vector(int n) {
 }
 
 void FixWireElastic::grow_arrays(int nmax) {
-  memory->grow(bead_energy_, nmax, 2, "wire/elastic:bead_energy");
+  memory->grow(bead_energy_, nmax, 3, "wire/elastic:bead_energy");
   array_atom = bead_energy_;
 }
 
 void FixWireElastic::copy_arrays(int i, int j, int /*delflag*/) {
-  bead_energy_[j][0] = bead_energy_[i][0];
-  bead_energy_[j][1] = bead_energy_[i][1];
+  for (int k = 0; k < 3; k++) bead_energy_[j][k] = bead_energy_[i][k];
 }
 
-double FixWireElastic::memory_usage() { return double(atom->nmax) * 2 * sizeof(double); }
+double FixWireElastic::memory_usage() { return double(atom->nmax) * 3 * sizeof(double); }

@@ -11,8 +11,8 @@
 
    Outputs: scalar = elastic energy (added to thermo pe with fix_modify energy yes);
    vector = [stretching energy, bending energy, elastic energy, wire length, U_s/L];
-   per-atom array = [stretching energy, bending energy] of each bead (a segment's energy
-   is shared half-half by its two beads). */
+   per-atom array = [stretching energy, bending energy, length of the segment to the
+   next bead] of each bead (a segment's energy is shared half-half by its two beads). */
 
 #ifdef FIX_CLASS
 
@@ -46,14 +46,17 @@ class FixWireElastic : public Fix {
   // dt_crit = 2/ω_max of the elastic chain (Verlet's limit), from the stiffest segment
   // and the lightest bead of the group; all ranks return the same value.
   double critical_time_step();
+  // step of the last force evaluation, when the per-atom energies are current
+  bigint forces_step() const { return forces_step_; }
 
  private:
   double youngs_modulus_, m_elo_, m_rot_;
   class AtomVecWire *wire_;
-  double **bead_energy_;        // per bead: stretching, bending
+  double **bead_energy_;        // per bead: stretching, bending energy, segment length
   double local_sums_[3];        // stretching, bending energy, wire length of owned beads
   double global_sums_[3];
   bigint sums_step_;            // step of global_sums_, -1 if none
+  bigint forces_step_;
   bool reported_time_step_;
 
   int bead_index(int tag, int from_tag);
