@@ -97,13 +97,14 @@ run_tests() {
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" ${CTEST_ARGS:-}
 }
 
+# The main example; see README.md, section Examples.
 run_example() {
-  local work="$BUILD_DIR/examples/settle_gear"
+  local work="$BUILD_DIR/examples/wire_loop"
   mkdir -p "$work"
-  cp "$here/examples/settle_gear/in.settle_gear" "$work/"
-  echo "build.sh: running examples/settle_gear in $work"
-  (cd "$work" && "$BUILD_DIR/liggghts" -in in.settle_gear)
-  echo "build.sh: output in $work (log.liggghts, dump.settle_gear)"
+  cp "$here/examples/wire_loop/in.wire_loop" "$work/"
+  echo "build.sh: running examples/wire_loop in $work"
+  (cd "$work" && "$BUILD_DIR/liggghts" -in in.wire_loop)
+  echo "build.sh: output in $work (log.liggghts, dump.wire_loop, post/wire.vtp.series for ParaView)"
 }
 
 case "${1:-}" in

