@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/validation.h"
 
 namespace wiregrain {
 
@@ -35,30 +36,6 @@ constexpr double kDegenerateTolerance = 1e-10;
 // their neighbours on every face are not corners. Well above the rounding of a rigidly
 // moved point set (~1e-15), well below any facet of a random hull.
 constexpr double kCoplanarTolerance = 1e-11;
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(12);
-  s << x;
-  return s.str();
-}
-
-void check_sweep_radius(double sweep_radius) {
-  if (!(sweep_radius >= 0.0) || !std::isfinite(sweep_radius))
-    throw InvalidArgument("sweep_radius",
-                          "sweep_radius must be >= 0 and finite, got " + number(sweep_radius));
-}
-
-void check_positive_length(const char* name, double value) {
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw InvalidArgument(name, std::string(name) + " must be > 0 and finite, got " +
-                                    number(value));
-}
-
-void check_density(double density) {
-  if (!(density > 0.0) || !std::isfinite(density))
-    throw InvalidArgument("density", "density must be > 0 and finite, got " + number(density));
-}
 
 // Uniform double in [0, 1) from the top 53 bits of one engine output (platform-independent,
 // unlike std::uniform_real_distribution).
@@ -128,7 +105,7 @@ Moments polyhedron_moments(const std::vector<Vector3d>& vertices,
 // Construction
 
 ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double sweep_radius) {
-  check_sweep_radius(sweep_radius);
+  require_nonnegative("sweep_radius", sweep_radius);
   if (points.size() < 4)
     throw InvalidArgument("points", "a convex polyhedron needs at least 4 points, got " +
                                         std::to_string(points.size()));
@@ -161,7 +138,7 @@ ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double
         const std::size_t i = std::min(order[k], order[l]), j = std::max(order[k], order[l]);
         throw InvalidArgument("points", "points " + std::to_string(i) + " and " +
                                             std::to_string(j) +
-                                            " are duplicates (closer than " + number(tol) +
+                                            " are duplicates (closer than " + format_number(tol) +
                                             ")");
       }
 
@@ -189,7 +166,7 @@ ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double
   if (plane_distance <= tol)
     throw InvalidArgument("points",
                           "all points lie in one plane (largest distance " +
-                              number(plane_distance) + " for a cloud of size " + number(scale) +
+                              format_number(plane_distance) + " for a cloud of size " + format_number(scale) +
                               "): the hull has zero volume");
 
   // CGAL quickhull with exact predicates: the combinatorics are exact for the given
@@ -449,13 +426,13 @@ ConvexShape ConvexShape::random_ellipsoid(std::mt19937_64& rng, int n_vertices, 
                                             std::to_string(n_vertices));
   if (!(a > 0.0) || !std::isfinite(a))
     throw InvalidArgument("a", "a (the longest semi-axis) must be > 0 and finite, got " +
-                                   number(a));
+                                   format_number(a));
   if (!(b_over_a > 0.0 && b_over_a <= 1.0))
-    throw InvalidArgument("b_over_a", "b_over_a (b/a) must be in (0, 1], got " + number(b_over_a));
+    throw InvalidArgument("b_over_a", "b_over_a (b/a) must be in (0, 1], got " + format_number(b_over_a));
   if (!(c_over_a > 0.0 && c_over_a <= b_over_a))
     throw InvalidArgument("c_over_a", "c_over_a (c/a) must be in (0, b/a] = (0, " +
-                                          number(b_over_a) + "], got " + number(c_over_a));
-  check_sweep_radius(sweep_radius);
+                                          format_number(b_over_a) + "], got " + format_number(c_over_a));
+  require_nonnegative("sweep_radius", sweep_radius);
 
   const Vector3d semi_axes(a, a * b_over_a, a * c_over_a);
   std::vector<Vector3d> points;
@@ -478,9 +455,9 @@ ConvexShape ConvexShape::random_ellipsoid(std::uint64_t seed, int n_vertices, do
 }
 
 ConvexShape ConvexShape::box(double lx, double ly, double lz, double sweep_radius) {
-  check_positive_length("lx", lx);
-  check_positive_length("ly", ly);
-  check_positive_length("lz", lz);
+  require_positive("lx", lx);
+  require_positive("ly", ly);
+  require_positive("lz", lz);
   std::vector<Vector3d> corners;
   for (int i = 0; i < 8; ++i)
     corners.emplace_back((i & 1 ? 0.5 : -0.5) * lx, (i & 2 ? 0.5 : -0.5) * ly,
@@ -489,12 +466,12 @@ ConvexShape ConvexShape::box(double lx, double ly, double lz, double sweep_radiu
 }
 
 ConvexShape ConvexShape::cube(double edge, double sweep_radius) {
-  check_positive_length("edge", edge);
+  require_positive("edge", edge);
   return box(edge, edge, edge, sweep_radius);
 }
 
 ConvexShape ConvexShape::regular_tetrahedron(double edge, double sweep_radius) {
-  check_positive_length("edge", edge);
+  require_positive("edge", edge);
   // alternate corners of a cube of side edge/√2 (their distance is 2√2 · h, h = half side)
   const double h = edge / (2.0 * std::sqrt(2.0));
   return from_points({Vector3d(h, h, h), Vector3d(h, -h, -h), Vector3d(-h, h, -h),
@@ -503,7 +480,7 @@ ConvexShape ConvexShape::regular_tetrahedron(double edge, double sweep_radius) {
 }
 
 ConvexShape ConvexShape::regular_octahedron(double edge, double sweep_radius) {
-  check_positive_length("edge", edge);
+  require_positive("edge", edge);
   const double s = edge / std::sqrt(2.0);  // |(s,0,0) - (0,s,0)| = s√2 = edge
   return from_points({Vector3d(s, 0, 0), Vector3d(-s, 0, 0), Vector3d(0, s, 0),
                       Vector3d(0, -s, 0), Vector3d(0, 0, s), Vector3d(0, 0, -s)},
@@ -565,7 +542,7 @@ ConvexShape ConvexShape::transformed(const Matrix3d& rotation, const Vector3d& t
 // Mass properties
 
 MassProperties ConvexShape::sharp_mass_properties(double density) const {
-  check_density(density);
+  require_positive("density", density);
   Vector3d reference = Vector3d::Zero();
   for (const auto& v : vertices_) reference += v;
   reference /= static_cast<double>(vertices_.size());
@@ -593,7 +570,7 @@ MassProperties ConvexShape::sharp_mass_properties(double density) const {
 //   M2 = ∫_Ω u uᵀ dΩ = |Ω|/3 · 1 + Σ_edges S_e m_eᵀ        (from ∫_K ∂_j x_k = δ_jk |K|),
 // with S_e = U1_e / 3 the first moment of the flat unit sector of edge e.
 MassProperties ConvexShape::dilated_mass_properties(double density) const {
-  check_density(density);
+  require_positive("density", density);
   const double r = sweep_radius_;
   Vector3d reference = Vector3d::Zero();
   for (const auto& v : vertices_) reference += v;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/validation.h"
 
 namespace wiregrain {
 
@@ -17,20 +18,14 @@ using Eigen::Matrix3d;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(12);
-  s << x;
-  return s.str();
-}
 
 void check_moments(const Vector3d& moments) {
   for (int k = 0; k < 3; ++k)
     if (!(moments[k] > 0.0) || !std::isfinite(moments[k]))
       throw InvalidArgument("principal_moments",
                             "principal_moments must be > 0 and finite, got (" +
-                                number(moments[0]) + ", " + number(moments[1]) + ", " +
-                                number(moments[2]) + ")");
+                                format_number(moments[0]) + ", " + format_number(moments[1]) + ", " +
+                                format_number(moments[2]) + ")");
 }
 
 Quaterniond checked_unit(const Quaterniond& q) {
@@ -38,12 +33,12 @@ Quaterniond checked_unit(const Quaterniond& q) {
   if (!(norm > 0.0) || !std::isfinite(norm))
     throw InvalidArgument("orientation",
                           "orientation must be a non-zero finite quaternion, got norm " +
-                              number(norm));
+                              format_number(norm));
   return Quaterniond(q.coeffs() / norm);
 }
 
 void check_dt(double dt) {
-  if (!std::isfinite(dt)) throw InvalidArgument("dt", "dt must be finite, got " + number(dt));
+  if (!std::isfinite(dt)) throw InvalidArgument("dt", "dt must be finite, got " + format_number(dt));
 }
 
 }  // namespace
@@ -162,8 +157,7 @@ void RigidRotation::step(const Vector3d& torque, double dt, FreeRotationScheme s
 
 RigidTranslation::RigidTranslation(double mass, const Vector3d& position, const Vector3d& velocity)
     : mass_(mass), position_(position), velocity_(velocity) {
-  if (!(mass > 0.0) || !std::isfinite(mass))
-    throw InvalidArgument("mass", "mass must be > 0 and finite, got " + number(mass));
+  require_positive("mass", mass);
 }
 
 }  // namespace wiregrain

@@ -8,31 +8,13 @@
 #include <Eigen/Geometry>
 
 #include "core/errors.h"
+#include "core/validation.h"
 
 namespace wiregrain {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string format_number(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
-}
-
-void require_positive(const char* name, double v) {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw InvalidArgument(name, std::string(name) + " must be a finite number > 0, got " +
-                                    format_number(v));
-}
-
-void require_nonnegative(const char* name, double v) {
-  if (!(v >= 0.0) || !std::isfinite(v))
-    throw InvalidArgument(name, std::string(name) + " must be a finite number >= 0, got " +
-                                    format_number(v));
-}
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/validation.h"
 
 namespace wiregrain {
 
@@ -17,24 +18,6 @@ constexpr double kPi = 3.14159265358979323846;
 // length 1 with l_w 0.2 (1/0.2 = 4.999... in floating point) gives 5 segments.
 constexpr double kCountTolerance = 1e-9;
 
-std::string format_number(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
-}
-
-void require_positive(const char* name, double v) {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw InvalidArgument(name, std::string(name) + " must be a finite number > 0, got " +
-                                    format_number(v));
-}
-
-void require_finite(const char* name, double v) {
-  if (!std::isfinite(v))
-    throw InvalidArgument(name, std::string(name) + " must be a finite number, got " +
-                                    format_number(v));
-}
 
 long whole_segments(double ratio) {
   return static_cast<long>(std::floor(ratio * (1.0 + kCountTolerance)));

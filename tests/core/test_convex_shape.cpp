@@ -546,7 +546,7 @@ TEST(ConvexShapeInput, BadInputThrows) {
       },
       "points", "points 1 and 4 are duplicates");
   expect_invalid_argument([&] { ConvexShape::from_points(tetra, -0.1); }, "sweep_radius",
-                          "sweep_radius must be >= 0");
+                          "sweep_radius must be a finite number >= 0");
 
   std::mt19937_64 rng(1);
   expect_invalid_argument([&] { ConvexShape::random_ellipsoid(rng, 3, 1.0, 0.8, 0.6, 0.1); },
@@ -561,8 +561,8 @@ TEST(ConvexShapeInput, BadInputThrows) {
                           "a", "got -1");
   expect_invalid_argument([&] { ConvexShape::random_ellipsoid(rng, 20, 1.0, 0.8, 0.6, -0.1); },
                           "sweep_radius", "got -0.1");
-  expect_invalid_argument([&] { ConvexShape::cube(0.0); }, "edge", "edge must be > 0");
+  expect_invalid_argument([&] { ConvexShape::cube(0.0); }, "edge", "edge must be a finite number > 0");
   expect_invalid_argument([&] { ConvexShape::box(1.0, -2.0, 1.0); }, "ly", "got -2");
   expect_invalid_argument([&] { ConvexShape::cube(1.0).sharp_mass_properties(0.0); }, "density",
-                          "density must be > 0");
+                          "density must be a finite number > 0");
 }
