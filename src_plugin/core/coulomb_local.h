@@ -1,0 +1,100 @@
+// The exact solution of the frictional contact problem of ONE contact point (the
+// "projector" of the NSCD Gauss–Seidel solver, core/nscd_solver.h).
+//
+// Local frame (n, t1, t2), n the contact normal. Unknowns: the impulse r = (r_n, r_t) and
+// the local relative velocity u = (u_n, u_t) at the end of the step, linked by
+//     u = W r + q,
+// W the 3×3 local Delassus block (H M⁻¹ Hᵀ, symmetric positive definite) and q the
+// velocity the contact would have with no impulse from itself (any gap-anticipation or
+// restitution shift already added to q_n, so the normal constraint reads u_n ≥ 0).
+// The Signorini–Coulomb law (Moreau; Jean, Comput. Methods Appl. Mech. Engrg. 177 (1999)
+// 235; the paper's Sec. 2.1 and Fig. 2):
+//     r_n ≥ 0, u_n ≥ 0, r_n u_n = 0                                     (Signorini)
+//     ‖r_t‖ ≤ μ r_n;  ‖r_t‖ < μ r_n ⇒ u_t = 0;
+//     ‖r_t‖ = μ r_n ⇒ u_t = −λ r_t for some λ ≥ 0                         (Coulomb)
+// Solved by enumerating the three cases of the paper, in its order:
+//   open   q_n ≥ 0: r = 0 (u = q).
+//   stick  r = −W⁻¹ q, accepted when r_n ≥ 0 and ‖r_t‖ ≤ μ r_n (then u = 0).
+//   slide  r = r_n c(φ), c(φ) = (1, μ cos φ, μ sin φ), t(φ) = (cos φ, sin φ). u_n = 0 gives
+//          r_n = −q_n / a(φ) with a(φ) = (W c(φ))_n; then
+//              a(φ) u_t(φ) = v(φ) := a(φ) q_t − q_n (W c(φ))_t,
+//          and u_t ∥ −t(φ) is the scalar equation
+//              g(φ) = v(φ) × t(φ) = v_1 sin φ − v_2 cos φ = 0,
+//          admissible when a(φ) > 0 (so r_n > 0, as q_n < 0) and v(φ)·t(φ) ≤ 0 (λ ≥ 0).
+//          g is a trigonometric polynomial of degree 2 in φ (at most 4 roots). It is
+//          solved by Newton's method in φ from a guess (the previous impulse direction,
+//          else the direction of the rejected stick impulse); if that fails or gives an
+//          inadmissible root, by a scan of g over [0, 2π) with a safeguarded
+//          Newton–bisection in every bracket, and if no bracket holds an admissible root
+//          (a double root, or two roots closer than the sampling), by Newton from each
+//          local minimum of |g| among the samples. The paper solves this case
+//          with a Newton iteration from GSL; the 1-D reduction makes u_n = 0 and
+//          ‖r_t‖ = μ r_n hold by construction, so only u_t ∥ −r_t is iterated.
+// μ = 0 (frictionless): r = (−q_n / W_nn, 0, 0) when q_n < 0, counted as slide.
+//
+// With W symmetric positive definite a solution always exists; the slide solution need
+// not be unique for large μ, and the root closest to the guess direction is returned.
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace wiregrain {
+
+enum class ContactState { open = 0, stick = 1, slide = 2 };
+const char* contact_state_name(ContactState state);
+
+// How the slide equation was solved (for tests and statistics).
+enum class SlideMethod { none = 0, newton = 1, scan = 2 };
+
+// A 3×3 local Delassus block with its inverse, computed once per time step (the
+// Gauss–Seidel sweep solves each contact many times with the same W).
+class LocalDelassus {
+ public:
+  LocalDelassus() = default;
+  // W finite with W_nn > 0, else InvalidArgument("W", ...). W need not be symmetric. The
+  // stick case needs W invertible; a (numerically) singular W is accepted and the stick
+  // case is then skipped.
+  explicit LocalDelassus(const Eigen::Matrix3d& W);
+
+  const Eigen::Matrix3d& matrix() const { return matrix_; }
+  const Eigen::Matrix3d& inverse() const { return inverse_; }
+  bool invertible() const { return invertible_; }
+
+ private:
+  Eigen::Matrix3d matrix_ = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d inverse_ = Eigen::Matrix3d::Identity();
+  bool invertible_ = true;
+};
+
+struct LocalSolution {
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();   // r
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // u = W r + q
+  ContactState state = ContactState::open;
+  SlideMethod slide_method = SlideMethod::none;
+  int newton_iterations = 0;  // Newton steps on g(φ), all stages together
+};
+
+// Solves the local problem. `guess` is a previous impulse of this contact: when it is on
+// the cone boundary its tangential direction starts the slide Newton iteration (any
+// value is allowed; zero means no guess). μ ≥ 0 finite and q finite, else
+// InvalidArgument("mu"/"q", ...). Throws NumericalFailure only if no admissible slide
+// root is found (never observed for symmetric positive definite W).
+LocalSolution solve_coulomb_local(const LocalDelassus& W, const Eigen::Vector3d& q, double mu,
+                                  const Eigen::Vector3d& guess = Eigen::Vector3d::Zero());
+LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3d& q,
+                                  double mu);
+
+// Euclidean projection onto the Coulomb cone K_μ = {r : ‖r_t‖ ≤ μ r_n}:
+//   r if r ∈ K_μ; 0 if μ‖r_t‖ ≤ −r_n (r in the polar cone); otherwise
+//   r_n' = (r_n + μ‖r_t‖)/(1 + μ²), r_t' = μ r_n' r_t/‖r_t‖.
+Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu);
+
+// Natural-map residual of one contact with De Saxcé's modified velocity
+// û = u + μ‖u_t‖ e_n (De Saxcé & Feng, Math. Comput. Modelling 28 (1998) 225):
+//   F(r, u) = r − proj_{K_μ}(r − û),
+// zero exactly when (r, u) satisfies the Signorini–Coulomb law above. This is the
+// per-contact term of Siconos' fc3d_compute_error (core/nscd_solver.h).
+Eigen::Vector3d natural_map_residual(const Eigen::Vector3d& r, const Eigen::Vector3d& u,
+                                     double mu);
+
+}  // namespace wiregrain
