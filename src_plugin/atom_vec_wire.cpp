@@ -143,6 +143,16 @@ void AtomVecWire::image_shift(int pbc_flag, int *pbc, bool border, double s[3]) 
   }
 }
 
+// A deforming box (fix deform remap v) adds its strain rate to the velocity of
+// periodic images.
+void AtomVecWire::image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const {
+  dv[0] = dv[1] = dv[2] = 0.0;
+  if (!pbc_flag || !deform_vremap) return;
+  dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+  dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+  dv[2] = pbc[2] * h_rate[2];
+}
+
 int AtomVecWire::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
   image_shift(pbc_flag, pbc, false, s);
@@ -159,13 +169,8 @@ int AtomVecWire::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc
 int AtomVecWire::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
   image_shift(pbc_flag, pbc, false, s);
-  // a deforming box adds its strain rate to the velocity of periodic images
-  double dv[3] = {0.0, 0.0, 0.0};
-  if (pbc_flag && deform_vremap) {
-    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
-    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
-    dv[2] = pbc[2] * h_rate[2];
-  }
+  double dv[3];
+  image_velocity_shift(pbc_flag, pbc, dv);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
@@ -249,12 +254,8 @@ int AtomVecWire::pack_border(int n, int *list, double *buf, int pbc_flag, int *p
 int AtomVecWire::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
   image_shift(pbc_flag, pbc, true, s);
-  double dv[3] = {0.0, 0.0, 0.0};
-  if (pbc_flag && deform_vremap) {
-    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
-    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
-    dv[2] = pbc[2] * h_rate[2];
-  }
+  double dv[3];
+  image_velocity_shift(pbc_flag, pbc, dv);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
