@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/validation.h"
 
 namespace wiregrain {
 
@@ -25,7 +26,7 @@ LocalDelassus::LocalDelassus(const Eigen::Matrix3d& W) : matrix_(W) {
   if (!W.allFinite()) throw InvalidArgument("W", "local Delassus block W has a non-finite entry");
   if (!(W(0, 0) > 0.0)) {
     throw InvalidArgument("W", "local Delassus block needs W_nn > 0, got " +
-                                   std::to_string(W(0, 0)));
+                                   format_number(W(0, 0)));
   }
   // Singular (to round-off) when |det W| is below 1e-13 of the product of the row norms.
   const double scale = W.row(0).norm() * W.row(1).norm() * W.row(2).norm();
@@ -147,10 +148,7 @@ struct Candidate {
 
 LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Vector3d& q,
                                   double mu, const Eigen::Vector3d& guess) {
-  if (!(mu >= 0.0) || !std::isfinite(mu)) {
-    throw InvalidArgument("mu", "friction coefficient must be finite and >= 0, got " +
-                                    std::to_string(mu));
-  }
+  require_nonnegative("mu", mu);
   if (!q.allFinite()) throw InvalidArgument("q", "local free velocity q has a non-finite entry");
 
   const Eigen::Matrix3d& W = delassus.matrix();
