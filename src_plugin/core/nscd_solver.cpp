@@ -53,14 +53,17 @@ void NscdOptions::validate() const {
 // The Gauss–Seidel sweep.
 
 double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses) {
-  double sum = 0.0;
+  double sum = 0.0, norm_r_squared = 0.0, norm_u_squared = 0.0;
   for (int c = 0; c < op.contact_count(); ++c) {
-    sum += natural_map_residual(impulses[c], op.velocity(c), op.friction_coefficient(c))
-               .squaredNorm();
+    const Eigen::Vector3d u = op.velocity(c);
+    sum += natural_map_residual(impulses[c], u, op.friction_coefficient(c)).squaredNorm();
+    norm_r_squared += impulses[c].squaredNorm();
+    norm_u_squared += u.squaredNorm();
   }
-  const double norm_q = op.free_velocity_norm();
+  const double scale = std::max(
+      {op.free_velocity_norm(), std::sqrt(norm_r_squared), std::sqrt(norm_u_squared)});
   const double error = std::sqrt(sum);
-  return norm_q > DBL_EPSILON ? error / norm_q : error;
+  return scale > DBL_EPSILON ? error / scale : error;
 }
 
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
