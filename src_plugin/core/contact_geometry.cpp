@@ -304,38 +304,34 @@ GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, d
 // ---------------------------------------------------------------------------------------
 // Topology helpers (body-frame indices; the PosedShape has the world coordinates).
 
-// The two faces of every edge, in the order of shape.edges().
+// The two faces of every edge, in the order of shape.edges(): every face loop's directed
+// edge i → j is recorded at vertex i as (j, face); edge (i, j) then finds its faces in
+// the short lists of i and j (a vertex has a handful of neighbours).
 std::vector<std::array<int, 2>> edge_faces(const ConvexShape& shape) {
-  struct Entry {
-    int lo, hi, face;
-  };
-  std::vector<Entry> entries;
   const auto& faces = shape.faces();
+  const int n_v = static_cast<int>(shape.vertices().size());
+  std::vector<int> start(n_v + 1, 0);
+  for (const auto& f : faces)
+    for (int i : f.vertices) ++start[i + 1];
+  for (int i = 0; i < n_v; ++i) start[i + 1] += start[i];
+  std::vector<std::array<int, 2>> directed(start[n_v]);  // (head vertex, face) by tail
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
     const auto& loop = faces[f].vertices;
     const std::size_t m = loop.size();
-    for (std::size_t k = 0; k < m; ++k) {
-      const int i = loop[k], j = loop[(k + 1) % m];
-      entries.push_back({std::min(i, j), std::max(i, j), f});
-    }
+    for (std::size_t k = 0; k < m; ++k) directed[fill[loop[k]]++] = {loop[(k + 1) % m], f};
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-    return x.lo != y.lo ? x.lo < y.lo : (x.hi != y.hi ? x.hi < y.hi : x.face < y.face);
-  });
+  const auto face_of = [&](int tail, int head) {
+    for (int k = start[tail]; k < start[tail + 1]; ++k)
+      if (directed[k][0] == head) return directed[k][1];
+    return -1;
+  };
   std::vector<std::array<int, 2>> out;
   out.reserve(shape.edges().size());
   for (const auto& e : shape.edges()) {
-    const auto it = std::lower_bound(entries.begin(), entries.end(), Entry{e[0], e[1], -1},
-                                     [](const Entry& x, const Entry& y) {
-                                       return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
-                                     });
-    std::array<int, 2> f = {-1, -1};
-    if (it != entries.end() && it->lo == e[0] && it->hi == e[1]) {
-      f[0] = it->face;
-      const auto next = it + 1;
-      if (next != entries.end() && next->lo == e[0] && next->hi == e[1]) f[1] = next->face;
-    }
-    if (f[1] < 0) f[1] = f[0];  // cannot happen for a closed hull; keeps the code total
+    std::array<int, 2> f = {face_of(e[0], e[1]), face_of(e[1], e[0])};
+    if (f[0] < 0) f[0] = f[1];  // cannot happen for a closed hull; keeps the code total
+    if (f[1] < 0) f[1] = f[0];
     out.push_back(f);
   }
   return out;
@@ -365,15 +361,32 @@ struct SatAxis {
   Vector3d normal = Vector3d::UnitX();  // from A to B
 };
 
-// Gauss-map test (Gregorius, "The Separating Axis Test between Convex Polyhedra", GDC
-// 2013): do the great arcs a→b and c→d (each shorter than π) intersect? Inclusive by a
-// rounding margin: an extra candidate axis is harmless (it only gives an upper bound).
-bool arcs_cross(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& d) {
-  constexpr double eps = 1e-14;
-  const Vector3d bxa = b.cross(a);
-  const Vector3d dxc = d.cross(c);
-  const double cba = c.dot(bxa), dba = d.dot(bxa), adc = a.dot(dxc), bdc = b.dot(dxc);
-  return cba * dba <= eps && adc * bdc <= eps && cba * bdc >= -eps;
+// Gauss-map test for edge pairs (Gregorius, "The Separating Axis Test between Convex
+// Polyhedra", GDC 2013): the great arcs a1→a2 of A's edge and c→d = −b1→−b2 of B's
+// (each shorter than π) intersect iff c·(a2×a1) and d·(a2×a1) differ in sign, a1·(d×c)
+// and a2·(d×c) differ in sign, and c·(a2×a1), a2·(d×c) agree (same hemisphere).
+// Inclusive by a rounding margin: an extra candidate axis is harmless (it only gives an
+// upper bound of the depth).
+
+// An edge of a posed core, as the SAT needs it: a point, the direction, the normals of
+// its two faces (for B negated: the arc of −B) and their cross product.
+struct SatEdge {
+  Vector3d point, dir, n1, n2, n2_x_n1;
+};
+
+std::vector<SatEdge> sat_edges(const PosedShape& P, double sign) {
+  const auto faces = edge_faces(P.shape());
+  const auto& edges = P.shape().edges();
+  std::vector<SatEdge> out(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    SatEdge& e = out[i];
+    e.point = P.vertices()[edges[i][0]];
+    e.dir = P.vertices()[edges[i][1]] - e.point;
+    e.n1 = sign * P.face_normals()[faces[i][0]];
+    e.n2 = sign * P.face_normals()[faces[i][1]];
+    e.n2_x_n1 = e.n2.cross(e.n1);
+  }
+  return out;
 }
 
 SatAxis sat_polytopes(const PosedShape& A, const PosedShape& B) {
@@ -392,24 +405,25 @@ SatAxis sat_polytopes(const PosedShape& A, const PosedShape& B) {
     const Vector3d& m = B.face_normals()[g];
     consider(support_value(A, -m) + B.face_offsets()[g], -m);
   }
-  const auto faces_a = edge_faces(A.shape());
-  const auto faces_b = edge_faces(B.shape());
-  const auto& edges_a = A.shape().edges();
-  const auto& edges_b = B.shape().edges();
-  for (std::size_t i = 0; i < edges_a.size(); ++i) {
-    const Vector3d& a1 = A.face_normals()[faces_a[i][0]];
-    const Vector3d& a2 = A.face_normals()[faces_a[i][1]];
-    const Vector3d dir_a = A.vertices()[edges_a[i][1]] - A.vertices()[edges_a[i][0]];
-    for (std::size_t j = 0; j < edges_b.size(); ++j) {
-      const Vector3d& b1 = B.face_normals()[faces_b[j][0]];
-      const Vector3d& b2 = B.face_normals()[faces_b[j][1]];
-      if (!arcs_cross(a1, a2, -b1, -b2)) continue;
-      const Vector3d dir_b = B.vertices()[edges_b[j][1]] - B.vertices()[edges_b[j][0]];
-      Vector3d axis = dir_a.cross(dir_b);
+  // Edge pairs: the arcs (a1, a2) of A and (−b1, −b2) of B must cross (the test of
+  // arcs_cross, unrolled so that half the pairs stop after two dot products). For a
+  // crossing pair the two edges are the supports along the axis, so n·(p_A − p_B) is
+  // the depth; it never exceeds the depth from the full supports, which is computed
+  // only when the edge value would improve the minimum (and then counts).
+  constexpr double eps = 1e-14;
+  const std::vector<SatEdge> ea = sat_edges(A, 1.0), eb = sat_edges(B, -1.0);
+  for (const SatEdge& a : ea) {
+    for (const SatEdge& b : eb) {
+      const double cba = b.n1.dot(a.n2_x_n1), dba = b.n2.dot(a.n2_x_n1);
+      if (cba * dba > eps) continue;
+      const double adc = a.n1.dot(b.n2_x_n1), bdc = a.n2.dot(b.n2_x_n1);
+      if (adc * bdc > eps || cba * bdc < -eps) continue;
+      Vector3d axis = a.dir.cross(b.dir);
       const double length = axis.norm();
-      if (!(length > kParallelEdges * dir_a.norm() * dir_b.norm())) continue;
+      if (!(length > kParallelEdges * a.dir.norm() * b.dir.norm())) continue;
       axis /= length;
-      if (axis.dot(a1 + a2) < 0.0) axis = -axis;  // outward of A at its edge
+      if (axis.dot(a.n1 + a.n2) < 0.0) axis = -axis;  // outward of A at its edge
+      if (axis.dot(a.point - b.point) >= best.depth) continue;
       consider(support_value(A, axis) + support_value(B, -axis), axis);
     }
   }
@@ -940,11 +954,21 @@ CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
   const SatAxis axis = sat_polytopes(a, b);
   out.normal = axis.normal;
   if (!g.touching) {
-    // disjoint but nearly touching: exact closest points, normal from the SAT
-    out.method = DistanceMethod::gjk_sat;
+    // Disjoint but nearly touching: exact closest points. The normal is the direction
+    // of largest separation: the SAT axis (exact when the contact involves a face or two
+    // crossing edges), unless the GJK direction separates more (vertex–vertex,
+    // vertex–edge, parallel edges: their normal is no SAT candidate).
     out.distance = g.distance;
     out.point_a = g.point_a;
     out.point_b = g.point_b;
+    const Vector3d n_gjk = (g.point_b - g.point_a) / g.distance;
+    const double separation_gjk = -(support_value(a, n_gjk) + support_value(b, -n_gjk));
+    if (separation_gjk > -axis.depth + kGjkProgress * size) {
+      out.method = DistanceMethod::gjk;
+      out.normal = n_gjk;
+    } else {
+      out.method = DistanceMethod::gjk_sat;
+    }
     return out;
   }
   out.method = DistanceMethod::sat;
@@ -1093,8 +1117,16 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
       out.method = DistanceMethod::sat;
       out.distance = -axis.depth;
     } else {
+      // nearly touching: the direction of largest separation (see core_distance)
       out.method = DistanceMethod::gjk_sat;
       out.distance = g.distance;
+      const Vector3d n_gjk = (g.point_b - g.point_a) / g.distance;
+      const double separation_gjk =
+          -(support_value(grain, n_gjk) + segment_support(S.end, -n_gjk));
+      if (separation_gjk > -axis.depth + kGjkProgress * size) {
+        out.method = DistanceMethod::gjk;
+        n = n_gjk;
+      }
     }
   }
   out.normal = n;

@@ -20,8 +20,9 @@
 //     fail the sign test is tried, the nearest wins). Terminates when the support point
 //     repeats a simplex vertex (exact optimality for polytopes) or gains less than
 //     1e-15 relative;
-//   - overlapping cores (and cores closer than 1e-8 × their size, where the GJK
-//     direction is ill-conditioned): separating-axis test over the face normals of both
+//   - overlapping cores (and, for the normal, cores closer than 1e-8 × their size, where
+//     the GJK direction is ill-conditioned; the direction that separates the cores more
+//     is kept): separating-axis test over the face normals of both
 //     cores and the cross products of edge pairs that form a face of the Minkowski
 //     difference (Gauss-map arc test, Gregorius, GDC 2013). For polytopes this candidate
 //     set contains the minimum, so the depth is exact to rounding;
@@ -88,7 +89,8 @@ class PosedShape {
 // How the signed core distance was obtained.
 enum class DistanceMethod {
   gjk,         // disjoint cores: GJK distance, normal along the closest points
-  gjk_sat,     // disjoint but nearly touching cores: GJK distance, normal from the SAT
+  gjk_sat,     // disjoint but nearly touching cores (< 1e-8 × size): GJK distance,
+               // normal from the SAT
   sat,         // overlapping cores: SAT penetration depth and normal
   gjk_far,     // GJK stopped early: the cores are farther apart than the early-exit
                // distance; `distance` is a lower bound, points and normal approximate

@@ -188,7 +188,12 @@ bool penetration_from_minkowski_hull(const std::vector<Vector3d>& a,
                                      Vector3d& normal, double& second) {
   std::vector<Vector3d> diff;
   for (const auto& x : a)
-    for (const auto& y : b) diff.push_back(x - y);
+    for (const auto& y : b) {
+      const Vector3d z = x - y;  // aligned solids repeat differences: keep one
+      bool repeated = false;
+      for (const auto& w : diff) repeated = repeated || (w - z).norm() < 1e-9;
+      if (!repeated) diff.push_back(z);
+    }
   const ConvexShape hull = ConvexShape::from_points(diff, 0.0);
   depth = kInf;
   second = kInf;
@@ -315,6 +320,35 @@ TEST(ContactDistance, RandomEllipsoidHullsMatchBruteForce) {
               checked, dist_err.max, witness_err.max, iterations / double(checked));
 }
 
+// Regular solids, disjoint, equally oriented or turned by quarter turns (parallel faces
+// and edges: degenerate simplices for GJK).
+TEST(ContactDistance, AlignedRegularSolidsMatchBruteForce) {
+  std::mt19937_64 rng(606);
+  const std::vector<ConvexShape> solids = {
+      ConvexShape::cube(1.0, 0.1), ConvexShape::box(1.2, 0.7, 0.4, 0.1),
+      ConvexShape::regular_tetrahedron(1.3, 0.1), ConvexShape::regular_octahedron(1.0, 0.1)};
+  ErrorStats dist_err, witness_err;
+  int checked = 0;
+  while (checked < 300) {
+    const ConvexShape& sa = solids[rng() % 4];
+    const ConvexShape& sb = solids[rng() % 4];
+    const Quaterniond qa = random_orientation(rng);
+    const Quaterniond qb =
+        qa * Quaterniond(AngleAxisd(kPi / 2 * double(rng() % 4), Vector3d::UnitY()));
+    // along a body axis of A, sideways by a random amount, at a random distance
+    const Vector3d local(uniform(rng, -0.6, 0.6), uniform(rng, -0.6, 0.6),
+                         (rng() % 2 ? 1.0 : -1.0) * uniform(rng, 1.0, 2.0));
+    const Pose pa{Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)), qa};
+    const Pose pb{pa.x + qa * local, qb};
+    const double e = check_distance_case(sa, pa, sb, pb, witness_err, checked);
+    if (e < 0.0) continue;
+    dist_err.add(e);
+    EXPECT_LT(e, 1e-9);
+  }
+  std::printf("  %d aligned regular-solid pairs: max |d - d_ref| = %.2e, witnesses %.2e\n",
+              checked, dist_err.max, witness_err.max);
+}
+
 // Pairs placed (by Newton on the brute-force distance) at a prescribed core distance:
 // dilated grains touching (d = r_A + r_B), and cores nearly touching (1e-3 … 1e-10, the
 // last two below the GJK normal's conditioning limit, where the normal comes from SAT).
@@ -350,13 +384,25 @@ TEST(ContactDistance, TouchingAndNearlyTouchingPairs) {
 // difference.
 TEST(ContactPenetration, RandomOverlapsMatchMinkowskiHull) {
   std::mt19937_64 rng(4242);
+  const std::vector<ConvexShape> solids = {
+      ConvexShape::cube(1.0, 0.1), ConvexShape::box(1.2, 0.7, 0.4, 0.1),
+      ConvexShape::regular_tetrahedron(1.3, 0.1), ConvexShape::regular_octahedron(1.0, 0.1)};
   ErrorStats depth_err, normal_err;
   int checked = 0;
-  while (checked < 300) {
-    const ConvexShape sa = random_grain(rng, 0.1), sb = random_grain(rng, 0.1);
-    const Pose pa{Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)),
-                  random_orientation(rng)};
-    const Pose pb{pa.x + uniform(rng, 0.0, 0.9) * random_unit(rng), random_orientation(rng)};
+  while (checked < 500) {
+    // 300 random grains, then regular solids: randomly oriented, equally oriented, or
+    // turned by quarter turns (many parallel faces and edges)
+    const bool regular = checked >= 300;
+    const ConvexShape sa = regular ? solids[rng() % 4] : random_grain(rng, 0.1);
+    const ConvexShape sb = regular ? solids[rng() % 4] : random_grain(rng, 0.1);
+    const Quaterniond qa = random_orientation(rng);
+    Quaterniond qb = random_orientation(rng);
+    if (regular && checked % 3 == 1) qb = qa;
+    if (regular && checked % 3 == 2)
+      qb = qa * Quaterniond(AngleAxisd(kPi / 2 * double(rng() % 4), Vector3d::UnitX())) *
+           Quaterniond(AngleAxisd(kPi / 2 * double(rng() % 4), Vector3d::UnitZ()));
+    const Pose pa{Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)), qa};
+    const Pose pb{pa.x + uniform(rng, 0.0, 0.9) * random_unit(rng), qb};
     const PosedShape a(sa, pa.x, pa.q), b(sb, pb.x, pb.q);
     double depth, second;
     Vector3d normal;
@@ -648,6 +694,90 @@ TEST(ContactPenetration, OverlappingCubesDepthNormalAndPoints) {
     EXPECT_NEAR(cd.distance, -0.05, 1e-12);
     EXPECT_LT((cd.normal - M.vector(Vector3d::UnitX())).norm(), 1e-12);
   }
+}
+
+// Cores touching exactly (distance 0, method sat) or nearly (1e-11, below the GJK
+// normal's conditioning limit): the face–face manifold stays exact.
+TEST(ContactManifold, CubesWithTouchingAndNearlyTouchingCores) {
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
+  for (const Motion& M : motions()) {
+    for (double d : {0.0, 1e-11}) {
+      const PosedShape a(cube, M.point(Vector3d::Zero()), M.orientation(kIdentity));
+      const PosedShape b(cube, M.point({0.25, 0.5, 1.0 + d}), M.orientation(kIdentity));
+      const ContactManifold m = contact_manifold(a, b, 0.0);
+      EXPECT_EQ(m.method, d == 0.0 ? DistanceMethod::sat : DistanceMethod::gjk_sat);
+      EXPECT_NEAR(m.gap, d - 0.2, 1e-12);
+      EXPECT_LT((m.normal - M.vector(Vector3d::UnitZ())).norm(), 1e-12);
+      const double z = 0.5 + d / 2;
+      expect_points(m,
+                    {M.point({-0.25, 0.0, z}), M.point({0.5, 0.0, z}), M.point({0.5, 0.5, z}),
+                     M.point({-0.25, 0.5, z})},
+                    1e-12, "touching");
+      for (const auto& p : m.points) EXPECT_NEAR(p.gap, d - 0.2, 1e-12);
+    }
+  }
+}
+
+// Corner above corner: the normal (the line of the corners) is no SAT axis; for nearly
+// touching cores the GJK direction is kept because it separates more.
+TEST(ContactManifold, VertexOnVertexNormalAlongTheCorners) {
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.05);
+  const Quaterniond corner_up = Quaterniond::FromTwoVectors(Vector3d(1, 1, 1), Vector3d::UnitZ());
+  const Quaterniond twisted = Quaterniond(AngleAxisd(0.4, Vector3d::UnitZ())) * corner_up;
+  for (const Motion& M : motions()) {
+    for (double d : {0.05, 1e-9}) {
+      const PosedShape a(cube, M.point(Vector3d::Zero()), M.orientation(corner_up));
+      const PosedShape b(cube, M.point({0, 0, std::sqrt(3.0) + d}), M.orientation(twisted));
+      const ContactManifold m = contact_manifold(a, b, 0.0);
+      EXPECT_EQ(m.method, DistanceMethod::gjk);
+      EXPECT_NEAR(m.gap, d - 0.1, 1e-12);
+      // the direction of the closest-point difference: rounding ~1e-16 × |x| / d
+      EXPECT_LT((m.normal - M.vector(Vector3d::UnitZ())).norm(), 1e-14 / d);
+      EXPECT_EQ(m.feature_a.kind, FeatureKind::vertex);
+      EXPECT_EQ(m.feature_b.kind, FeatureKind::vertex);
+      expect_points(m, {M.point({0, 0, std::sqrt(0.75) + d / 2})}, 1e-12, "vertex-vertex");
+    }
+  }
+}
+
+// Far pairs: GJK stops on its lower bound, no points; the reported gap is a lower bound.
+TEST(ContactManifold, FarPairsStopEarlyWithALowerBound) {
+  std::mt19937_64 rng(3);
+  int early = 0;
+  for (int k = 0; k < 200; ++k) {
+    const ConvexShape sa = random_grain(rng, 0.1), sb = random_grain(rng, 0.1);
+    const Pose pa{Vector3d::Zero(), random_orientation(rng)};
+    const Pose pb{uniform(rng, 2.5, 4.0) * random_unit(rng), random_orientation(rng)};
+    const PosedShape a(sa, pa.x, pa.q), b(sb, pb.x, pb.q);
+    const ContactManifold m = contact_manifold(a, b, 0.05);
+    const CoreDistance full = core_distance(a, b);
+    EXPECT_TRUE(m.points.empty());
+    EXPECT_GE(m.gap, 0.05);
+    EXPECT_LE(m.gap, full.distance - 0.2 + 1e-12);
+    early += m.method == DistanceMethod::gjk_far;
+  }
+  EXPECT_GT(early, 100);
+}
+
+// Far from the origin the world coordinates carry absolute rounding ~1e-16 × |x|.
+TEST(ContactManifold, AccuracyFarFromTheOrigin) {
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
+  Motion M;
+  M.q = Quaterniond(AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()));
+  double worst = 0.0;
+  for (double far : {1.0, 100.0, 1e4}) {
+    M.t = Vector3d(far, -far, 0.5 * far);
+    const double g = 0.003;
+    const PosedShape a(cube, M.point(Vector3d::Zero()), M.orientation(kIdentity));
+    const PosedShape b(cube, M.point({0.2, 0.1, 1.2 + g}), M.orientation(kIdentity));
+    const ContactManifold m = contact_manifold(a, b, 0.05);
+    ASSERT_EQ(m.points.size(), 4u);
+    for (const auto& p : m.points) {
+      EXPECT_NEAR(p.gap, g, 1e-14 * far);
+      worst = std::max(worst, std::abs(p.gap - g) / far);
+    }
+  }
+  std::printf("  cube pair at |x| up to 1e4: max gap error / |x| = %.2e\n", worst);
 }
 
 // A face tilted by less than the angle tolerance still gives the face manifold, with the
@@ -998,6 +1128,7 @@ TEST(ContactGeometryErrors, BadInputsNameTheArgument) {
   EXPECT_EQ(argument_of([&] { PosedShape(cube, Vector3d::Zero(), Quaterniond(0, 0, 0, 0)); }),
             "orientation");
   EXPECT_EQ(argument_of([&] { contact_manifold(a, b, nan); }), "activation_distance");
+  EXPECT_EQ(argument_of([&] { core_distance(a, b, -1.0); }), "early_exit_distance");
   ContactOptions bad;
   bad.angle_tolerance = -1;
   EXPECT_EQ(argument_of([&] { contact_manifold(a, b, 0.1, bad); }), "angle_tolerance");
