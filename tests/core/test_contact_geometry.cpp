@@ -1043,10 +1043,10 @@ TEST(SegmentPolyhedron, RandomSegmentsMatchSampling) {
     }
   }
   std::printf("  segments (general %d, face-parallel %d, edge-parallel %d, on the surface %d, "
-              "gap 0 %d, through %d): distance error %.2e, points %.2e, depth error %.2e "
-              "(%d)\n",
+              "gap 0 %d, through %d): distance error %.2e (%d disjoint), points %.2e, depth "
+              "error %.2e (%d)\n",
               kinds[0], kinds[1], kinds[2], kinds[3], kinds[4], kinds[5], dist_err.max,
-              point_err.max, depth_err.max, depth_err.count);
+              dist_err.count, point_err.max, depth_err.max, depth_err.count);
   EXPECT_GE(dist_err.count, 1000);
 }
 
