@@ -20,7 +20,9 @@
 // NSN_GP_HYBRID, light error then full check); ours then runs until its Siconos error is
 // at most Siconos' final error (the tolerance if Siconos converged, what it reached at
 // its iteration cap otherwise), in the forward order (Siconos' order), the alternating
-// order and with the core defaults (random order); the ratio is our time over Siconos'.
+// order and with the core defaults (random order); for generated problems also on the
+// bodies themselves (solve_nscd_step, W never formed); the ratio is our time over
+// Siconos'.
 // Debian's Siconos 4.4 has no FCLib interface: the Siconos problem is built here from what
 // libfclib reads (W as a sparse block matrix of 3×3 blocks).
 #include <FrictionContactProblem.h>
@@ -153,9 +155,10 @@ NscdStep random_bodies(int bodies, int contacts, const Options& options) {
   return step;
 }
 
-// Parses KIND ARGS at argv[first...]; returns the problem and a label.
+// Parses KIND ARGS at argv[next...]; returns the problem, a label and the step it was
+// assembled from.
 ReducedProblem generate(int argc, char** argv, int& next, const Options& options,
-                        std::string& label) {
+                        std::string& label, NscdStep& step) {
   if (next >= argc) throw std::runtime_error("missing problem kind (pile, column, random)");
   const std::string kind = argv[next++];
   auto integer = [&](const char* what) {
@@ -168,17 +171,20 @@ ReducedProblem generate(int argc, char** argv, int& next, const Options& options
   if (kind == "pile") {
     const int nx = integer("NX"), ny = integer("NY"), nz = integer("NZ");
     label = "pile " + std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
-    return assemble_reduced(cube_lattice(nx, ny, nz, options, true), law);
+    step = cube_lattice(nx, ny, nz, options, true);
+    return assemble_reduced(step, law);
   }
   if (kind == "column") {
     const int n = integer("N");
     label = "column of " + std::to_string(n) + " cubes";
-    return assemble_reduced(cube_lattice(1, 1, n, options, false), law);
+    step = cube_lattice(1, 1, n, options, false);
+    return assemble_reduced(step, law);
   }
   if (kind == "random") {
     const int nb = integer("NB"), nc = integer("NC");
     label = "random " + std::to_string(nb) + " bodies";
-    return assemble_reduced(random_bodies(nb, nc, options), law);
+    step = random_bodies(nb, nc, options);
+    return assemble_reduced(step, law);
   }
   throw std::runtime_error("unknown problem kind '" + kind + "' (pile, column, random)");
 }
@@ -304,7 +310,32 @@ Run run_ours(const ReducedProblem& reduced, SiconosProblem& siconos, const Optio
   return run;
 }
 
-void compare(const ReducedProblem& reduced, const std::string& label, const Options& options) {
+// The same solve on the bodies (solve_nscd_step: W never formed, body velocities kept up
+// to date), random order.
+Run run_bodies(const NscdStep& step, SiconosProblem& siconos, const Options& options,
+               double tolerance) {
+  Run run;
+  run.name = "wiregrain nscd on bodies, random order";
+  run.seconds = 1e300;
+  NscdOptions nscd;
+  nscd.tolerance = tolerance;
+  nscd.max_iterations = options.max_iterations;
+  nscd.seed = options.seed;
+  for (int k = 0; k < options.repeat; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    NscdStepResult result = solve_nscd_step(step, nscd);
+    run.seconds = std::min(run.seconds, seconds_since(start));
+    run.iterations = result.contacts.report.iterations;
+    run.converged = !result.contacts.report.hit_iteration_cap;
+    run.error = result.contacts.report.siconos_error;
+    run.impulses = std::move(result.contacts.impulses);
+  }
+  run.library_error = siconos.error(run.impulses);
+  return run;
+}
+
+void compare(const ReducedProblem& reduced, const std::string& label, const Options& options,
+             const NscdStep* step = nullptr) {
   std::printf("problem: %s: %d contacts, %ld W blocks, |q| = %.6g\n", label.c_str(),
               reduced.contact_count(), reduced.W.stored_blocks(), reduced.q.norm());
   SiconosProblem siconos(reduced);
@@ -319,6 +350,7 @@ void compare(const ReducedProblem& reduced, const std::string& label, const Opti
                           "wiregrain nscd, alternating order"));
   runs.push_back(run_ours(reduced, siconos, options, SweepOrder::random, target,
                           "wiregrain nscd, random order (default)"));
+  if (step != nullptr) runs.push_back(run_bodies(*step, siconos, options, target));
   std::printf("tolerance %.3g; our target: Siconos' final error %.3e; best of %d runs\n",
               options.tolerance, target, options.repeat);
   std::printf("%-40s %8s %14s %14s %12s %12s %8s\n", "solver", "sweeps", "siconos error",
@@ -382,14 +414,16 @@ int main(int argc, char** argv) {
       const Options options = parse_options(argc, argv, first_flag(argc, argv, 2));
       int next = 2;
       std::string label;
-      const ReducedProblem problem = generate(argc, argv, next, options, label);
-      compare(problem, label, options);
+      NscdStep step;
+      const ReducedProblem problem = generate(argc, argv, next, options, label, step);
+      compare(problem, label, options, &step);
     } else if (mode == "write") {
       const std::string path = argv[2];
       const Options options = parse_options(argc, argv, first_flag(argc, argv, 3));
       int next = 3;
       std::string label;
-      const ReducedProblem problem = generate(argc, argv, next, options, label);
+      NscdStep step;
+      const ReducedProblem problem = generate(argc, argv, next, options, label, step);
       const bench::FclibInfo info{"wiregrain " + label,
                                   "reduced problem of one Moreau-Jean step (theta = 1, e = 0, "
                                   "h = 1e-3)",
