@@ -25,7 +25,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Cores closer than this (relative to the size of the configuration) are "nearly
 // touching": the direction of the GJK closest-point difference, whose rounding is
-// ~1e-16 × size, is then worse than 1e-8 rad, and the normal is taken from the SAT.
+// ~1e-16 × |x|, is then worse than ~1e-8 rad, and the normal is taken from the SAT unless
+// the GJK direction separates the cores more.
 constexpr double kNearTouching = 1e-8;
 // GJK: the origin counts as reached (cores touch or overlap) when |v| is below this
 // times the size; the iteration stops when the support point improves the bound by less
@@ -35,7 +36,8 @@ constexpr double kGjkProgress = 1e-15;
 constexpr int kGjkMaxIterations = 200;
 // Clipped polygon vertices closer than this times the size are merged; a vertex this
 // close to the line through its neighbours is dropped; clipping treats points this far
-// outside a polygon edge as on it.
+// outside a polygon edge as on it; vertices this close to a supporting plane belong to
+// the support set.
 constexpr double kMergeTolerance = 1e-10;
 // Edge pairs whose cross product is below this (relative to the edge lengths) are
 // parallel: their separating axis coincides with a face normal (tested anyway).
