@@ -299,6 +299,30 @@ TEST(NscdBox, ConveyorBelt) {
   EXPECT_NEAR(result.velocities[0][2], 0.0, 1e-14);
 }
 
+// A plate of infinite mass (inverse mass 0, a body in the list) rising at V under a cube
+// resting on it: the cube leaves with the plate's velocity (perfectly inelastic), the
+// plate's velocity is untouched. No contacts at all: free flight.
+TEST(NscdBox, KinematicPlateAndNoContacts) {
+  const double h = 1e-3, g = 9.81, V = 0.3;
+  NscdStep step;
+  step.time_step = h;
+  NscdBody plate;
+  plate.velocity_begin = plate.velocity_free = Vector3d(0.0, 0.0, V);
+  step.bodies.push_back(plate);
+  step.bodies.push_back(cube_body(Vector3d::Zero(), Vector3d(0.0, 0.0, -g), h));
+  add_square_face(step, 0, 1, 0.0, 0.5);
+  const NscdStepResult result = solve_nscd_step(step, tight());
+  EXPECT_NEAR(result.velocities[1][2], V, 1e-13);
+  EXPECT_EQ(result.velocities[0], Vector3d(0.0, 0.0, V));
+  EXPECT_NEAR(world_impulse_sum(result, 0, 4)[2], kMass * (V + g * h), 1e-13);
+
+  step.contacts.clear();
+  const NscdStepResult free = solve_nscd_step(step, NscdOptions());
+  EXPECT_EQ(free.velocities[1], Vector3d(0.0, 0.0, -g * h));
+  EXPECT_EQ(free.contacts.report.iterations, 1);
+  EXPECT_FALSE(free.contacts.report.hit_iteration_cap);
+}
+
 namespace {
 
 // Random bodies and contacts with random frames, lever arms, masses, inertias.
