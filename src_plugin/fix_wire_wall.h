@@ -1,0 +1,62 @@
+/* fix wire/wall: a frictional plane wall for wire beads, optionally moving.
+
+   fix ID group wire/wall plane px py pz nx ny nz [E 100] [nu 0] [mu_s 0.5] [mu_d 0.5]
+       [restitution 0.5 | damping_ratio z] [limit_force no|yes] [velocity vx vy vz]
+
+   The wall is the plane through (px,py,pz) with unit normal (nx,ny,nz) pointing into the
+   space of the beads, moving at the given velocity. A bead (sphere of its radius: the
+   end of its spherocylinder segments) touching it feels the soft contact of
+   core/soft_contact.h with a rigid wall, E* = E/(1−ν²), k_n = E* l π/4, k_t = E* r, where
+   l is the bead's segment rest length; tangential springs persist (fix
+   WIRE_WALL_HISTORY_<ID>). Several walls: several fixes.
+
+   Outputs: vector = [contacts, largest overlap, force on the wall x, y, z] (all ranks). */
+
+#ifdef FIX_CLASS
+
+FixStyle(wire/wall,FixWireWall)
+
+#else
+
+#ifndef LMP_FIX_WIRE_WALL_H
+#define LMP_FIX_WIRE_WALL_H
+
+#include <string>
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixWireWall : public Fix {
+ public:
+  FixWireWall(class LAMMPS *, int, char **);
+  ~FixWireWall();
+  int setmask();
+  void post_create();
+  void init();
+  void setup(int);
+  void post_force(int);
+  void reset_dt();
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+
+ private:
+  double point_[3], normal_[3], velocity_[3];
+  double youngs_modulus_, poisson_ratio_, static_friction_, dynamic_friction_, damping_ratio_;
+  bool limit_force_;
+  // the wall passes through point_ + velocity_ reference_dt_ (step − reference_step_)
+  bigint reference_step_;
+  double reference_dt_;
+  class AtomVecWire *wire_;
+  class FixWireContactHistory *history_;
+  std::string history_id_;
+  double local_stats_[5], global_stats_[5];
+  bigint stats_step_;
+  void current_point(double p[3]) const;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
