@@ -155,8 +155,9 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         // (while it stays above) at intervals that double after each failed check, capped
         // at a twentieth of the sweeps done: at most ~5 % extra sweeps and a logarithmic
         // number of error evaluations. (Siconos instead tightens the increment tolerance
-        // by increment/error; on slowly converging stacks that over-tightens: 47010
-        // sweeps instead of ~2000 for a warm-started 20-cube column.)
+        // by increment/error; on 15 warm-started steps of a 20-cube column both took the
+        // same number of sweeps within 4 %; this rule does not depend on how the
+        // increment relates to the error.)
         report.residual = report.increment;
         if (report.increment <= options.tolerance && iteration >= next_error_check) {
           const double error = siconos_error(op, result.impulses);
