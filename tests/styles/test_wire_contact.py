@@ -1,0 +1,234 @@
+"""Wire contacts (pair_style wire/contact, fix wire/wall, compute wire/contacts):
+restitution, static and dynamic friction, a pile that must not pass through itself, and
+the error messages."""
+
+import math
+
+import numpy as np
+
+from liggghts_run import DeckTestCase, main, read_dump, run
+
+HEADER = """
+units           lj
+atom_style      wire
+boundary        f f f
+newton          off
+region          box block -5 5 -5 5 -5 5
+create_box      2 box
+"""
+
+
+def bead_mass(rho=0.5, r=0.1, l=0.2):
+    return rho * math.pi * r * r * l
+
+
+class Restitution(DeckTestCase):
+    # Two one-segment wires crossing at right angles approach head-on; at the crossing the
+    # force goes half to each bead, so each wire moves as a rigid body of mass 2m and the
+    # pair is a linear spring-dashpot of effective mass m: e(ζ) = exp(−πζ/√(1−ζ²)).
+    def measured(self, e_target):
+        deck = HEADER + f"""
+create_wire     1 line -0.1 0 0.101 0.1 0 0.101
+create_wire     1 line 0 -0.1 -0.101 0 0.1 -0.101
+group           upper id 1 2
+group           lower id 3 4
+velocity        upper set 0 0 -0.1
+velocity        lower set 0 0 0.1
+pair_style      wire/contact restitution {e_target} mu_s 0 mu_d 0
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+timestep        2e-5
+compute         vu upper reduce ave vz
+compute         vl lower reduce ave vz
+compute         c all wire/contacts
+thermo_style    custom step c_vu c_vl c_c[1]
+thermo_modify   format float %.15g
+thermo          100
+run             10000
+"""
+        r = run(deck)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        self.assertGreater(np.max(t["c[1]"]), 0)
+        self.assertEqual(t["c[1]"][-1], 0)
+        return (t["vu"][-1] - t["vl"][-1]) / 0.2
+
+    def test_restitution_matches_damping_ratio(self):
+        for e in (0.3, 0.5, 0.9):
+            measured = self.measured(e)
+            print(f"restitution: target {e}, measured {measured:.6f}")
+            self.assertAlmostEqual(measured, e, delta=1e-3)
+
+
+class Friction(DeckTestCase):
+    # A straight 10-segment wire lying on a floor (μ_s = 0.6, μ_d = 0.4) under gravity g = 1.
+    def floor_deck(self, extra, steps):
+        return HEADER + f"""
+create_wire     1 line -1 0 0.1 1 0 0.1
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+fix             g all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1 mu_s 0.6 mu_d 0.4 restitution 0.1
+timestep        1e-4
+run             20000
+{extra}
+compute         vx all reduce ave vx
+compute         x all reduce ave x
+thermo_style    custom step time c_vx c_x f_floor[3] f_floor[5]
+thermo_modify   format float %.15g
+thermo          100
+run             {steps}
+"""
+
+    def test_sliding_deceleration_is_mu_d_g(self):
+        r = run(self.floor_deck("velocity all set 0.5 0 0 sum yes", 5000))
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        moving = t["vx"] > 0.05                     # while clearly sliding
+        slope = np.polyfit(t["Time"][moving], t["vx"][moving], 1)[0]
+        print(f"sliding wire: deceleration {-slope:.6f}, mu_d g = 0.4")
+        self.assertAlmostEqual(-slope / 0.4, 1.0, delta=0.005)
+        # the floor carries the weight
+        weight = 11 * bead_mass()
+        self.assertAlmostEqual(-t["floor[5]"][-1] / weight, 1.0, delta=1e-3)
+
+    def test_sticks_below_mu_s(self):
+        weight = 11 * bead_mass()
+        for factor, sticks in ((0.9, True), (1.1, False)):
+            push = factor * 0.6 * weight / 11      # per bead, ramped up over 0.5 time units
+            extra = (f"variable ramp equal ramp(0.0,{push!r})\n"
+                     "fix push all addforce v_ramp 0.0 0.0\n"
+                     "run 5000\n"
+                     "unfix push\n"
+                     f"fix push all addforce {push!r} 0.0 0.0")
+            r = run(self.floor_deck(extra, 10000))
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            travelled = t["x"][-1]                  # the wire's centre started at x = 0
+            print(f"push {factor} mu_s m g: travelled {travelled:.3e}, final vx {t['vx'][-1]:.3e}")
+            if sticks:
+                self.assertLess(abs(travelled), 1e-3)
+                self.assertLess(abs(t["vx"][-1]), 1e-6)
+            else:
+                self.assertGreater(travelled, 0.01)
+
+
+class SegmentOnFixedWire(DeckTestCase):
+    # A one-segment wire lying across a fixed one-segment rail, launched along it: it
+    # decelerates at μ_d g while it slides (the contact normal is vertical). The rail is one
+    # long segment: crossing a bead of a many-segment rail makes a fresh contact that
+    # sticks until μ_s, which adds friction (about 1 % here with μ_s/μ_d = 0.5/0.3).
+    def test_slides_at_mu_d(self):
+        deck = HEADER + """
+create_wire     1 line -2 0 0 2 0 0 segment 4.0
+create_wire     2 line -1.5 -0.1 0.2 -1.5 0.1 0.2
+group           rail type 1
+group           rider type 2
+pair_style      wire/contact mu_s 0.5 mu_d 0.3 restitution 0.1
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic
+fix             int rider nve/gear forces velocity
+fix             g rider gravity 1.0 vector 0 0 -1
+timestep        1e-4
+run             20000
+velocity        rider set 0.4 0 0
+compute         vx rider reduce ave vx
+thermo_style    custom step time c_vx
+thermo_modify   format float %.15g
+thermo          100
+run             10000
+"""
+        r = run(deck)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        moving = t["vx"] > 0.05
+        slope = np.polyfit(t["Time"][moving], t["vx"][moving], 1)[0]
+        print(f"segment on a fixed wire: deceleration {-slope:.6f}, mu_d g = 0.3")
+        self.assertAlmostEqual(-slope / 0.3, 1.0, delta=0.005)
+
+
+class Pile(DeckTestCase):
+    # A 2000-segment wire coiled above a floor falls into a box and piles up; the segments
+    # never pass through each other: the largest overlap stays below half the wire radius.
+    def test_pile_does_not_pass_through_itself(self):
+        deck = """
+units           lj
+atom_style      wire
+boundary        f f f
+newton          off
+region          box block -3 3 -3 3 -1 20
+create_box      1 box
+create_wire     1 loop 0 0 1 1.5 42.5 0.3 segment 0.2
+pair_style      wire/contact
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+fix             g all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1
+fix             w1 all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
+fix             w2 all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
+fix             w3 all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
+fix             w4 all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
+timestep        1e-4
+compute         c all wire/contacts
+compute         zmax all reduce max z
+thermo_style    custom step atoms ke c_c[1] c_c[3] c_zmax f_floor[2]
+thermo          1000
+run             60000
+"""
+        r = run(deck)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        self.assertGreaterEqual(int(t["Atoms"][0]), 2001)
+        worst = np.max(t["c[3]"])
+        print(f"pile of 2000 segments: largest overlap {worst:.4f} r_w, {int(t['c[1]'][-1])} contacts at the "
+              f"end, top of the pile {t['zmax'][-1]:.3f}, largest floor overlap {np.max(t['floor[2]']):.4f}")
+        self.assertGreater(t["c[1]"][-1], 1000)      # it did pile up
+        self.assertLess(t["zmax"][-1], 13.0)         # fallen from 13.7
+        self.assertLess(worst, 0.5)
+
+
+class BadInput(DeckTestCase):
+    def check(self, body, message):
+        text = HEADER + "create_wire 1 line 0 0 0 1 0 0\n" + body + "\nrun 1\n"
+        self.assertStopsWith(run(text), message)
+
+    def test_negative_parameters(self):
+        self.check("pair_style wire/contact E -1\npair_coeff * *",
+                   "pair_style wire/contact (id -): value of 'E' must be > 0, got -1")
+        self.check("pair_style wire/contact mu_s -0.1\npair_coeff * *",
+                   "pair_style wire/contact (id -): value of 'mu_s' must be >= 0, got -0.1")
+        self.check("pair_style wire/contact damping_ratio -0.2\npair_coeff * *",
+                   "pair_style wire/contact (id -): value of 'damping_ratio' must be >= 0, got -0.2")
+        self.check("pair_style wire/contact restitution 1.5\npair_coeff * *",
+                   "pair_style wire/contact (id -): value of 'restitution' must be in [0, 1]")
+
+    def test_mu_d_above_mu_s(self):
+        self.check("pair_style wire/contact mu_s 0.3 mu_d 0.5\npair_coeff * *",
+                   "pair_style wire/contact (id -): mu_d (0.500000) must not exceed mu_s (0.300000)")
+        self.check("fix w all wire/wall plane 0 0 -1 0 0 1 mu_s 0.2 mu_d 0.4",
+                   "fix wire/wall (id w): mu_d (0.400000) must not exceed mu_s (0.200000)")
+
+    def test_unknown_type(self):
+        self.check("pair_style wire/contact\npair_coeff 3 3",
+                   "pair_coeff wire/contact (id -): atom type '3' is not one of 1..2")
+
+    def test_pair_coeff_keyword(self):
+        self.check("pair_style wire/contact\npair_coeff 1 2 stiffness 4",
+                   "pair_coeff wire/contact (id -): unknown keyword 'stiffness'")
+
+    def test_wall_zero_normal(self):
+        self.check("fix w all wire/wall plane 0 0 0 0 0 0",
+                   "fix wire/wall (id w): the plane normal (nx ny nz) must not be zero")
+
+    def test_wall_missing_value(self):
+        self.check("fix w all wire/wall plane 0 0 0 0 0 1 velocity 1 0",
+                   "fix wire/wall (id w): missing value after 'velocity'")
+
+
+if __name__ == "__main__":
+    main()
