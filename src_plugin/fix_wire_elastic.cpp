@@ -25,6 +25,7 @@
 #include "core/gear_integrator.h"
 #include "core/wire_elasticity.h"
 #include "plugin_args.h"
+#include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -102,12 +103,7 @@ void FixWireElastic::init() {
     if (atom->mask[i] & groupbit) longest_local = std::max(longest_local, wire_->wire_rest[i]);
   MPI_Allreduce(&longest_local, &longest, 1, MPI_DOUBLE, MPI_MAX, world);
   const double reach = kGhostReachInRestLengths * longest + neighbor->skin;
-  if (comm->cutghostuser < reach) {
-    comm->cutghostuser = reach;
-    if (comm->me == 0 && screen)
-      fprintf(screen, "fix wire/elastic (id %s): ghost cutoff raised to %g (2.5 rest lengths + skin)\n",
-              id, reach);
-  }
+  wiregrain_lmp::ensure_ghost_reach(lmp, reach);
   // Without a pair style the neighbour cutoff is 0 and LIGGGHTS' atom sorting would stop
   // with "bin size = 0"; sort the beads on the ghost reach instead.
   if (force->pair == NULL && atom->sortfreq > 0) {

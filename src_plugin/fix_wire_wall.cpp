@@ -140,6 +140,7 @@ void FixWireWall::post_force(int /*vflag*/) {
   const Eigen::Vector3d wall_velocity(velocity_[0], velocity_[1], velocity_[2]);
   const double e_star = wiregrain::rigid_wall_modulus(youngs_modulus_, poisson_ratio_);
 
+  const bool setup = update->setupflag != 0;
   history_->begin_step();
   for (int k = 0; k < 5; k++) local_stats_[k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
@@ -163,9 +164,11 @@ void FixWireWall::post_force(int /*vflag*/) {
     wiregrain::TangentialHistory h;
     history_->lookup(i, 0, h);
     const Eigen::Vector3d u = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]) - wall_velocity;
+    // the setup force call of a run does not advance the spring (see pair wire/contact)
+    wiregrain::TangentialHistory advanced = h;
     const wiregrain::SoftContactForce fc =
-        wiregrain::soft_contact_force(law, -gap, n, u, update->dt, rmass[i], h);
-    history_->store(i, 0, h);
+        wiregrain::soft_contact_force(law, -gap, n, u, setup ? 0.0 : update->dt, rmass[i], advanced);
+    history_->store(i, 0, setup ? h : advanced);
     for (int d = 0; d < 3; d++) {
       f[i][d] += fc.force[d];
       local_stats_[2 + d] -= fc.force[d];

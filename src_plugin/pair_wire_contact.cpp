@@ -28,6 +28,7 @@
 #include "core/segment_distance.h"
 #include "core/soft_contact.h"
 #include "plugin_args.h"
+#include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 
@@ -171,8 +172,7 @@ void PairWireContact::init_style() {
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
   reach_ = 2.0 * global[1] + 2.0 * kStretchAllowance * global[0];
   // the next bead of a ghost segment must be a ghost too
-  const double ghost = reach_ + kStretchAllowance * global[0] + neighbor->skin;
-  if (comm->cutghostuser < ghost) comm->cutghostuser = ghost;
+  wiregrain_lmp::ensure_ghost_reach(lmp, reach_ + kStretchAllowance * global[0] + neighbor->skin);
 
   const int ifix = modify->find_fix(kHistoryId);
   if (ifix < 0) {
@@ -241,6 +241,7 @@ void PairWireContact::compute(int eflag, int vflag) {
   int contacts = 0;
   double largest_overlap = 0.0;
   const double dt = update->dt;
+  const bool setup = update->setupflag != 0;
 
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ii++) {
@@ -257,7 +258,7 @@ void PairWireContact::compute(int eflag, int vflag) {
       if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
       if (segment_next_[b] == -2)
         error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
-                           " is missing: the ghost cutoff is too short").c_str());
+                           " is missing (a segment stretched beyond 25 %?)").c_str());
 
       // positions as the neighbour list has them (ghosts are the right periodic images)
       const int a1 = segment_next_[a], b1 = segment_next_[b];
@@ -294,9 +295,12 @@ void PairWireContact::compute(int eflag, int vflag) {
 
       wiregrain::TangentialHistory h;
       history_->lookup(a, tag[b], h);
+      // the setup force call of a run must not advance the springs (a restart would
+      // otherwise count the step twice): evaluate on a copy, keep the history
+      wiregrain::TangentialHistory advanced = h;
       const wiregrain::SoftContactForce fc = wiregrain::soft_contact_force(
-          law, overlap, normal, vb - va, dt, m_a * m_b / (m_a + m_b), h);
-      history_->store(a, tag[b], h);
+          law, overlap, normal, vb - va, setup ? 0.0 : dt, m_a * m_b / (m_a + m_b), advanced);
+      history_->store(a, tag[b], setup ? h : advanced);
 
       add_force(f[b], 1.0 - cp.t, fc.force);
       add_force(f[b1], cp.t, fc.force);
@@ -304,7 +308,7 @@ void PairWireContact::compute(int eflag, int vflag) {
       add_force(f[a1], -cp.s, fc.force);
       if (eflag)
         eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
-                    0.5 * law.tangential_stiffness * h.spring.squaredNorm();
+                    0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
       contacts++;
       largest_overlap = std::max(largest_overlap, overlap);
     }
@@ -317,6 +321,7 @@ void PairWireContact::compute(int eflag, int vflag) {
   if (own_reverse_comm) comm->reverse_comm_pair(this);
 }
 
+// Comm::reverse_comm_pair of this LIGGGHTS expects the values per atom, not the total.
 int PairWireContact::pack_reverse_comm(int n, int first, double *buf) {
   int m = 0;
   for (int i = first; i < first + n; i++) {
@@ -324,7 +329,7 @@ int PairWireContact::pack_reverse_comm(int n, int first, double *buf) {
     buf[m++] = atom->f[i][1];
     buf[m++] = atom->f[i][2];
   }
-  return m;
+  return comm_reverse;
 }
 
 void PairWireContact::unpack_reverse_comm(int n, int *list, double *buf) {

@@ -3,7 +3,7 @@ all give the same state."""
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, align_by_position, deck, main, read_dump, run
+from liggghts_run import DeckTestCase, align_by_position, deck, full_precision, main, read_dump, run
 
 RESTARTED = """
 atom_modify     map array
@@ -27,6 +27,7 @@ fix  integr all nve/gear scheme {scheme}
 thermo_style    custom step atoms ke
 thermo          100
 dump            d1 all custom {n} dump.settle_gear id x y z vx vy vz
+dump_modify     d1 format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
 run             {n}
 """
 
@@ -39,7 +40,7 @@ def max_difference(a, b):
 
 class SettleGear(DeckTestCase):
     def straight(self, np_ranks, nsteps, scheme="gear5"):
-        r = run(deck("examples/settle_gear/in.settle_gear"), np_ranks=np_ranks,
+        r = run(full_precision(deck("examples/settle_gear/in.settle_gear"), "d1"), np_ranks=np_ranks,
                 variables={"nsteps": nsteps, "dumpevery": nsteps, "scheme": scheme})
         self.assertRanCleanly(r)
         return r
@@ -56,7 +57,7 @@ class SettleGear(DeckTestCase):
     def test_restart_reproduces_straight_run(self):
         for scheme in ("gear5", "verlet"):
             straight = read_dump(self.straight(1, 300, scheme).path("dump.settle_gear"))
-            first = run(deck("examples/settle_gear/in.settle_gear") + "\nwrite_restart restart.half\n",
+            first = run(full_precision(deck("examples/settle_gear/in.settle_gear"), "d1") + "\nwrite_restart restart.half\n",
                         variables={"nsteps": 150, "dumpevery": 150, "scheme": scheme})
             self.assertRanCleanly(first)
             second = run(RESTARTED.format(scheme=scheme, n=150), workdir=first.workdir)

@@ -3,7 +3,7 @@ restarted midway, and written to / read from a data file: all give the same stat
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, deck, main, read_dump, run
+from liggghts_run import DeckTestCase, deck, full_precision, main, read_dump, run
 
 EXAMPLE = "examples/wire_loop/in.wire_loop"
 
@@ -22,6 +22,7 @@ thermo_style    custom step atoms ke c_wire[1] c_wire[2] c_wire[4]
 thermo_modify   format float %.17g norm no
 thermo          100
 dump            beads all custom {n} dump.wire_loop id x y z vx vy vz
+dump_modify     beads format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
 run             {n}
 """
 
@@ -35,7 +36,7 @@ def max_difference(a, b):
 
 class WireLoop(DeckTestCase):
     def straight(self, np_ranks, nsteps, scheme="gear5"):
-        r = run(deck(EXAMPLE), np_ranks=np_ranks,
+        r = run(full_precision(deck(EXAMPLE), "beads"), np_ranks=np_ranks,
                 variables={"nsteps": nsteps, "dumpevery": nsteps, "scheme": scheme})
         self.assertRanCleanly(r)
         return r
@@ -56,7 +57,7 @@ class WireLoop(DeckTestCase):
         for scheme in ("gear5", "verlet"):
             straight = read_dump(self.straight(1, 200, scheme).path("dump.wire_loop"))
             for ranks in (1, 2):
-                first = run(deck(EXAMPLE) + "\nwrite_restart restart.half\n", np_ranks=ranks,
+                first = run(full_precision(deck(EXAMPLE), "beads") + "\nwrite_restart restart.half\n", np_ranks=ranks,
                             variables={"nsteps": 100, "dumpevery": 100, "scheme": scheme})
                 self.assertRanCleanly(first)
                 second = run(CONTINUE.format(load="read_restart restart.half", scheme=scheme, n=100),
@@ -70,12 +71,13 @@ class WireLoop(DeckTestCase):
     def test_data_file_round_trip(self):
         # write_data keeps the links and rest lengths: the same elastic energies and the
         # same data file after a read_data / write_data cycle.
-        first = run(deck(EXAMPLE) + "\nwrite_data wire.data\n",
+        first = run(full_precision(deck(EXAMPLE), "beads") + "\nwrite_data wire.data\n",
                     variables={"nsteps": 100, "dumpevery": 100, "scheme": "verlet"})
         self.assertRanCleanly(first)
         energies_before = first.thermo()
         second = run(CONTINUE.format(load="read_data wire.data", scheme="verlet", n=0)
                      .replace("dump            beads all custom 0 dump.wire_loop id x y z vx vy vz\n", "")
+                     .replace('dump_modify     beads format "%d %.17g %.17g %.17g %.17g %.17g %.17g"\n', "")
                      + "write_data wire2.data\n", workdir=first.workdir)
         self.assertRanCleanly(second)
         energies_after = second.thermo()

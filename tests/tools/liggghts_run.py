@@ -47,7 +47,12 @@ class Run:
             except ValueError:
                 break
         data = np.array(rows)
-        return {name: data[:, k] for k, name in enumerate(header)}
+        # LIGGGHTS prints c_ID[1] as "ID": later columns of the same name become "ID#2", ...
+        names, seen = [], {}
+        for name in header:
+            seen[name] = seen.get(name, 0) + 1
+            names.append(name if seen[name] == 1 else f"{name}#{seen[name]}")
+        return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_args=()):
@@ -99,6 +104,20 @@ def align_by_position(reference, other, columns=("x", "y", "z")):
     order = np.argmin(d2, axis=1)
     assert len(set(order.tolist())) == len(order), "positions do not match one to one"
     return {name: values[order] for name, values in other.items()}
+
+
+def full_precision(text, dump_id):
+    """Deck text with `dump_modify <dump_id> format` set to 17 significant digits for the
+    custom dump <dump_id> (id first, then floats), so dumps compare at round-off."""
+    lines = text.splitlines()
+    for k, line in enumerate(lines):
+        words = line.split()
+        if words[:2] == ["dump", dump_id] and words[3] == "custom":
+            columns = words[6:]
+            fmt = " ".join("%d" if c in ("id", "type") else "%.17g" for c in columns)
+            lines.insert(k + 1, f'dump_modify {dump_id} format "{fmt}"')
+            return "\n".join(lines) + "\n"
+    raise AssertionError(f"no custom dump {dump_id!r} in the deck")
 
 
 def deck(name):
