@@ -21,7 +21,7 @@ ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int &iarg, int narg, char 
   if (!args.done()) args.unknown_keyword(args.next_keyword());
   iarg = narg;
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   extvector = 0;
   vector = new double[size_vector];
 }
@@ -41,4 +41,5 @@ void ComputeWireContacts::compute_vector() {
   vector[0] = pair_->contact_count();
   vector[1] = pair_->max_overlap();
   vector[2] = smallest_radius_ > 0.0 && smallest_radius_ < 1e300 ? vector[1] / smallest_radius_ : 0.0;
+  vector[3] = pair_->pair_evaluations();
 }

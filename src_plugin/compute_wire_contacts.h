@@ -3,7 +3,8 @@
 
    compute ID all wire/contacts
 
-   vector = [number of contacts, largest overlap, largest overlap / smallest bead radius] */
+   vector = [number of contacts, largest overlap, largest overlap / smallest bead radius,
+             exact segment–segment distance evaluations] */
 
 #ifdef COMPUTE_CLASS
 

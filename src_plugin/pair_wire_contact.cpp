@@ -64,8 +64,7 @@ PairWireContact::PairWireContact(LAMMPS *lmp)
   defaults_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
   defaults_.limit_force = false;
   comm_reverse = 3;
-  local_stats_[0] = local_stats_[1] = 0.0;
-  global_stats_[0] = global_stats_[1] = 0.0;
+  for (int k = 0; k < 3; k++) local_stats_[k] = global_stats_[k] = 0.0;
 }
 
 PairWireContact::~PairWireContact() {
@@ -239,6 +238,7 @@ void PairWireContact::compute(int eflag, int vflag) {
 
   history_->begin_step();
   int contacts = 0;
+  double evaluations = 0.0;  // exact segment–segment distances computed
   double largest_overlap = 0.0;
   const double dt = update->dt;
   const bool setup = update->setupflag != 0;
@@ -268,6 +268,7 @@ void PairWireContact::compute(int eflag, int vflag) {
       // bounding spheres of the two spherocylinders first (most pairs of the list)
       const double reach = 0.5 * ((xa1 - xa0).norm() + (xb1 - xb0).norm()) + r_a + r_b;
       if ((0.5 * (xa0 + xa1 - xb0 - xb1)).squaredNorm() >= reach * reach) continue;
+      evaluations++;
       const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
       const double overlap = r_a + r_b - cp.distance;
       if (overlap <= 0.0) continue;
@@ -316,6 +317,7 @@ void PairWireContact::compute(int eflag, int vflag) {
   history_->end_step();
   local_stats_[0] = contacts;
   local_stats_[1] = largest_overlap;
+  local_stats_[2] = evaluations;
   stats_step_ = -1;
 
   if (own_reverse_comm) comm->reverse_comm_pair(this);
@@ -344,8 +346,12 @@ void PairWireContact::unpack_reverse_comm(int n, int *list, double *buf) {
 
 double PairWireContact::contact_count() {
   if (stats_step_ != update->ntimestep) {
-    MPI_Allreduce(&local_stats_[0], &global_stats_[0], 1, MPI_DOUBLE, MPI_SUM, world);
+    const double sums[2] = {local_stats_[0], local_stats_[2]};
+    double totals[2];
+    MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);
     MPI_Allreduce(&local_stats_[1], &global_stats_[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    global_stats_[0] = totals[0];
+    global_stats_[2] = totals[1];
     stats_step_ = update->ntimestep;
   }
   return global_stats_[0];
@@ -354,6 +360,41 @@ double PairWireContact::contact_count() {
 double PairWireContact::max_overlap() {
   contact_count();
   return global_stats_[1];
+}
+
+double PairWireContact::pair_evaluations() {
+  contact_count();
+  return global_stats_[2];
+}
+
+// Restart files keep pair_style and pair_coeff: a restarted run needs neither command.
+void PairWireContact::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  fwrite(&defaults_, sizeof(Coefficients), 1, fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) fwrite(&coefficients_[i][j], sizeof(Coefficients), 1, fp);
+    }
+}
+
+void PairWireContact::read_restart(FILE *fp, const int /*major*/, const int /*minor*/) {
+  allocate();
+  const int me = comm->me;
+  if (me == 0 && fread(&defaults_, sizeof(Coefficients), 1, fp) != 1)
+    error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+  MPI_Bcast(&defaults_, sizeof(Coefficients), MPI_CHAR, 0, world);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0 && fread(&setflag[i][j], sizeof(int), 1, fp) != 1)
+        error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      if (me == 0 && fread(&coefficients_[i][j], sizeof(Coefficients), 1, fp) != 1)
+        error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+      MPI_Bcast(&coefficients_[i][j], sizeof(Coefficients), MPI_CHAR, 0, world);
+      coefficients_[j][i] = coefficients_[i][j];
+    }
 }
 
 double PairWireContact::memory_usage() {

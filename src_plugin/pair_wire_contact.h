@@ -11,7 +11,8 @@
    interact. k_n = E_ww l_w π/4, k_t = E_ww r_w with E_ww = E/(2(1−ν²)), l_w and r_w the
    means of the two segments; damping γ = 2ζ√(k m) with m = m_A m_B/(m_A + m_B) and m_A the
    mass of segment A's two beads. The tangential springs live in the fix
-   WIRE_CONTACT_HISTORY, so they survive neighbour rebuilds, migration and restarts. */
+   WIRE_CONTACT_HISTORY, so they survive neighbour rebuilds, migration and restarts;
+   restart files also keep the pair_style and pair_coeff settings. */
 
 #ifdef PAIR_CLASS
 
@@ -37,11 +38,16 @@ class PairWireContact : public Pair {
   double init_one(int, int);
   int pack_reverse_comm(int, int, double *);
   void unpack_reverse_comm(int, int *, double *);
+  void write_restart(FILE *);
+  void read_restart(FILE *, const int, const int);
   double memory_usage();
 
   // this step's wire–wire contacts and the largest overlap (all ranks)
   double contact_count();
   double max_overlap();
+  // exact segment–segment distance evaluations of this step (pairs past the
+  // bounding-sphere test)
+  double pair_evaluations();
 
   struct Coefficients {
     double youngs_modulus, poisson_ratio, static_friction, dynamic_friction, damping_ratio;
@@ -54,8 +60,8 @@ class PairWireContact : public Pair {
   class AtomVecWire *wire_;
   class FixWireContactHistory *history_;
   double reach_;                     // largest segment extent + 2 radii: the pair cutoff
-  double local_stats_[2];            // contacts, largest overlap on this rank
-  double global_stats_[2];
+  double local_stats_[3];            // contacts, largest overlap, evaluations on this rank
+  double global_stats_[3];
   bigint stats_step_;
   // per bead (owned and ghost), rebuilt every step: index of the next bead (−1: none,
   // −2: not in the ghost shell) and the position of its image nearest to the bead
