@@ -1,0 +1,56 @@
+// The grain shape library: body frames and their round trip through serialisation.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "core/shape_library.h"
+
+using namespace wiregrain;
+
+// A box of 1 x 2 x 3 added in a rotated, shifted frame: the library stores it with its
+// centroid at the origin and its principal moments ascending, m(b²+c²)/12, ...; the
+// placement maps the body frame back onto the input vertices.
+TEST(ShapeLibrary, BodyFrameAndPlacement) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d shift(0.3, -1.0, 2.0);
+  const ConvexShape input = ConvexShape::box(1.0, 2.0, 3.0).transformed(rotation, shift);
+  ShapeLibrary library(MassModel::sharp_polyhedron);
+  ShapeLibrary::Placement placement;
+  const int index = library.add(input, &placement);
+  ASSERT_EQ(index, 0);
+  const GrainShape& g = library[0];
+  EXPECT_NEAR(g.volume, 6.0, 1e-12);
+  // box a x b x c = 1 x 2 x 3, m = 6: moments m(a²+b²)/12 < m(a²+c²)/12 < m(b²+c²)/12
+  EXPECT_NEAR(g.unit_inertia.x(), 6.0 * (1.0 + 4.0) / 12.0, 1e-12);
+  EXPECT_NEAR(g.unit_inertia.y(), 6.0 * (1.0 + 9.0) / 12.0, 1e-12);
+  EXPECT_NEAR(g.unit_inertia.z(), 6.0 * (4.0 + 9.0) / 12.0, 1e-12);
+  EXPECT_NEAR(placement.centroid.x(), shift.x(), 1e-12);
+  // every body-frame vertex, placed, is one of the input vertices
+  for (const Eigen::Vector3d& v : g.shape.vertices()) {
+    const Eigen::Vector3d placed = placement.rotation * v + placement.centroid;
+    double nearest = 1e300;
+    for (const Eigen::Vector3d& w : input.vertices()) nearest = std::min(nearest, (placed - w).norm());
+    EXPECT_LT(nearest, 1e-12);
+  }
+}
+
+TEST(ShapeLibrary, SerialiseRoundTrip) {
+  ShapeLibrary library(MassModel::dilated);
+  for (int k = 0; k < 20; ++k) library.add(ConvexShape::random_ellipsoid(1000 + k, 20, 0.9, 0.8, 0.6, 0.1));
+  library.add(ConvexShape::cube(1.0, 0.05));
+  const ShapeLibrary copy = ShapeLibrary::deserialize(library.serialize());
+  ASSERT_EQ(copy.size(), library.size());
+  EXPECT_EQ(copy.model(), MassModel::dilated);
+  for (int s = 0; s < library.size(); ++s) {
+    EXPECT_EQ(copy[s].shape.vertices().size(), library[s].shape.vertices().size());
+    EXPECT_EQ(copy[s].shape.faces().size(), library[s].shape.faces().size());
+    EXPECT_NEAR(copy[s].volume, library[s].volume, 1e-14 * library[s].volume);
+    EXPECT_NEAR((copy[s].unit_inertia - library[s].unit_inertia).norm(), 0.0, 1e-13);
+    EXPECT_EQ(copy[s].bounding_radius, library[s].bounding_radius);
+  }
+  std::vector<double> broken = library.serialize();
+  broken.resize(broken.size() / 2);
+  EXPECT_THROW(ShapeLibrary::deserialize(broken), InvalidArgument);
+}
