@@ -13,6 +13,8 @@
 #include "memory.h"
 #include "modify.h"
 
+#include "plugin_comm.h"
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -123,39 +125,9 @@ void AtomVecWire::copy(int i, int j, int delflag) {
       modify->fix[atom->extra_grow[iextra]]->copy_arrays(i, j, delflag);
 }
 
-// Periodic image shift, as the stock styles compute it: forward communication of a
-// triclinic box shifts in box coordinates, border communication in lamda coordinates.
-void AtomVecWire::image_shift(int pbc_flag, int *pbc, bool border, double s[3]) const {
-  s[0] = s[1] = s[2] = 0.0;
-  if (pbc_flag == 0) return;
-  if (domain->triclinic == 0) {
-    s[0] = pbc[0] * domain->xprd;
-    s[1] = pbc[1] * domain->yprd;
-    s[2] = pbc[2] * domain->zprd;
-  } else if (border) {
-    s[0] = pbc[0];
-    s[1] = pbc[1];
-    s[2] = pbc[2];
-  } else {
-    s[0] = pbc[0] * domain->xprd + pbc[5] * domain->xy + pbc[4] * domain->xz;
-    s[1] = pbc[1] * domain->yprd + pbc[3] * domain->yz;
-    s[2] = pbc[2] * domain->zprd;
-  }
-}
-
-// A deforming box (fix deform remap v) adds its strain rate to the velocity of
-// periodic images.
-void AtomVecWire::image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const {
-  dv[0] = dv[1] = dv[2] = 0.0;
-  if (!pbc_flag || !deform_vremap) return;
-  dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
-  dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
-  dv[2] = pbc[2] * h_rate[2];
-}
-
 int AtomVecWire::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
-  image_shift(pbc_flag, pbc, false, s);
+  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, false, s);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
@@ -168,9 +140,9 @@ int AtomVecWire::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc
 
 int AtomVecWire::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
-  image_shift(pbc_flag, pbc, false, s);
+  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, false, s);
   double dv[3];
-  image_velocity_shift(pbc_flag, pbc, dv);
+  wiregrain_lmp::deforming_image_velocity(pbc_flag, pbc, deform_vremap, h_rate, dv);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
@@ -238,7 +210,7 @@ int AtomVecWire::unpack_bead(int i, const double *buf) {
 
 int AtomVecWire::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
-  image_shift(pbc_flag, pbc, true, s);
+  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];
@@ -253,9 +225,9 @@ int AtomVecWire::pack_border(int n, int *list, double *buf, int pbc_flag, int *p
 
 int AtomVecWire::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
   double s[3];
-  image_shift(pbc_flag, pbc, true, s);
+  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
   double dv[3];
-  image_velocity_shift(pbc_flag, pbc, dv);
+  wiregrain_lmp::deforming_image_velocity(pbc_flag, pbc, deform_vremap, h_rate, dv);
   int m = 0;
   for (int i = 0; i < n; i++) {
     const int j = list[i];

@@ -74,9 +74,6 @@ class AtomVecWire : public AtomVec {
   double **x, **v, **f;
   double *radius, *rmass;
 
-  // shift of a periodic image for forward and border communication
-  void image_shift(int pbc_flag, int *pbc, bool border, double shift[3]) const;
-  void image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const;
   // the bead values sent to ghosts besides position: tag type mask radius mass links
   int pack_bead(int j, double *buf) const;
   int unpack_bead(int i, const double *buf);

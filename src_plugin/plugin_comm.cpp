@@ -13,4 +13,32 @@ void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach) {
   if (lmp->comm->cutghostuser < cutoff) lmp->comm->cutghostuser = cutoff;
 }
 
+void periodic_image_shift(const LAMMPS_NS::Domain *domain, int pbc_flag, const int *pbc, bool border,
+                          double s[3]) {
+  s[0] = s[1] = s[2] = 0.0;
+  if (pbc_flag == 0) return;
+  if (domain->triclinic == 0) {
+    s[0] = pbc[0] * domain->xprd;
+    s[1] = pbc[1] * domain->yprd;
+    s[2] = pbc[2] * domain->zprd;
+  } else if (border) {
+    s[0] = pbc[0];
+    s[1] = pbc[1];
+    s[2] = pbc[2];
+  } else {
+    s[0] = pbc[0] * domain->xprd + pbc[5] * domain->xy + pbc[4] * domain->xz;
+    s[1] = pbc[1] * domain->yprd + pbc[3] * domain->yz;
+    s[2] = pbc[2] * domain->zprd;
+  }
+}
+
+void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, const double *h_rate,
+                              double dv[3]) {
+  dv[0] = dv[1] = dv[2] = 0.0;
+  if (!pbc_flag || !deform_vremap) return;
+  dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+  dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+  dv[2] = pbc[2] * h_rate[2];
+}
+
 }  // namespace wiregrain_lmp

@@ -4,6 +4,7 @@
 
 namespace LAMMPS_NS {
 class LAMMPS;
+class Domain;
 }
 
 namespace wiregrain_lmp {
@@ -13,6 +14,15 @@ namespace wiregrain_lmp {
 // sends atoms only within cutghost/2 + skin/2 + their radius, so the user cutoff must be
 // twice the reach there. Call from init(): Comm::init runs after the styles' init.
 void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach);
+
+// Shift of a periodic image for an atom style's pack_comm (border = false) and
+// pack_border (border = true): box lengths, or for a triclinic box tilt-corrected lengths
+// (forward) and lamda units (border), as LIGGGHTS' own styles compute it.
+void periodic_image_shift(const LAMMPS_NS::Domain *domain, int pbc_flag, const int *pbc, bool border,
+                          double shift[3]);
+// Velocity added to a periodic image in a deforming box (fix deform remap v).
+void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, const double *h_rate,
+                              double dv[3]);
 
 }  // namespace wiregrain_lmp
 

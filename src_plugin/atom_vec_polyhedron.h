@@ -1,0 +1,117 @@
+/* atom_style polyhedron: rigid convex spheropolyhedral grains (DESIGN.md section 3).
+
+   atom_style polyhedron [mass dilated|sharp]
+
+   Per grain: position (the centre of mass), velocity, force, orientation (unit quaternion
+   body frame → space, atom->quaternion, w first), angular velocity and angular momentum
+   (space frame), torque, principal moments of inertia (body frame, atom->inertia), shape
+   index (atom->shapetype) into the shape library, density, mass and bounding radius (the
+   farthest surface point, sweep radius included: neighbour lists and ghosts use it).
+   `mass`: the body that carries the mass and inertia, the swept spheropolyhedron
+   (dilated, default) or the sharp polyhedron.
+
+   The shape library (wiregrain::ShapeLibrary) is held here, identical on every rank, and
+   written to restart files. Grains are made by create_grains (or read_data, given a
+   library from a restart).
+
+   Data file Atoms line: atom-ID atom-type shape density qw qi qj qk x y z
+   Velocities line:      atom-ID vx vy vz wx wy wz */
+
+#ifdef ATOM_CLASS
+
+AtomStyle(polyhedron,AtomVecPolyhedron)
+
+#else
+
+#ifndef LMP_ATOM_VEC_POLYHEDRON_H
+#define LMP_ATOM_VEC_POLYHEDRON_H
+
+#include <memory>
+
+#include "atom_vec.h"
+
+namespace wiregrain {
+class ShapeLibrary;
+class ConvexShape;
+}
+
+namespace LAMMPS_NS {
+
+class AtomVecPolyhedron : public AtomVec {
+ public:
+  AtomVecPolyhedron(class LAMMPS *);
+  ~AtomVecPolyhedron();
+  void settings(int, char **);
+  void grow(int);
+  void grow_reset();
+  void copy(int, int, int);
+  int pack_comm(int, int *, double *, int, int *);
+  int pack_comm_vel(int, int *, double *, int, int *);
+  int pack_comm_hybrid(int, int *, double *);
+  void unpack_comm(int, int, double *);
+  void unpack_comm_vel(int, int, double *);
+  int unpack_comm_hybrid(int, int, double *);
+  int pack_reverse(int, int, double *);
+  int pack_reverse_hybrid(int, int, double *);
+  void unpack_reverse(int, int *, double *);
+  int unpack_reverse_hybrid(int, int *, double *);
+  int pack_border(int, int *, double *, int, int *);
+  int pack_border_vel(int, int *, double *, int, int *);
+  int pack_border_hybrid(int, int *, double *);
+  void unpack_border(int, int, double *);
+  void unpack_border_vel(int, int, double *);
+  int unpack_border_hybrid(int, int, double *);
+  int pack_exchange(int, double *);
+  int unpack_exchange(double *);
+  int size_restart();
+  int pack_restart(int, double *);
+  int unpack_restart(double *);
+  void write_restart_settings(FILE *);
+  void read_restart_settings(FILE *);
+  void create_atom(int, double *);
+  void data_atom(double *, tagint, char **);
+  int data_atom_hybrid(int, char **);
+  void data_vel(int, char **);
+  int data_vel_hybrid(int, char **);
+  void pack_data(double **);
+  int pack_data_hybrid(int, double *);
+  void write_data(FILE *, int, double **);
+  int write_data_hybrid(FILE *, double *);
+  void pack_vel(double **);
+  int pack_vel_hybrid(int, double *);
+  void write_vel(FILE *, int, double **);
+  int write_vel_hybrid(FILE *, double *);
+  bigint memory_usage();
+
+  // The shape library. add_shape must be called with the same shape on every rank.
+  const wiregrain::ShapeLibrary &shapes() const { return *library_; }
+  int add_shape(const wiregrain::ConvexShape &shape, double body_to_input[4], double centroid[3]);
+  // Give grain i shape `shape` at `density`: mass, principal inertia, bounding radius.
+  void assign_shape(int i, int shape, double density);
+  // angular momentum from angular velocity (L = R I Rᵀ ω) and back, for grain i
+  void angmom_from_omega(int i);
+  void omega_from_angmom(int i);
+
+  // The polyhedron style of this system (plain or inside atom_style hybrid), or NULL.
+  static AtomVecPolyhedron *of(class Atom *);
+
+ private:
+  std::unique_ptr<wiregrain::ShapeLibrary> library_;
+  int *tag, *type, *mask;
+  tagint *image;
+  double **x, **v, **f;
+  double *radius, *rmass, *density;
+  double **omega, **angmom, **torque, **quat, **inertia;
+  int *shape;
+
+  void image_shift(int pbc_flag, int *pbc, bool border, double shift[3]) const;
+  void image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const;
+  // the values a ghost needs besides its position
+  int pack_grain(int j, double *buf) const;
+  int unpack_grain(int i, const double *buf);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
