@@ -1,11 +1,6 @@
 #include "dump_wire_vtk.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -20,6 +15,7 @@
 #include "update.h"
 
 #include "plugin_args.h"
+#include "plugin_vtk.h"
 
 #ifdef LAMMPS_VTK
 #include <vtkCellArray.h>
@@ -30,7 +26,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkXMLPolyDataWriter.h>
 #endif
 
 using namespace LAMMPS_NS;
@@ -45,19 +40,6 @@ constexpr int kColumnsWithEnergy = 12;
 const char *const kKind = "dump";
 const char *const kStyle = "wire/vtk";
 
-bool ends_with(const std::string &s, const std::string &suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::string json_string(const std::string &s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 // A wire as written: rows of the gathered buffer in chain order; closed repeats the first.
 struct Chain {
   std::vector<int> rows;
@@ -67,7 +49,7 @@ struct Chain {
 }  // namespace
 
 DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
-    : Dump(lmp, narg, arg), energy_fix_(-1), ascii_(false), wire_(NULL), series_loaded_(false) {
+    : Dump(lmp, narg, arg), energy_fix_(-1), ascii_(false), wire_(NULL) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
@@ -77,17 +59,8 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
     args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
 
   pattern_ = filename;
-  const std::string::size_type slash = pattern_.rfind('/');
-  const std::string dir = slash == std::string::npos ? "" : pattern_.substr(0, slash + 1);
-  const std::string name = pattern_.substr(dir.size());
-  if (name.find('*') == std::string::npos)
-    args.fail("file '" + pattern_ + "' must contain a '*' in its name (replaced by the time step)");
-  if (std::count(pattern_.begin(), pattern_.end(), '*') != 1)
-    args.fail("file '" + pattern_ + "' must contain exactly one '*', in its name");
-  if (!ends_with(name, ".vtp") || name.size() <= 4)
-    args.fail("file '" + pattern_ + "' must end in '.vtp'");
-  if (pattern_.find('%') != std::string::npos)
-    args.fail("file '" + pattern_ + "' must not contain '%' (rank 0 writes every snapshot)");
+  const std::string problem = wiregrain_lmp::vtp_pattern_problem(pattern_);
+  if (!problem.empty()) args.fail(problem);
 
   while (!args.done()) {
     const std::string key = args.next_keyword();
@@ -104,15 +77,8 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
   }
   if (!energy_fix_id_.empty()) find_energy_fix(false);
 
-  // The series file: the snapshot name without the '*' and a separator just before it,
-  // e.g. post/wire_*.vtp -> post/wire.vtp.series; a name that is only '*.vtp' uses the ID.
-  const std::string::size_type star = name.find('*');
-  std::string before = name.substr(0, star);
-  const std::string after = name.substr(star + 1);  // ends in ".vtp"
-  if (!before.empty() && std::strchr("_-.", before.back())) before.pop_back();
-  std::string stem = before + after.substr(0, after.size() - 4);
-  if (stem.empty()) stem = id;
-  series_path_ = dir + stem + ".vtp.series";
+  // e.g. post/wire_*.vtp -> post/wire.vtp.series
+  series_ = wiregrain_lmp::VtpSeries(wiregrain_lmp::vtp_series_path(pattern_, id));
 
   size_one = energy_fix_id_.empty() ? kColumnsWithoutEnergy : kColumnsWithEnergy;
   clearstep = 0;      // no compute is invoked
@@ -149,9 +115,11 @@ void DumpWireVTK::write() {
   gathered_.clear();
   Dump::write();  // count(), pack(), then write_header()/write_data() on rank 0
   if (filewriter) {
-    const std::string path = snapshot_path();
+    const std::string path =
+        wiregrain_lmp::vtp_snapshot_path(pattern_, static_cast<long long>(update->ntimestep), padflag);
     write_snapshot(path);
-    update_series(path);
+    if (!series_.add(path, update->get_cur_time(), append_flag != 0))
+      error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + series_.path() + "'").c_str());
   }
 }
 
@@ -195,14 +163,6 @@ void DumpWireVTK::pack(int *ids) {
 
 void DumpWireVTK::write_data(int n, double *mybuf) {
   gathered_.insert(gathered_.end(), mybuf, mybuf + static_cast<size_t>(n) * size_one);
-}
-
-std::string DumpWireVTK::snapshot_path() const {
-  const std::string::size_type star = pattern_.find('*');
-  char step[64];
-  if (padflag == 0) snprintf(step, sizeof(step), BIGINT_FORMAT, update->ntimestep);
-  else snprintf(step, sizeof(step), "%0*lld", padflag, static_cast<long long>(update->ntimestep));
-  return pattern_.substr(0, star) + step + pattern_.substr(star + 1);
 }
 
 void DumpWireVTK::write_snapshot(const std::string &path) {
@@ -326,76 +286,10 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
     for (int k = 0; k < 3; k++) poly->GetPointData()->AddArray(energies[k]);
   poly->GetCellData()->AddArray(wire_index);
 
-  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(poly);
-  if (ascii_) {
-    writer->SetDataModeToAscii();
-  } else {
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();  // raw binary
-  }
-  if (writer->Write() != 1)
+  if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
     error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
 #else
   (void)path;
 #endif
 }
 
-// With dump_modify append yes the snapshots of an earlier run listed in an existing
-// series file are kept (those before the current time), so a restarted simulation
-// continues the series; otherwise the file starts afresh.
-void DumpWireVTK::load_series() {
-  series_loaded_ = true;
-  if (!append_flag) return;
-  std::ifstream in(series_path_);
-  if (!in) return;
-  const double now = update->get_cur_time();
-  std::string line;
-  while (std::getline(in, line)) {
-    const std::string::size_type n = line.find("\"name\"");
-    const std::string::size_type t = line.find("\"time\"");
-    if (n == std::string::npos || t == std::string::npos) continue;
-    const std::string::size_type q0 = line.find('"', line.find(':', n) + 1);
-    if (q0 == std::string::npos) continue;
-    std::string name;
-    std::string::size_type k = q0 + 1;
-    for (; k < line.size() && line[k] != '"'; k++) {
-      if (line[k] == '\\' && k + 1 < line.size()) k++;
-      name += line[k];
-    }
-    const double time = std::strtod(line.c_str() + line.find(':', t) + 1, NULL);
-    if (time < now) series_.emplace_back(name, time);
-  }
-}
-
-void DumpWireVTK::update_series(const std::string &path) {
-  if (!series_loaded_) load_series();
-  const std::string::size_type slash = path.rfind('/');
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  series_.erase(std::remove_if(series_.begin(), series_.end(),
-                               [&](const std::pair<std::string, double> &e) { return e.first == name; }),
-                series_.end());
-  series_.emplace_back(name, update->get_cur_time());
-
-  std::ostringstream out;
-  out << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
-  for (size_t k = 0; k < series_.size(); k++) {
-    char time[64];
-    snprintf(time, sizeof(time), "%.17g", series_[k].second);
-    out << "    { \"name\" : " << json_string(series_[k].first) << ", \"time\" : " << time << " }"
-        << (k + 1 < series_.size() ? "," : "") << "\n";
-  }
-  out << "  ]\n}\n";
-
-  // write next to it and rename, so a reader never sees half a file
-  const std::string tmp = series_path_ + ".tmp";
-  const std::string text = out.str();
-  bool ok = false;
-  if (FILE *f = fopen(tmp.c_str(), "w")) {
-    ok = fwrite(text.data(), 1, text.size(), f) == text.size();
-    ok = fclose(f) == 0 && ok;
-  }
-  if (!ok || std::rename(tmp.c_str(), series_path_.c_str()) != 0)
-    error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + series_path_ + "'").c_str());
-}

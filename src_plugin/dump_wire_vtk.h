@@ -27,6 +27,7 @@ DumpStyle(wire/vtk,DumpWireVTK)
 #include <vector>
 
 #include "dump.h"
+#include "plugin_vtk.h"
 
 namespace LAMMPS_NS {
 
@@ -45,21 +46,16 @@ class DumpWireVTK : public Dump {
 
  private:
   std::string pattern_;          // the file name as given, with its '*'
-  std::string series_path_;      // <pattern without '*'>.vtp.series
   std::string energy_fix_id_;    // empty: no energy columns
   int energy_fix_;               // index of that fix in modify->fix, -1 if none
   bool ascii_;                   // VTK XML data mode: ascii or binary (appended, raw)
   class AtomVecWire *wire_;
 
-  std::vector<double> gathered_;                          // rank 0: all packed beads
-  std::vector<std::pair<std::string, double> > series_;  // rank 0: (file name, time)
-  bool series_loaded_;
+  std::vector<double> gathered_;       // rank 0: all packed beads
+  wiregrain_lmp::VtpSeries series_;    // rank 0: <pattern without '*'>.vtp.series
 
   int find_energy_fix(bool at_init);
-  std::string snapshot_path() const;
   void write_snapshot(const std::string &path);
-  void update_series(const std::string &path);
-  void load_series();
 };
 
 }  // namespace LAMMPS_NS

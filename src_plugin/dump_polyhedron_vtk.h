@@ -1,0 +1,65 @@
+/* dump polyhedron/vtk: the grains of atom_style polyhedron as VTK XML PolyData polygons,
+   one file per snapshot, plus a ParaView ".vtp.series" file listing the snapshots with
+   their times (the same times as dump wire/vtk, so both series open together).
+
+   dump ID group polyhedron/vtk N file [format binary|ascii] [sweep yes|no]
+
+   file must contain one '*' (replaced by the time step) in its name and end in ".vtp".
+   Every grain of the group with a shape becomes the polygon faces of its polyhedron
+   (shape library, body frame) placed at x + R·v; each face has its own points (the
+   points of a file are Σ over grains and faces of the face's vertex count), so faces
+   render flat. Cell data per face: id, type, shape; point data: velocity and
+   angular_velocity of the grain. `sweep yes` moves each face outward by the sweep radius
+   (an approximation of the spheropolyhedron: edges and corners are not rounded).
+
+   Every rank packs its grains through the Dump base class (pack() into buf); rank 0
+   receives all buffers and builds the meshes from the shape library, which is the same
+   on every rank. */
+
+#ifdef DUMP_CLASS
+
+DumpStyle(polyhedron/vtk,DumpPolyhedronVTK)
+
+#else
+
+#ifndef LMP_DUMP_POLYHEDRON_VTK_H
+#define LMP_DUMP_POLYHEDRON_VTK_H
+
+#include <string>
+#include <vector>
+
+#include "dump.h"
+#include "plugin_vtk.h"
+
+namespace LAMMPS_NS {
+
+class DumpPolyhedronVTK : public Dump {
+ public:
+  DumpPolyhedronVTK(class LAMMPS *, int, char **);
+  ~DumpPolyhedronVTK();
+  void write();
+
+ protected:
+  void init_style();
+  void write_header(bigint);
+  void pack(int *);
+  void write_data(int, double *);
+  int modify_param(int, char **);
+
+ private:
+  std::string pattern_;   // the file name as given, with its '*'
+  bool ascii_;            // VTK XML data mode: ascii or binary (appended, raw)
+  bool sweep_;            // offset each face outward by the sweep radius
+  class AtomVecPolyhedron *grains_;
+
+  std::vector<double> gathered_;       // rank 0: all packed grains
+  wiregrain_lmp::VtpSeries series_;    // rank 0: <pattern without '*'>.vtp.series
+  bool warned_shapeless_;              // rank 0: warned once about grains without a shape
+
+  void write_snapshot(const std::string &path);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
