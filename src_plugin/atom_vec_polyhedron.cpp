@@ -491,6 +491,10 @@ int AtomVecPolyhedron::add_shape(const wiregrain::ConvexShape &s, double body_to
   return index;
 }
 
+void AtomVecPolyhedron::replace_shapes(const wiregrain::ShapeLibrary &library) {
+  library_.reset(new wiregrain::ShapeLibrary(library));
+}
+
 void AtomVecPolyhedron::assign_shape(int i, int s, double rho) {
   const wiregrain::GrainShape &g = (*library_)[s];
   shape[i] = s;

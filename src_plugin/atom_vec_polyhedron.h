@@ -86,6 +86,8 @@ class AtomVecPolyhedron : public AtomVec {
   // The shape library. add_shape must be called with the same shape on every rank.
   const wiregrain::ShapeLibrary &shapes() const { return *library_; }
   int add_shape(const wiregrain::ConvexShape &shape, double body_to_input[4], double centroid[3]);
+  // Replace the library (grain_shapes read); grains already defined keep their indices.
+  void replace_shapes(const wiregrain::ShapeLibrary &library);
   // Give grain i shape `shape` at `density`: mass, principal inertia, bounding radius.
   void assign_shape(int i, int shape, double density);
   // angular momentum from angular velocity (L = R I Rᵀ ω) and back, for grain i
