@@ -1,0 +1,40 @@
+/* compute grain/rotation: orientation and rotation of grains (atom_style polyhedron).
+
+   compute ID group grain/rotation
+
+   per-atom array: [qw, qi, qj, qk (body → space), ω₁, ω₂, ω₃ (angular velocity in the
+   body frame, principal axes with ascending moments), rotational kinetic energy ½ ω·L]
+   vector: [rotational kinetic energy of the group, Lx, Ly, Lz (total angular momentum
+   about the grains' own centres, space frame)] */
+
+#ifdef COMPUTE_CLASS
+
+ComputeStyle(grain/rotation,ComputeGrainRotation)
+
+#else
+
+#ifndef LMP_COMPUTE_GRAIN_ROTATION_H
+#define LMP_COMPUTE_GRAIN_ROTATION_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+class ComputeGrainRotation : public Compute {
+ public:
+  ComputeGrainRotation(class LAMMPS *, int &iarg, int, char **);
+  ~ComputeGrainRotation();
+  void init() {}
+  void compute_vector();
+  void compute_peratom();
+  double memory_usage();
+
+ private:
+  double **values_;
+  int nmax_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
