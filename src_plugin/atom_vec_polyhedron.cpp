@@ -351,14 +351,30 @@ int AtomVecPolyhedron::unpack_border_hybrid(int n, int first, double *buf) {
   return m;
 }
 
-int AtomVecPolyhedron::pack_exchange(int i, double *buf) {
-  int m = 1;
+// One grain/bead as exchange and restart records carry it: x, v, image, then the
+// values a ghost gets.
+int AtomVecPolyhedron::pack_record(int i, double *buf) const {
+  int m = 0;
   for (int d = 0; d < 3; d++) buf[m++] = x[i][d];
   for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
   buf[m++] = ubuf(image[i]).d;
   for (int d = 0; d < 3; d++) buf[m++] = omega[i][d];
   for (int d = 0; d < 3; d++) buf[m++] = angmom[i][d];
-  m += pack_grain(i, &buf[m]);
+  return m + pack_grain(i, &buf[m]);
+}
+
+int AtomVecPolyhedron::unpack_record(int i, const double *buf) {
+  int m = 0;
+  for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
+  for (int d = 0; d < 3; d++) v[i][d] = buf[m++];
+  image[i] = (tagint)ubuf(buf[m++]).i;
+  for (int d = 0; d < 3; d++) omega[i][d] = buf[m++];
+  for (int d = 0; d < 3; d++) angmom[i][d] = buf[m++];
+  return m + unpack_grain(i, &buf[m]);
+}
+
+int AtomVecPolyhedron::pack_exchange(int i, double *buf) {
+  int m = 1 + pack_record(i, &buf[1]);
   if (atom->nextra_grow)
     for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
       m += modify->fix[atom->extra_grow[iextra]]->pack_exchange(i, &buf[m]);
@@ -369,13 +385,7 @@ int AtomVecPolyhedron::pack_exchange(int i, double *buf) {
 int AtomVecPolyhedron::unpack_exchange(double *buf) {
   const int nlocal = atom->nlocal;
   if (nlocal == nmax) grow(0);
-  int m = 1;
-  for (int d = 0; d < 3; d++) x[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) v[nlocal][d] = buf[m++];
-  image[nlocal] = (tagint)ubuf(buf[m++]).i;
-  for (int d = 0; d < 3; d++) omega[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) angmom[nlocal][d] = buf[m++];
-  m += unpack_grain(nlocal, &buf[m]);
+  int m = 1 + unpack_record(nlocal, &buf[1]);
   if (atom->nextra_grow)
     for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
       m += modify->fix[atom->extra_grow[iextra]]->unpack_exchange(nlocal, &buf[m]);
@@ -394,13 +404,7 @@ int AtomVecPolyhedron::size_restart() {
 
 // x, y, z first: read_restart tests them to decide which rank keeps the grain.
 int AtomVecPolyhedron::pack_restart(int i, double *buf) {
-  int m = 1;
-  for (int d = 0; d < 3; d++) buf[m++] = x[i][d];
-  for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
-  buf[m++] = ubuf(image[i]).d;
-  for (int d = 0; d < 3; d++) buf[m++] = omega[i][d];
-  for (int d = 0; d < 3; d++) buf[m++] = angmom[i][d];
-  m += pack_grain(i, &buf[m]);
+  int m = 1 + pack_record(i, &buf[1]);
   if (atom->nextra_restart)
     for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
       m += modify->fix[atom->extra_restart[iextra]]->pack_restart(i, &buf[m]);
@@ -414,13 +418,7 @@ int AtomVecPolyhedron::unpack_restart(double *buf) {
     grow(0);
     if (atom->nextra_store) memory->grow(atom->extra, nmax, atom->nextra_store, "atom:extra");
   }
-  int m = 1;
-  for (int d = 0; d < 3; d++) x[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) v[nlocal][d] = buf[m++];
-  image[nlocal] = (tagint)ubuf(buf[m++]).i;
-  for (int d = 0; d < 3; d++) omega[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) angmom[nlocal][d] = buf[m++];
-  m += unpack_grain(nlocal, &buf[m]);
+  int m = 1 + unpack_record(nlocal, &buf[1]);
   if (atom->nextra_store) {
     const int size = static_cast<int>(buf[0]) - m;
     for (int k = 0; k < size; k++) atom->extra[nlocal][k] = buf[m++];

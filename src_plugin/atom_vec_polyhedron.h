@@ -111,6 +111,8 @@ class AtomVecPolyhedron : public AtomVec {
   // the values a ghost needs besides its position
   int pack_grain(int j, double *buf) const;
   int unpack_grain(int i, const double *buf);
+  int pack_record(int i, double *buf) const;
+  int unpack_record(int i, const double *buf);
 };
 
 }  // namespace LAMMPS_NS

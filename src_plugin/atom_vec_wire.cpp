@@ -293,12 +293,26 @@ int AtomVecWire::unpack_border_hybrid(int n, int first, double *buf) {
   return m;
 }
 
-int AtomVecWire::pack_exchange(int i, double *buf) {
-  int m = 1;
+// One grain/bead as exchange and restart records carry it: x, v, image, then the
+// values a ghost gets.
+int AtomVecWire::pack_record(int i, double *buf) const {
+  int m = 0;
   for (int d = 0; d < 3; d++) buf[m++] = x[i][d];
   for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
   buf[m++] = ubuf(image[i]).d;
-  m += pack_bead(i, &buf[m]);
+  return m + pack_bead(i, &buf[m]);
+}
+
+int AtomVecWire::unpack_record(int i, const double *buf) {
+  int m = 0;
+  for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
+  for (int d = 0; d < 3; d++) v[i][d] = buf[m++];
+  image[i] = (tagint)ubuf(buf[m++]).i;
+  return m + unpack_bead(i, &buf[m]);
+}
+
+int AtomVecWire::pack_exchange(int i, double *buf) {
+  int m = 1 + pack_record(i, &buf[1]);
   if (atom->nextra_grow)
     for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
       m += modify->fix[atom->extra_grow[iextra]]->pack_exchange(i, &buf[m]);
@@ -309,11 +323,7 @@ int AtomVecWire::pack_exchange(int i, double *buf) {
 int AtomVecWire::unpack_exchange(double *buf) {
   const int nlocal = atom->nlocal;
   if (nlocal == nmax) grow(0);
-  int m = 1;
-  for (int d = 0; d < 3; d++) x[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) v[nlocal][d] = buf[m++];
-  image[nlocal] = (tagint)ubuf(buf[m++]).i;
-  m += unpack_bead(nlocal, &buf[m]);
+  int m = 1 + unpack_record(nlocal, &buf[1]);
   if (atom->nextra_grow)
     for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
       m += modify->fix[atom->extra_grow[iextra]]->unpack_exchange(nlocal, &buf[m]);
@@ -333,11 +343,7 @@ int AtomVecWire::size_restart() {
 
 // x, y, z first: read_restart tests them to decide which rank keeps the bead.
 int AtomVecWire::pack_restart(int i, double *buf) {
-  int m = 1;
-  for (int d = 0; d < 3; d++) buf[m++] = x[i][d];
-  for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
-  buf[m++] = ubuf(image[i]).d;
-  m += pack_bead(i, &buf[m]);
+  int m = 1 + pack_record(i, &buf[1]);
   if (atom->nextra_restart)
     for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
       m += modify->fix[atom->extra_restart[iextra]]->pack_restart(i, &buf[m]);
@@ -351,11 +357,7 @@ int AtomVecWire::unpack_restart(double *buf) {
     grow(0);
     if (atom->nextra_store) memory->grow(atom->extra, nmax, atom->nextra_store, "atom:extra");
   }
-  int m = 1;
-  for (int d = 0; d < 3; d++) x[nlocal][d] = buf[m++];
-  for (int d = 0; d < 3; d++) v[nlocal][d] = buf[m++];
-  image[nlocal] = (tagint)ubuf(buf[m++]).i;
-  m += unpack_bead(nlocal, &buf[m]);
+  int m = 1 + unpack_record(nlocal, &buf[1]);
   if (atom->nextra_store) {
     const int size = static_cast<int>(buf[0]) - m;
     for (int k = 0; k < size; k++) atom->extra[nlocal][k] = buf[m++];

@@ -77,6 +77,8 @@ class AtomVecWire : public AtomVec {
   // the bead values sent to ghosts besides position: tag type mask radius mass links
   int pack_bead(int j, double *buf) const;
   int unpack_bead(int i, const double *buf);
+  int pack_record(int i, double *buf) const;
+  int unpack_record(int i, const double *buf);
 };
 
 }  // namespace LAMMPS_NS
