@@ -33,6 +33,7 @@
 #include "core/shape_library.h"
 #include "core/validation.h"
 #include "plugin_args.h"
+#include "plugin_create.h"
 
 using namespace LAMMPS_NS;
 
@@ -478,10 +479,7 @@ void CreateGrains::command(int narg, char **arg) {
                   wiregrain::format_number(position[k][1]) + ", " + wiregrain::format_number(position[k][2]) +
                   ") lies outside the simulation box");
 
-  int maxtag_local = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxtag_local = std::max(maxtag_local, atom->tag[i]);
-  int maxtag = 0;
-  MPI_Allreduce(&maxtag_local, &maxtag, 1, MPI_INT, MPI_MAX, world);
+  const int maxtag = wiregrain_lmp::max_atom_tag(lmp);
   if (static_cast<long>(maxtag) + n > MAXSMALLINT) args.fail("too many atoms: atom IDs would exceed the int range");
 
   const int nlocal_before = atom->nlocal;
@@ -505,24 +503,10 @@ void CreateGrains::command(int narg, char **arg) {
     poly->assign_shape(i, shape_of[k], rho);
   }
 
-  for (int m = 0; m < modify->nfix; m++) {
-    Fix *fix = modify->fix[m];
-    if (!fix->create_attribute) continue;
-    fix->pre_set_arrays();
-    for (int i = nlocal_before; i < atom->nlocal; i++) fix->set_arrays(i);
-  }
-
-  bigint created_local = atom->nlocal - nlocal_before, created = 0;
-  MPI_Allreduce(&created_local, &created, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint created = wiregrain_lmp::finish_created_atoms(lmp, nlocal_before);
   if (created != n)
     args.fail(std::to_string(n - created) + " of " + std::to_string(n) +
               " grains were not created by any rank (outside every subdomain)");
-  atom->natoms += created;
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
 
   // write_shapes: every created grain with its body-frame geometry (rank 0 knows them all)
   if (!shapes_file.empty()) {

@@ -19,6 +19,7 @@
 #include "core/wire_elasticity.h"
 #include "core/wire_layout.h"
 #include "plugin_args.h"
+#include "plugin_create.h"
 
 using namespace LAMMPS_NS;
 
@@ -82,10 +83,7 @@ void CreateWire::command(int narg, char **arg) {
   }
   if (nodes.size() < 2) args.fail("the layout gives fewer than 2 beads");
 
-  int maxtag_local = 0;
-  for (int i = 0; i < atom->nlocal; i++) maxtag_local = std::max(maxtag_local, atom->tag[i]);
-  int maxtag = 0;
-  MPI_Allreduce(&maxtag_local, &maxtag, 1, MPI_INT, MPI_MAX, world);
+  const int maxtag = wiregrain_lmp::max_atom_tag(lmp);
 
   const double mass = material.node_mass();
   const int nlocal_before = atom->nlocal;
@@ -115,24 +113,10 @@ void CreateWire::command(int narg, char **arg) {
     wire->wire_rest[i] = k + 1 < n ? material.segment_length : 0.0;
   }
 
-  for (int m = 0; m < modify->nfix; m++) {
-    Fix *fix = modify->fix[m];
-    if (!fix->create_attribute) continue;
-    fix->pre_set_arrays();
-    for (int i = nlocal_before; i < atom->nlocal; i++) fix->set_arrays(i);
-  }
-
-  bigint created_local = atom->nlocal - nlocal_before, created = 0;
-  MPI_Allreduce(&created_local, &created, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint created = wiregrain_lmp::finish_created_atoms(lmp, nlocal_before);
   if (created != n)
     args.fail(std::to_string(n - created) + " of " + std::to_string(n) +
               " beads lie outside the simulation box");
-  atom->natoms += created;
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
   if (comm->me == 0) {
     const std::string msg = "create_wire: " + std::to_string(n) + " beads, " +
                             std::to_string(n - 1) + " segments of length " +
