@@ -502,6 +502,14 @@ void AtomVecPolyhedron::assign_shape(int i, int s, double rho) {
   radius[i] = g.bounding_radius;
 }
 
+int AtomVecPolyhedron::count_without_shape(int groupbit) {
+  int local = 0, global = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && shape[i] < 0) local++;
+  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_SUM, world);
+  return global;
+}
+
 // L = R I Rᵀ ω (space frame), R the grain's rotation body → space.
 void AtomVecPolyhedron::angmom_from_omega(int i) {
   const Eigen::Matrix3d r = orientation(quat[i]).normalized().toRotationMatrix();

@@ -90,6 +90,8 @@ class AtomVecPolyhedron : public AtomVec {
   void replace_shapes(const wiregrain::ShapeLibrary &library);
   // Give grain i shape `shape` at `density`: mass, principal inertia, bounding radius.
   void assign_shape(int i, int shape, double density);
+  // grains of the group (all ranks) that have no shape (made by create_atoms)
+  int count_without_shape(int groupbit);
   // angular momentum from angular velocity (L = R I Rᵀ ω) and back, for grain i
   void angmom_from_omega(int i);
   void omega_from_angmom(int i);

@@ -43,23 +43,8 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg)
 int FixNVEPolyhedron::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNVEPolyhedron::init() {
-  // one integrator per grain
-  for (int k = 0; k < modify->nfix; k++) {
-    Fix *other = modify->fix[k];
-    if (other == this || !other->time_integrate) continue;
-    int local = 0, shared = 0;
-    for (int i = 0; i < atom->nlocal; i++)
-      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) local++;
-    MPI_Allreduce(&local, &shared, 1, MPI_INT, MPI_SUM, world);
-    if (shared)
-      wiregrain_lmp::style_error(error, "fix", "nve/polyhedron", id,
-                                 std::to_string(shared) + " grains are also integrated by fix " +
-                                     other->id + " (" + other->style + ")");
-  }
-  int local = 0, missing = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->shapetype[i] < 0) local++;
-  MPI_Allreduce(&local, &missing, 1, MPI_INT, MPI_SUM, world);
+  wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nve/polyhedron", "grains");
+  const int missing = grains_->count_without_shape(groupbit);
   if (missing)
     wiregrain_lmp::style_error(error, "fix", "nve/polyhedron", id,
                                std::to_string(missing) + " grains have no shape (made by create_atoms?"

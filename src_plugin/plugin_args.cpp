@@ -5,7 +5,13 @@
 #include <cstdlib>
 #include <cstdio>
 
+#include <mpi.h>
+
+#include "atom.h"
 #include "error.h"
+#include "fix.h"
+#include "lammps.h"
+#include "modify.h"
 
 namespace wiregrain_lmp {
 
@@ -71,6 +77,24 @@ void style_error(LAMMPS_NS::Error* error, const std::string& kind, const std::st
                  const std::string& id, const std::string& what) {
   error->all(FLERR, (make_prefix(kind, style, id) + what).c_str());
   std::abort();
+}
+
+void ensure_sole_integrator(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, const std::string &kind,
+                            const std::string &style, const std::string &what) {
+  LAMMPS_NS::Atom *atom = lmp->atom;
+  LAMMPS_NS::Modify *modify = lmp->modify;
+  for (int k = 0; k < modify->nfix; k++) {
+    LAMMPS_NS::Fix *other = modify->fix[k];
+    if (other == fix || !other->time_integrate) continue;
+    int local = 0, shared = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & fix->groupbit) && (atom->mask[i] & other->groupbit)) local++;
+    MPI_Allreduce(&local, &shared, 1, MPI_INT, MPI_SUM, lmp->world);
+    if (shared)
+      style_error(lmp->error, kind, style, fix->id,
+                  std::to_string(shared) + " " + what + " are also integrated by fix " + other->id + " (" +
+                      other->style + ")");
+  }
 }
 
 }  // namespace wiregrain_lmp

@@ -8,6 +8,8 @@
 
 namespace LAMMPS_NS {
 class Error;
+class Fix;
+class LAMMPS;
 }
 
 namespace wiregrain_lmp {
@@ -45,6 +47,11 @@ class StyleArgs {
 [[noreturn]] void style_error(LAMMPS_NS::Error* error, const std::string& kind,
                               const std::string& style, const std::string& id,
                               const std::string& what);
+
+// Stops with "<kind> <style> (id ID): N atoms are also integrated by fix X (style)" when
+// another time-integrating fix acts on atoms of this fix's group.
+void ensure_sole_integrator(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, const std::string &kind,
+                            const std::string &style, const std::string &what);
 
 }  // namespace wiregrain_lmp
 
