@@ -679,6 +679,31 @@ PrincipalAxes principal_axes(const Matrix3d& inertia) {
   PrincipalAxes axes;
   axes.moments = solver.eigenvalues();  // ascending
   axes.axes = solver.eigenvectors();
+  // Equal moments leave the axes free within their eigenspace, and the solver then
+  // returns whatever rounding dictates. Choose them as close to the input axes as
+  // possible, so a cube, tetrahedron or octahedron (all moments equal) keeps its input
+  // orientation and a symmetric top keeps its input axes around the symmetry axis.
+  const Vector3d& m = axes.moments;
+  const double tol = 1e-10 * std::max(std::abs(m[2]), 1e-300);
+  const bool low_pair = m[1] - m[0] <= tol, high_pair = m[2] - m[1] <= tol;
+  if (low_pair && high_pair) {
+    axes.axes.setIdentity();
+  } else if (low_pair || high_pair) {
+    const Vector3d unique = low_pair ? axes.axes.col(2) : axes.axes.col(0);
+    // the input axis least aligned with the unique one, projected into its plane
+    int k = 0;
+    for (int d = 1; d < 3; ++d)
+      if (std::abs(unique[d]) < std::abs(unique[k])) k = d;
+    Vector3d first = Vector3d::Unit(k) - unique[k] * unique;
+    first.normalize();
+    if (low_pair) {
+      axes.axes.col(0) = first;
+      axes.axes.col(1) = unique.cross(first);
+    } else {
+      axes.axes.col(1) = first;
+      axes.axes.col(2) = unique.cross(first);
+    }
+  }
   if (axes.axes.determinant() < 0.0) axes.axes.col(2) = -axes.axes.col(2);
   return axes;
 }

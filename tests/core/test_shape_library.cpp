@@ -54,3 +54,16 @@ TEST(ShapeLibrary, SerialiseRoundTrip) {
   broken.resize(broken.size() / 2);
   EXPECT_THROW(ShapeLibrary::deserialize(broken), InvalidArgument);
 }
+
+// Shapes with equal principal moments keep their input orientation in the library, so
+// an axis-aligned cube stays axis-aligned (its vertices at (±a/2, ±a/2, ±a/2)).
+TEST(ShapeLibrary, IsotropicShapesKeepTheirAxes) {
+  ShapeLibrary library(MassModel::sharp_polyhedron);
+  ShapeLibrary::Placement placement;
+  library.add(ConvexShape::cube(2.0).transformed(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 2, 3)), &placement);
+  EXPECT_NEAR(placement.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-14);
+  for (const Eigen::Vector3d& v : library[0].shape.vertices())
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(std::abs(v[d]), 1.0, 1e-14);
+  library.add(ConvexShape::regular_octahedron(1.0), &placement);
+  EXPECT_NEAR(placement.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-14);
+}

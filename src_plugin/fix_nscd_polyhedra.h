@@ -1,0 +1,83 @@
+/* fix nscd/polyhedra: Non-Smooth Contact Dynamics of the grains (atom_style polyhedron),
+   Moreau–Jean time stepping with the exact Signorini–Coulomb law solved by nonlinear
+   Gauss–Seidel over contact points (DESIGN.md section 3; core/nscd_solver.h).
+
+   fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
+       [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
+       [margin 0] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
+
+   Each step (θ = 1): at the end of step n, with the forces and torques of step n (gravity
+   and every other style's), the free velocities v + h F/m, L + h T are corrected by the
+   contact impulses of all contact points whose gap g at the current positions is below
+   the activation distance; non-penetration is imposed with gap anticipation,
+   g + h u_n ≥ 0. The positions follow at the start of step n+1: x += h v_{n+1}, the
+   orientation by the exact torque-free rotation with L_{n+1}. Walls are planes of
+   infinite mass, each with its own friction and velocity.
+
+   MPI: every rank gathers all grains of the group, detects and solves the same contact
+   problem in the same order and keeps its own grains' results (replicated solve), so 1
+   and N ranks give the same state to the last bit; the cost of the solve does not
+   shrink with more ranks.
+
+   Outputs (vector): [sweeps, residual, contact points, largest overlap at the step
+   start, largest predicted penetration, steps that hit the iteration cap]. */
+
+#ifdef FIX_CLASS
+
+FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
+
+#else
+
+#ifndef LMP_FIX_NSCD_POLYHEDRA_H
+#define LMP_FIX_NSCD_POLYHEDRA_H
+
+#include <cstdio>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixNSCDPolyhedra : public Fix {
+ public:
+  FixNSCDPolyhedra(class LAMMPS *, int, char **);
+  int setmask();
+  void init();
+  void setup(int);
+  void initial_integrate(int);
+  void final_integrate();
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+
+  struct Wall {
+    double point[3], normal[3], velocity[3];
+    double friction;
+  };
+  // one impulse of the last step, kept for the warm start: world-frame position and
+  // impulse of a contact point of the pair (tag_a, tag_b); tag_a < 0 for wall −tag_a−1
+  struct StoredImpulse {
+    double position[3];
+    double impulse[3];
+  };
+
+ private:
+  double friction_, tolerance_, restitution_, margin_;
+  int max_iterations_, order_;
+  long seed_;
+  bool warm_start_;
+  std::vector<Wall> walls_;         // current positions, moved by velocity·h every step
+  class AtomVecPolyhedron *grains_;
+  bool solved_once_;                // a contact solve happened (setup of the first run)
+  std::map<std::pair<int, int>, std::vector<StoredImpulse> > impulses_;
+  double stats_[6];
+
+  void solve_step();
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
