@@ -16,6 +16,7 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "memory.h"
 #include "update.h"
 
 #include "core/contact_geometry.h"
@@ -82,10 +83,12 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       margin_(0.0),
       max_iterations_(1000),
       order_(2),
+      convergence_(0),
       seed_(1),
       warm_start_(true),
       grains_(NULL),
-      solved_once_(false) {
+      solved_once_(false),
+      contact_force_(NULL) {
   wiregrain_lmp::StyleArgs args(error, "fix", "nscd/polyhedra", id, narg, arg, 3);
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
@@ -114,6 +117,12 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     } else if (key == "restitution") {
       restitution_ = args.value_nonnegative(key);
       if (restitution_ > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
+    } else if (key == "convergence") {
+      const std::string v = args.value_word(key);
+      if (v == "natural_map") convergence_ = 0;
+      else if (v == "increment") convergence_ = 1;
+      else if (v == "both") convergence_ = 2;
+      else args.fail("value of 'convergence' must be natural_map, increment or both, got '" + v + "'");
     } else if (key == "margin") {
       margin_ = args.value_nonnegative(key);
     } else if (key == "wall") {
@@ -140,10 +149,30 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 6 + 3 * (int)walls_.size();
+  wall_forces_.assign(3 * walls_.size(), 0.0);
+  peratom_flag = 1;
+  size_peratom_cols = 6;
+  peratom_freq = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
   global_freq = 1;
   extvector = 0;
   for (double &s : stats_) s = 0.0;
+}
+
+FixNSCDPolyhedra::~FixNSCDPolyhedra() {
+  atom->delete_callback(id, 0);
+  memory->destroy(contact_force_);
+}
+
+void FixNSCDPolyhedra::grow_arrays(int nmax) {
+  memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
+  array_atom = contact_force_;
+}
+
+void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
+  for (int k = 0; k < 6; k++) contact_force_[j][k] = contact_force_[i][k];
 }
 
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
@@ -325,6 +354,9 @@ void FixNSCDPolyhedra::solve_step() {
                               : order_ == 1 ? wiregrain::SweepOrder::alternating : wiregrain::SweepOrder::random;
   options.seed = (std::uint64_t)seed_ + (std::uint64_t)update->ntimestep;
   options.restitution = restitution_;
+  options.measure = convergence_ == 0 ? wiregrain::ConvergenceMeasure::natural_map
+                    : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
+                                        : wiregrain::ConvergenceMeasure::increment_then_natural_map;
   const wiregrain::NscdStepResult result = wiregrain::solve_nscd_step(step, options, warm);
 
   // 6. keep this step's impulses (world frame) and write back the own grains
@@ -338,9 +370,31 @@ void FixNSCDPolyhedra::solve_step() {
     }
     impulses_[keys[c]].push_back(s);
   }
+  // contact forces and torques per grain, forces on the walls (impulse / h)
+  std::vector<Eigen::Vector3d> force(n, Eigen::Vector3d::Zero()), torque(n, Eigen::Vector3d::Zero());
+  std::fill(wall_forces_.begin(), wall_forces_.end(), 0.0);
+  for (int c = 0; c < ncontacts; c++) {
+    const Eigen::Vector3d on_b = frames[c] * result.contacts.impulses[c] / h;
+    const wiregrain::NscdContact &con = step.contacts[c];
+    force[con.body_b] += on_b;
+    torque[con.body_b] += (positions[c] - grains[con.body_b].x).cross(on_b);
+    if (con.body_a >= 0) {
+      force[con.body_a] -= on_b;
+      torque[con.body_a] -= (positions[c] - grains[con.body_a].x).cross(on_b);
+    } else {
+      const int w = -keys[c].first - 1;
+      for (int d = 0; d < 3; d++) wall_forces_[3 * w + d] -= on_b[d];
+    }
+  }
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 6; k++) contact_force_[i][k] = 0.0;
   for (int k = 0; k < n; k++) {
     const int i = atom->map(grains[k].tag);
     if (i < 0 || i >= atom->nlocal) continue;
+    for (int d = 0; d < 3; d++) {
+      contact_force_[i][d] = force[k][d];
+      contact_force_[i][3 + d] = torque[k][d];
+    }
     for (int d = 0; d < 3; d++) {
       atom->v[i][d] = result.velocities[k][d];
       atom->omega[i][d] = result.angular_velocities[k][d];
@@ -370,7 +424,7 @@ void FixNSCDPolyhedra::solve_step() {
     for (int d = 0; d < 3; d++) w.point[d] += w.velocity[d] * h;
 }
 
-double FixNSCDPolyhedra::compute_vector(int k) { return stats_[k]; }
+double FixNSCDPolyhedra::compute_vector(int k) { return k < 6 ? stats_[k] : wall_forces_[k - 6]; }
 
 // restart: whether a solve happened, the wall positions and the warm-start impulses
 void FixNSCDPolyhedra::write_restart(FILE *fp) {

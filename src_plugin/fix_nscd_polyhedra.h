@@ -4,6 +4,7 @@
 
    fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
        [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
+       [convergence natural_map|increment|both]
        [margin 0] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
    Each step (θ = 1): at the end of step n, with the forces and torques of step n (gravity
@@ -19,8 +20,10 @@
    and N ranks give the same state to the last bit; the cost of the solve does not
    shrink with more ranks.
 
-   Outputs (vector): [sweeps, residual, contact points, largest overlap at the step
-   start, largest predicted penetration, steps that hit the iteration cap]. */
+   Outputs: vector [sweeps, residual, contact points, largest overlap at the step start,
+   largest predicted penetration, steps that hit the iteration cap, then for each wall
+   the force the grains exert on it (x, y, z)]; per-atom array [contact force (3),
+   contact torque about the centre (3)] of each grain (impulses / h). */
 
 #ifdef FIX_CLASS
 
@@ -49,6 +52,7 @@ class FixNSCDPolyhedra : public Fix {
   void initial_integrate(int);
   void final_integrate();
   double compute_vector(int);
+  ~FixNSCDPolyhedra();
   void write_restart(FILE *);
   void restart(char *);
 
@@ -65,7 +69,7 @@ class FixNSCDPolyhedra : public Fix {
 
  private:
   double friction_, tolerance_, restitution_, margin_;
-  int max_iterations_, order_;
+  int max_iterations_, order_, convergence_;
   long seed_;
   bool warm_start_;
   std::vector<Wall> walls_;         // current positions, moved by velocity·h every step
@@ -73,6 +77,10 @@ class FixNSCDPolyhedra : public Fix {
   bool solved_once_;                // a contact solve happened (setup of the first run)
   std::map<std::pair<int, int>, std::vector<StoredImpulse> > impulses_;
   double stats_[6];
+  std::vector<double> wall_forces_;       // 3 per wall
+  double **contact_force_;                // per grain: force, torque
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
 
   void solve_step();
 };

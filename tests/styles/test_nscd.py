@@ -1,0 +1,255 @@
+"""fix nscd/polyhedra: stacks, inclines, sliding and corners against statics and
+Coulomb's law; 1 vs 2 ranks; restart with warm-start impulses; error messages."""
+
+import math
+
+import numpy as np
+
+from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
+
+G = 1.0
+
+
+def grains_data(shape, poses, density=1.0, sweep=0.0, box=(-30, 30, -30, 30, -1, 60)):
+    """Run create_grains for len(poses) grains of one fixed shape (e.g. "cube 1") and
+    rewrite the data file with the given poses [(x, y, z, qw, qi, qj, qk), ...].
+    Returns the run (its workdir holds grains.data and grains.shapes)."""
+    made = run(f"""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+region box block {' '.join(map(str, box))}
+create_box 1 box
+create_grains 1 {len(poses)} random box seed 7 shape {shape} sweep {sweep} density {density}
+write_data grains.data
+grain_shapes write grains.shapes
+""")
+    lines = open(made.path("grains.data")).read().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Atoms")) + 2
+    for n, pose in enumerate(poses):
+        words = lines[k + n].split()
+        x, y, z, qw, qi, qj, qk = pose
+        words[4:8] = [repr(qw), repr(qi), repr(qj), repr(qk)]
+        words[8:11] = [repr(x), repr(y), repr(z)]
+        lines[k + n] = " ".join(words)
+    with open(made.path("grains.data"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return made
+
+
+def deck(body):
+    return f"""
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+processors      * 1 1
+grain_shapes    read grains.shapes
+read_data       grains.data
+{body}
+"""
+
+
+class Stack(DeckTestCase):
+    # N unit cubes (m = 1) stacked on a floor: interface k from the top carries k m g, the
+    # floor N m g; the overlaps stay at round-off over 1e4 steps.
+    def check(self, n, steps, tolerance):
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(n)])
+        self.assertRanCleanly(made)
+        r = run(full_precision(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.5 tolerance {tolerance} max_iterations 100000 wall 0 0 0 0 0 1
+timestep        1e-3
+compute         zmin all reduce min z
+thermo_style    custom step f_nscd[1] f_nscd[3] f_nscd[4] f_nscd[9] c_zmin
+thermo_modify   format float %.15g
+thermo          {steps // 10}
+dump            d all custom {steps} dump.s id z f_nscd[1] f_nscd[2] f_nscd[3]
+run             {steps}
+"""), "d"), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        d = read_dump(r.path("dump.s"))
+        order = np.argsort(-d["z"])                       # top first
+        interface = np.cumsum(d["f_nscd[3]"][order])      # force from below on the top k grains
+        k = np.arange(1, n + 1)
+        worst = np.max(np.abs(interface / (k * G) - 1.0))
+        print(f"stack of {n}: worst interface force error {worst:.2e}, floor {-t['nscd[9]'][-1]:.10f} (N m g = {n}), "
+              f"largest overlap {np.max(t['nscd[4]']):.2e}, sweeps at the end {t['nscd[1]'][-1]:.0f}")
+        self.assertLess(worst, 1e-4)
+        self.assertAlmostEqual(-t["nscd[9]"][-1] / n, 1.0, delta=1e-4)
+        self.assertLess(np.max(t["nscd[4]"]), 1e-9)
+        self.assertLess(np.max(np.abs(d["f_nscd[1]"])), 1e-4 * n)
+
+    def test_stacks(self):
+        # Gauss-Seidel converges slowly on tall frictional columns (tens of thousands of
+        # sweeps per step for 20 cubes at 1e-6): the 20-stack runs 20 steps only.
+        for n, steps, tolerance in ((1, 10000, 1e-7), (5, 10000, 1e-7), (20, 20, 1e-6)):
+            self.check(n, steps, tolerance)
+
+
+class Incline(DeckTestCase):
+    # A box on a plane tilted by θ (gravity tilted instead of the floor), μ = 0.5:
+    # it sticks for θ < atan μ and slides with a = g (sin θ − μ cos θ) above.
+    def motion(self, theta):
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector {math.sin(theta)!r} 0 {-math.cos(theta)!r}
+fix             nscd all nscd/polyhedra friction 0.5 tolerance 1e-8 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        x1 equal x[1]
+variable        vx1 equal vx[1]
+thermo_style    custom step time v_x1 v_vx1
+thermo_modify   format float %.15g
+thermo          100
+run             2000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        return r.thermo()
+
+    def test_stick_and_slide(self):
+        critical = math.atan(0.5)
+        stick = self.motion(critical - math.radians(0.5))
+        self.assertLess(np.max(np.abs(stick["x1"] - stick["x1"][0])), 1e-9)
+        theta = critical + math.radians(0.5)
+        slide = self.motion(theta)
+        a = np.polyfit(slide["Time"][2:], slide["vx1"][2:], 1)[0]
+        expected = G * (math.sin(theta) - 0.5 * math.cos(theta))
+        print(f"incline: sticks at atan(mu) - 0.5 deg (moved {np.max(np.abs(stick['x1'] - stick['x1'][0])):.1e}); "
+              f"at +0.5 deg a = {a:.6f}, g(sin - mu cos) = {expected:.6f}")
+        self.assertAlmostEqual(a / expected, 1.0, delta=0.005)
+
+
+class Launch(DeckTestCase):
+    # A box launched at v0 on flat ground stops after v0^2 / (2 μ g).
+    def test_stopping_distance(self):
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+velocity        all set 1.0 0 0
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.5 tolerance 1e-8 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        x1 equal x[1]
+thermo_style    custom step v_x1
+thermo_modify   format float %.15g
+thermo          100
+run             3000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        travelled = r.thermo()["x1"][-1]
+        print(f"launch: stopped after {travelled:.6f}, v0^2/(2 mu g) = 1.0")
+        self.assertAlmostEqual(travelled, 1.0, delta=0.005)
+
+
+class Corner(DeckTestCase):
+    # A cube in the corner of a floor and a frictionless wall, pushed into it by a tilted
+    # gravity. Frictionless floor: floor force m g cos α, wall force m g sin α exactly.
+    # Frictional floor (μ = 0.5): floor friction may share the horizontal load (statically
+    # indeterminate), but the resultants balance gravity; steady, no blow-up.
+    def forces(self, floor_friction):
+        made = grains_data("cube 1.0", [(0.5, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector {-math.sin(self.ALPHA)!r} 0 {-math.cos(self.ALPHA)!r}
+fix             nscd all nscd/polyhedra tolerance 1e-9 wall 0 0 0 0 0 1 wall_friction {floor_friction} wall 0 0 0 1 0 0 wall_friction 0
+timestep        1e-3
+thermo_style    custom step f_nscd[7] f_nscd[9] f_nscd[10] f_nscd[12] f_nscd[4]
+thermo_modify   format float %.15g
+thermo          100
+run             2000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        return -t["nscd[7]"], -t["nscd[9]"], -t["nscd[10]"]
+
+    ALPHA = 0.3
+
+    def test_resultants(self):
+        c, s = math.cos(self.ALPHA), math.sin(self.ALPHA)
+        floor_x, floor_z, wall_x = self.forces(0.0)
+        print(f"corner, frictionless: floor {floor_z[-1]:.12f} (cos {c:.12f}), wall {wall_x[-1]:.12f} (sin {s:.12f})")
+        self.assertLess(np.max(np.abs(floor_z - c)), 1e-6)
+        self.assertLess(np.max(np.abs(wall_x - s)), 1e-6)
+        floor_x, floor_z, wall_x = self.forces(0.5)
+        print(f"corner, floor mu 0.5: floor z {floor_z[-1]:.12f}, wall {wall_x[-1]:.6f} + floor friction {floor_x[-1]:.6f}")
+        self.assertLess(np.max(np.abs(floor_z - c)), 1e-6)
+        self.assertLess(np.max(np.abs(wall_x + floor_x - s)), 1e-6)
+
+
+class RanksAndRestart(DeckTestCase):
+    # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
+    # warm-start impulses) reproduces the straight run.
+    BODY = """
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-6 wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
+timestep        1e-3
+dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
+"""
+
+    def test_same_state(self):
+        made = run("""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+region box block -4 4 -4 4 0 12
+create_box 1 box
+region fill block -3 3 -3 3 1 8
+create_grains 1 30 random fill seed 11
+write_data grains.data
+grain_shapes write grains.shapes
+""")
+        self.assertRanCleanly(made)
+        text = full_precision(deck(self.BODY), "d")
+        one = run(text + "run 300\n", workdir=made.workdir)
+        a = read_dump(made.path("dump.h"))
+        two = run(text.replace("dump.h", "dump2.h") + "run 300\n", workdir=made.workdir, np_ranks=2)
+        half = run(text.replace("dump.h", "dump3.h") + "run 150\nwrite_restart heap.restart\n", workdir=made.workdir)
+        for r in (one, two, half):
+            self.assertRanCleanly(r)
+        rest = run(full_precision("""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+processors * 1 1
+read_restart heap.restart
+""" + self.BODY.replace("dump.h", "dump4.h") + "run 150\n", "d"), workdir=made.workdir)
+        self.assertRanCleanly(rest)
+        b, c = read_dump(made.path("dump2.h")), read_dump(made.path("dump4.h"))
+        cols = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
+        ranks = max(np.max(np.abs(a[k] - b[k])) for k in cols)
+        restart = max(np.max(np.abs(a[k] - c[k])) for k in cols)
+        print(f"heap of 30: 1 vs 2 ranks {ranks:.2e}, restart vs straight {restart:.2e}")
+        self.assertLess(ranks, 1e-12)
+        self.assertLess(restart, 1e-12)
+
+
+class BadInput(DeckTestCase):
+    def check(self, options, message):
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
+        self.assertStopsWith(run(deck(f"fix nscd all nscd/polyhedra {options}\nrun 1"), workdir=made.workdir), message)
+
+    def test_messages(self):
+        self.check("friction -0.1", "fix nscd/polyhedra (id nscd): value of 'friction' must be >= 0, got -0.1")
+        self.check("tolerance -1e-4", "fix nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got -1e-4")
+        self.check("max_iterations 0", "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be >= 1, got 0")
+        self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
+        self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
+        self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
+        wire = """
+units lj
+atom_style wire
+boundary f f f
+region box block -1 1 -1 1 -1 1
+create_box 1 box
+fix nscd all nscd/polyhedra
+"""
+        self.assertStopsWith(run(wire), "fix nscd/polyhedra (id nscd): needs atom_style polyhedron")
+
+
+if __name__ == "__main__":
+    main()
