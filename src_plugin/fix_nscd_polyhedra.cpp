@@ -149,7 +149,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)walls_.size();
+  size_vector = 6 + 3 * (int)walls_.size() + 2;
   wall_forces_.assign(3 * walls_.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -159,6 +159,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   global_freq = 1;
   extvector = 0;
   for (double &s : stats_) s = 0.0;
+  timings_[0] = timings_[1] = 0.0;
 }
 
 FixNSCDPolyhedra::~FixNSCDPolyhedra() {
@@ -216,6 +217,7 @@ void FixNSCDPolyhedra::solve_step() {
   const double h = update->dt;
   const double ftm2v = force->ftm2v;
 
+  const double start = MPI_Wtime();
   // 1. every rank gathers every grain of the group, in tag order
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -347,6 +349,7 @@ void FixNSCDPolyhedra::solve_step() {
   }
 
   // 5. solve
+  const double detected = MPI_Wtime();
   wiregrain::NscdOptions options;
   options.tolerance = tolerance_;
   options.max_iterations = max_iterations_;
@@ -358,6 +361,8 @@ void FixNSCDPolyhedra::solve_step() {
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
   const wiregrain::NscdStepResult result = wiregrain::solve_nscd_step(step, options, warm);
+  timings_[0] = detected - start;
+  timings_[1] = MPI_Wtime() - detected;
 
   // 6. keep this step's impulses (world frame) and write back the own grains
   impulses_.clear();
@@ -424,7 +429,11 @@ void FixNSCDPolyhedra::solve_step() {
     for (int d = 0; d < 3; d++) w.point[d] += w.velocity[d] * h;
 }
 
-double FixNSCDPolyhedra::compute_vector(int k) { return k < 6 ? stats_[k] : wall_forces_[k - 6]; }
+double FixNSCDPolyhedra::compute_vector(int k) {
+  if (k < 6) return stats_[k];
+  if (k < 6 + (int)wall_forces_.size()) return wall_forces_[k - 6];
+  return timings_[k - 6 - (int)wall_forces_.size()];
+}
 
 // restart: whether a solve happened, the wall positions and the warm-start impulses
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
