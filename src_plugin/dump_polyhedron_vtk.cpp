@@ -40,7 +40,7 @@ const char *const kStyle = "polyhedron/vtk";
 }  // namespace
 
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
-    : Dump(lmp, narg, arg), ascii_(false), sweep_(false), grains_(NULL), warned_shapeless_(false) {
+    : DumpVtp(lmp, narg, arg, kStyle), sweep_(false), grains_(NULL), warned_shapeless_(false) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
@@ -50,17 +50,11 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" +
               std::string(atom->atom_style) + "'");
 
-  pattern_ = filename;
-  const std::string problem = wiregrain_lmp::vtp_pattern_problem(pattern_);
-  if (!problem.empty()) args.fail(problem);
-
+  take_pattern(args);
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "format") {
-      const std::string value = args.value_word(key);
-      if (value == "ascii") ascii_ = true;
-      else if (value == "binary") ascii_ = false;
-      else args.fail("value of 'format' must be 'ascii' or 'binary', got '" + value + "'");
+      take_format(args);
     } else if (key == "sweep") {
       const std::string value = args.value_word(key);
       if (value == "yes") sweep_ = true;
@@ -71,42 +65,12 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
     }
   }
 
-  // e.g. post/grains_*.vtp -> post/grains.vtp.series
-  series_ = wiregrain_lmp::VtpSeries(wiregrain_lmp::vtp_series_path(pattern_, id));
-
   size_one = kColumns;
-  clearstep = 0;  // no compute is invoked
-  // Files are opened here, not by the base class: with multifile = 0 Dump::write() only
-  // counts, packs and gathers (openfile() and fclose() are skipped, fp stays NULL).
-  multifile = 0;
-  flush_flag = 0;
 }
 
 DumpPolyhedronVTK::~DumpPolyhedronVTK() {}
 
 void DumpPolyhedronVTK::init_style() {}
-
-int DumpPolyhedronVTK::modify_param(int narg, char **arg) {
-  return 0;  // only the base-class dump_modify keywords
-}
-
-void DumpPolyhedronVTK::write() {
-  gathered_.clear();
-  Dump::write();  // count(), pack(), then write_header()/write_data() on rank 0
-  if (filewriter) {
-    const std::string path =
-        wiregrain_lmp::vtp_snapshot_path(pattern_, static_cast<long long>(update->ntimestep), padflag);
-    write_snapshot(path);
-    if (!series_.add(path, update->get_cur_time(), append_flag != 0))
-      error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): cannot write file '" +
-                         series_.path() + "'").c_str());
-  }
-}
-
-void DumpPolyhedronVTK::write_header(bigint ndump) {
-  gathered_.clear();
-  gathered_.reserve(static_cast<size_t>(ndump) * size_one);
-}
 
 void DumpPolyhedronVTK::pack(int *ids) {
   const int nlocal = atom->nlocal;
@@ -133,10 +97,6 @@ void DumpPolyhedronVTK::pack(int *ids) {
     m += size_one;
     n++;
   }
-}
-
-void DumpPolyhedronVTK::write_data(int n, double *mybuf) {
-  gathered_.insert(gathered_.end(), mybuf, mybuf + static_cast<size_t>(n) * size_one);
 }
 
 void DumpPolyhedronVTK::write_snapshot(const std::string &path) {

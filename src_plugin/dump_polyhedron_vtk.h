@@ -28,32 +28,24 @@ DumpStyle(polyhedron/vtk,DumpPolyhedronVTK)
 #include <string>
 #include <vector>
 
-#include "dump.h"
+#include "dump_vtp.h"
 #include "plugin_vtk.h"
 
 namespace LAMMPS_NS {
 
-class DumpPolyhedronVTK : public Dump {
+class DumpPolyhedronVTK : public DumpVtp {
  public:
   DumpPolyhedronVTK(class LAMMPS *, int, char **);
   ~DumpPolyhedronVTK();
-  void write();
 
  protected:
   void init_style();
-  void write_header(bigint);
   void pack(int *);
-  void write_data(int, double *);
-  int modify_param(int, char **);
 
  private:
-  std::string pattern_;   // the file name as given, with its '*'
-  bool ascii_;            // VTK XML data mode: ascii or binary (appended, raw)
   bool sweep_;            // offset each face outward by the sweep radius
   class AtomVecPolyhedron *grains_;
 
-  std::vector<double> gathered_;       // rank 0: all packed grains
-  wiregrain_lmp::VtpSeries series_;    // rank 0: <pattern without '*'>.vtp.series
   bool warned_shapeless_;              // rank 0: warned once about grains without a shape
 
   void write_snapshot(const std::string &path);

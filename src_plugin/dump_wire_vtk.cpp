@@ -49,7 +49,7 @@ struct Chain {
 }  // namespace
 
 DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
-    : Dump(lmp, narg, arg), energy_fix_(-1), ascii_(false), wire_(NULL) {
+    : DumpVtp(lmp, narg, arg, kStyle), energy_fix_(-1), wire_(NULL) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
@@ -58,34 +58,20 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
   if (!wire_)
     args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
 
-  pattern_ = filename;
-  const std::string problem = wiregrain_lmp::vtp_pattern_problem(pattern_);
-  if (!problem.empty()) args.fail(problem);
-
+  take_pattern(args);
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "energy") {
       energy_fix_id_ = args.value_word(key);
     } else if (key == "format") {
-      const std::string value = args.value_word(key);
-      if (value == "ascii") ascii_ = true;
-      else if (value == "binary") ascii_ = false;
-      else args.fail("value of 'format' must be 'ascii' or 'binary', got '" + value + "'");
+      take_format(args);
     } else {
       args.unknown_keyword(key);
     }
   }
   if (!energy_fix_id_.empty()) find_energy_fix(false);
 
-  // e.g. post/wire_*.vtp -> post/wire.vtp.series
-  series_ = wiregrain_lmp::VtpSeries(wiregrain_lmp::vtp_series_path(pattern_, id));
-
   size_one = energy_fix_id_.empty() ? kColumnsWithoutEnergy : kColumnsWithEnergy;
-  clearstep = 0;      // no compute is invoked
-  // Files are opened here, not by the base class: with multifile = 0 Dump::write() only
-  // counts, packs and gathers (openfile() and fclose() are skipped, fp stays NULL).
-  multifile = 0;
-  flush_flag = 0;
 }
 
 DumpWireVTK::~DumpWireVTK() {}
@@ -105,27 +91,6 @@ int DumpWireVTK::find_energy_fix(bool at_init) {
 
 void DumpWireVTK::init_style() {
   energy_fix_ = energy_fix_id_.empty() ? -1 : find_energy_fix(true);
-}
-
-int DumpWireVTK::modify_param(int narg, char **arg) {
-  return 0;  // only the base-class dump_modify keywords
-}
-
-void DumpWireVTK::write() {
-  gathered_.clear();
-  Dump::write();  // count(), pack(), then write_header()/write_data() on rank 0
-  if (filewriter) {
-    const std::string path =
-        wiregrain_lmp::vtp_snapshot_path(pattern_, static_cast<long long>(update->ntimestep), padflag);
-    write_snapshot(path);
-    if (!series_.add(path, update->get_cur_time(), append_flag != 0))
-      error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + series_.path() + "'").c_str());
-  }
-}
-
-void DumpWireVTK::write_header(bigint ndump) {
-  gathered_.clear();
-  gathered_.reserve(static_cast<size_t>(ndump) * size_one);
 }
 
 void DumpWireVTK::pack(int *ids) {
@@ -159,10 +124,6 @@ void DumpWireVTK::pack(int *ids) {
     m += size_one;
     n++;
   }
-}
-
-void DumpWireVTK::write_data(int n, double *mybuf) {
-  gathered_.insert(gathered_.end(), mybuf, mybuf + static_cast<size_t>(n) * size_one);
 }
 
 void DumpWireVTK::write_snapshot(const std::string &path) {

@@ -26,33 +26,25 @@ DumpStyle(wire/vtk,DumpWireVTK)
 #include <utility>
 #include <vector>
 
-#include "dump.h"
+#include "dump_vtp.h"
 #include "plugin_vtk.h"
 
 namespace LAMMPS_NS {
 
-class DumpWireVTK : public Dump {
+class DumpWireVTK : public DumpVtp {
  public:
   DumpWireVTK(class LAMMPS *, int, char **);
   ~DumpWireVTK();
-  void write();
 
  protected:
   void init_style();
-  void write_header(bigint);
   void pack(int *);
-  void write_data(int, double *);
-  int modify_param(int, char **);
 
  private:
-  std::string pattern_;          // the file name as given, with its '*'
   std::string energy_fix_id_;    // empty: no energy columns
   int energy_fix_;               // index of that fix in modify->fix, -1 if none
-  bool ascii_;                   // VTK XML data mode: ascii or binary (appended, raw)
   class AtomVecWire *wire_;
 
-  std::vector<double> gathered_;       // rank 0: all packed beads
-  wiregrain_lmp::VtpSeries series_;    // rank 0: <pattern without '*'>.vtp.series
 
   int find_energy_fix(bool at_init);
   void write_snapshot(const std::string &path);

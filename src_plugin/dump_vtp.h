@@ -1,0 +1,45 @@
+// Base of the plugin's VTK XML dumps (dump wire/vtk, dump polyhedron/vtk): the snapshot
+// file pattern and its ParaView series file, the `format ascii|binary` keyword, and the
+// gathering of every rank's packed rows on rank 0. A derived dump packs its rows (pack)
+// and builds the snapshot from `gathered_` (write_snapshot). Not a style of its own.
+#ifndef WIREGRAIN_DUMP_VTP_H
+#define WIREGRAIN_DUMP_VTP_H
+
+#include <string>
+#include <vector>
+
+#include "dump.h"
+#include "plugin_vtk.h"
+
+namespace wiregrain_lmp {
+class StyleArgs;
+}
+
+namespace LAMMPS_NS {
+
+class DumpVtp : public Dump {
+ public:
+  DumpVtp(class LAMMPS *, int, char **, const char *style);
+  void write();
+
+ protected:
+  void write_header(bigint);
+  void write_data(int, double *);
+  int modify_param(int, char **) { return 0; }  // only the base-class dump_modify keywords
+
+  // from the derived constructor: the file name as pattern (checked) and its series file
+  void take_pattern(wiregrain_lmp::StyleArgs &args);
+  // the value of keyword 'format'
+  void take_format(wiregrain_lmp::StyleArgs &args);
+  virtual void write_snapshot(const std::string &path) = 0;
+
+  std::string style_;                  // "wire/vtk", ...
+  std::string pattern_;                // the file name as given, with its '*'
+  bool ascii_;                         // VTK XML data mode: ascii or binary (appended, raw)
+  std::vector<double> gathered_;       // rank 0: all packed rows
+  wiregrain_lmp::VtpSeries series_;    // rank 0: <pattern without '*'>.vtp.series
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
