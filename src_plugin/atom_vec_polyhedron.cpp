@@ -37,7 +37,7 @@ Eigen::Quaterniond orientation(const double *q) { return Eigen::Quaterniond(q[0]
 }  // namespace
 
 AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp)
-    : AtomVec(lmp), library_(new wiregrain::ShapeLibrary(wiregrain::MassModel::dilated)) {
+    : PluginAtomVec(lmp), library_(new wiregrain::ShapeLibrary(wiregrain::MassModel::dilated)) {
   molecular = 0;
   comm_x_only = 0;
   comm_f_only = 0;
@@ -242,7 +242,7 @@ int AtomVecPolyhedron::unpack_reverse_hybrid(int n, int *list, double *buf) {
   return m;
 }
 
-int AtomVecPolyhedron::pack_grain(int j, double *buf) const {
+int AtomVecPolyhedron::pack_ghost(int j, double *buf) const {
   int m = 0;
   buf[m++] = ubuf(tag[j]).d;
   buf[m++] = ubuf(type[j]).d;
@@ -256,7 +256,7 @@ int AtomVecPolyhedron::pack_grain(int j, double *buf) const {
   return m;
 }
 
-int AtomVecPolyhedron::unpack_grain(int i, const double *buf) {
+int AtomVecPolyhedron::unpack_ghost(int i, const double *buf) {
   int m = 0;
   tag[i] = (int)ubuf(buf[m++]).i;
   type[i] = (int)ubuf(buf[m++]).i;
@@ -270,75 +270,33 @@ int AtomVecPolyhedron::unpack_grain(int i, const double *buf) {
   return m;
 }
 
-int AtomVecPolyhedron::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc) {
-  double s[3];
-  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    for (int d = 0; d < 3; d++) buf[m++] = x[j][d] + s[d];
-    m += pack_grain(j, &buf[m]);
+int AtomVecPolyhedron::pack_ghost_velocity(int j, double *buf, const double dv[3]) const {
+  for (int d = 0; d < 3; d++) {
+    buf[d] = v[j][d] + dv[d];
+    buf[3 + d] = omega[j][d];
   }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->pack_border(n, list, &buf[m]);
-  return m;
+  return 6;
 }
 
-int AtomVecPolyhedron::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
-  double s[3], dv[3];
-  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
-  wiregrain_lmp::deforming_image_velocity(pbc_flag, pbc, deform_vremap, h_rate, dv);
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    const bool remap = pbc_flag && deform_vremap && (mask[j] & deform_groupbit);
-    for (int d = 0; d < 3; d++) buf[m++] = x[j][d] + s[d];
-    m += pack_grain(j, &buf[m]);
-    for (int d = 0; d < 3; d++) buf[m++] = v[j][d] + (remap ? dv[d] : 0.0);
-    for (int d = 0; d < 3; d++) buf[m++] = omega[j][d];
+int AtomVecPolyhedron::unpack_ghost_velocity(int i, const double *buf) {
+  for (int d = 0; d < 3; d++) {
+    v[i][d] = buf[d];
+    omega[i][d] = buf[3 + d];
   }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->pack_border(n, list, &buf[m]);
-  return m;
+  return 6;
 }
+
+int AtomVecPolyhedron::record_size() const { return kRecordValues; }
 
 // In atom_style hybrid the base style packs x, tag, type, mask; the sub-style the rest.
 int AtomVecPolyhedron::pack_border_hybrid(int n, int *list, double *buf) {
   int m = 0;
   double grain[kGrainValues];
   for (int i = 0; i < n; i++) {
-    pack_grain(list[i], grain);
+    pack_ghost(list[i], grain);
     for (int k = 3; k < kGrainValues; k++) buf[m++] = grain[k];
   }
   return m;
-}
-
-void AtomVecPolyhedron::unpack_border(int n, int first, double *buf) {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (i == nmax) grow(0);
-    for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
-    m += unpack_grain(i, &buf[m]);
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->unpack_border(n, first, &buf[m]);
-}
-
-void AtomVecPolyhedron::unpack_border_vel(int n, int first, double *buf) {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (i == nmax) grow(0);
-    for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
-    m += unpack_grain(i, &buf[m]);
-    for (int d = 0; d < 3; d++) v[i][d] = buf[m++];
-    for (int d = 0; d < 3; d++) omega[i][d] = buf[m++];
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->unpack_border(n, first, &buf[m]);
 }
 
 int AtomVecPolyhedron::unpack_border_hybrid(int n, int first, double *buf) {
@@ -346,7 +304,7 @@ int AtomVecPolyhedron::unpack_border_hybrid(int n, int first, double *buf) {
   for (int i = first; i < first + n; i++) {
     double grain[kGrainValues] = {ubuf(tag[i]).d, ubuf(type[i]).d, ubuf(mask[i]).d};
     for (int k = 3; k < kGrainValues; k++) grain[k] = buf[m++];
-    unpack_grain(i, grain);
+    unpack_ghost(i, grain);
   }
   return m;
 }
@@ -360,7 +318,7 @@ int AtomVecPolyhedron::pack_record(int i, double *buf) const {
   buf[m++] = ubuf(image[i]).d;
   for (int d = 0; d < 3; d++) buf[m++] = omega[i][d];
   for (int d = 0; d < 3; d++) buf[m++] = angmom[i][d];
-  return m + pack_grain(i, &buf[m]);
+  return m + pack_ghost(i, &buf[m]);
 }
 
 int AtomVecPolyhedron::unpack_record(int i, const double *buf) {
@@ -370,61 +328,7 @@ int AtomVecPolyhedron::unpack_record(int i, const double *buf) {
   image[i] = (tagint)ubuf(buf[m++]).i;
   for (int d = 0; d < 3; d++) omega[i][d] = buf[m++];
   for (int d = 0; d < 3; d++) angmom[i][d] = buf[m++];
-  return m + unpack_grain(i, &buf[m]);
-}
-
-int AtomVecPolyhedron::pack_exchange(int i, double *buf) {
-  int m = 1 + pack_record(i, &buf[1]);
-  if (atom->nextra_grow)
-    for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
-      m += modify->fix[atom->extra_grow[iextra]]->pack_exchange(i, &buf[m]);
-  buf[0] = m;
-  return m;
-}
-
-int AtomVecPolyhedron::unpack_exchange(double *buf) {
-  const int nlocal = atom->nlocal;
-  if (nlocal == nmax) grow(0);
-  int m = 1 + unpack_record(nlocal, &buf[1]);
-  if (atom->nextra_grow)
-    for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
-      m += modify->fix[atom->extra_grow[iextra]]->unpack_exchange(nlocal, &buf[m]);
-  atom->nlocal++;
-  return m;
-}
-
-int AtomVecPolyhedron::size_restart() {
-  const int nlocal = atom->nlocal;
-  int n = (kRecordValues + 1) * nlocal;
-  if (atom->nextra_restart)
-    for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
-      for (int i = 0; i < nlocal; i++) n += modify->fix[atom->extra_restart[iextra]]->size_restart(i);
-  return n;
-}
-
-// x, y, z first: read_restart tests them to decide which rank keeps the grain.
-int AtomVecPolyhedron::pack_restart(int i, double *buf) {
-  int m = 1 + pack_record(i, &buf[1]);
-  if (atom->nextra_restart)
-    for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
-      m += modify->fix[atom->extra_restart[iextra]]->pack_restart(i, &buf[m]);
-  buf[0] = m;
-  return m;
-}
-
-int AtomVecPolyhedron::unpack_restart(double *buf) {
-  const int nlocal = atom->nlocal;
-  if (nlocal == nmax) {
-    grow(0);
-    if (atom->nextra_store) memory->grow(atom->extra, nmax, atom->nextra_store, "atom:extra");
-  }
-  int m = 1 + unpack_record(nlocal, &buf[1]);
-  if (atom->nextra_store) {
-    const int size = static_cast<int>(buf[0]) - m;
-    for (int k = 0; k < size; k++) atom->extra[nlocal][k] = buf[m++];
-  }
-  atom->nlocal++;
-  return m;
+  return m + unpack_ghost(i, &buf[m]);
 }
 
 // The shape library goes to restart files with the atom style: its size, then the

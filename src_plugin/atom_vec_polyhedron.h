@@ -28,7 +28,7 @@ AtomStyle(polyhedron,AtomVecPolyhedron)
 
 #include <memory>
 
-#include "atom_vec.h"
+#include "plugin_atom_vec.h"
 
 namespace wiregrain {
 class ShapeLibrary;
@@ -37,7 +37,7 @@ class ConvexShape;
 
 namespace LAMMPS_NS {
 
-class AtomVecPolyhedron : public AtomVec {
+class AtomVecPolyhedron : public PluginAtomVec {
  public:
   AtomVecPolyhedron(class LAMMPS *);
   ~AtomVecPolyhedron();
@@ -55,17 +55,8 @@ class AtomVecPolyhedron : public AtomVec {
   int pack_reverse_hybrid(int, int, double *);
   void unpack_reverse(int, int *, double *);
   int unpack_reverse_hybrid(int, int *, double *);
-  int pack_border(int, int *, double *, int, int *);
-  int pack_border_vel(int, int *, double *, int, int *);
   int pack_border_hybrid(int, int *, double *);
-  void unpack_border(int, int, double *);
-  void unpack_border_vel(int, int, double *);
   int unpack_border_hybrid(int, int, double *);
-  int pack_exchange(int, double *);
-  int unpack_exchange(double *);
-  int size_restart();
-  int pack_restart(int, double *);
-  int unpack_restart(double *);
   void write_restart_settings(FILE *);
   void read_restart_settings(FILE *);
   void create_atom(int, double *);
@@ -111,10 +102,13 @@ class AtomVecPolyhedron : public AtomVec {
   void image_shift(int pbc_flag, int *pbc, bool border, double shift[3]) const;
   void image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const;
   // the values a ghost needs besides its position
-  int pack_grain(int j, double *buf) const;
-  int unpack_grain(int i, const double *buf);
+  int pack_ghost(int j, double *buf) const;
+  int unpack_ghost(int i, const double *buf);
+  int pack_ghost_velocity(int j, double *buf, const double dv[3]) const;
+  int unpack_ghost_velocity(int i, const double *buf);
   int pack_record(int i, double *buf) const;
   int unpack_record(int i, const double *buf);
+  int record_size() const;
 };
 
 }  // namespace LAMMPS_NS

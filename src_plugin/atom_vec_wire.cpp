@@ -25,7 +25,7 @@ constexpr int kBeadValues = 8;
 constexpr int kRestartValues = 15;
 }  // namespace
 
-AtomVecWire::AtomVecWire(LAMMPS *lmp) : AtomVec(lmp) {
+AtomVecWire::AtomVecWire(LAMMPS *lmp) : PluginAtomVec(lmp) {
   molecular = 0;
   comm_x_only = 1;
   comm_f_only = 1;
@@ -182,7 +182,7 @@ void AtomVecWire::unpack_reverse(int n, int *list, double *buf) {
   }
 }
 
-int AtomVecWire::pack_bead(int j, double *buf) const {
+int AtomVecWire::pack_ghost(int j, double *buf) const {
   int m = 0;
   buf[m++] = ubuf(tag[j]).d;
   buf[m++] = ubuf(type[j]).d;
@@ -195,7 +195,7 @@ int AtomVecWire::pack_bead(int j, double *buf) const {
   return m;
 }
 
-int AtomVecWire::unpack_bead(int i, const double *buf) {
+int AtomVecWire::unpack_ghost(int i, const double *buf) {
   int m = 0;
   tag[i] = (int)ubuf(buf[m++]).i;
   type[i] = (int)ubuf(buf[m++]).i;
@@ -208,39 +208,17 @@ int AtomVecWire::unpack_bead(int i, const double *buf) {
   return m;
 }
 
-int AtomVecWire::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc) {
-  double s[3];
-  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    for (int d = 0; d < 3; d++) buf[m++] = x[j][d] + s[d];
-    m += pack_bead(j, &buf[m]);
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->pack_border(n, list, &buf[m]);
-  return m;
+int AtomVecWire::pack_ghost_velocity(int j, double *buf, const double dv[3]) const {
+  for (int d = 0; d < 3; d++) buf[d] = v[j][d] + dv[d];
+  return 3;
 }
 
-int AtomVecWire::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc) {
-  double s[3];
-  wiregrain_lmp::periodic_image_shift(domain, pbc_flag, pbc, true, s);
-  double dv[3];
-  wiregrain_lmp::deforming_image_velocity(pbc_flag, pbc, deform_vremap, h_rate, dv);
-  int m = 0;
-  for (int i = 0; i < n; i++) {
-    const int j = list[i];
-    const bool remap = pbc_flag && deform_vremap && (mask[j] & deform_groupbit);
-    for (int d = 0; d < 3; d++) buf[m++] = x[j][d] + s[d];
-    m += pack_bead(j, &buf[m]);
-    for (int d = 0; d < 3; d++) buf[m++] = v[j][d] + (remap ? dv[d] : 0.0);
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->pack_border(n, list, &buf[m]);
-  return m;
+int AtomVecWire::unpack_ghost_velocity(int i, const double *buf) {
+  for (int d = 0; d < 3; d++) v[i][d] = buf[d];
+  return 3;
 }
+
+int AtomVecWire::record_size() const { return kRestartValues; }
 
 // In atom_style hybrid the base style packs x, tag, type, mask; the sub-style the rest.
 int AtomVecWire::pack_border_hybrid(int n, int *list, double *buf) {
@@ -254,31 +232,6 @@ int AtomVecWire::pack_border_hybrid(int n, int *list, double *buf) {
     buf[m++] = wire_rest[j];
   }
   return m;
-}
-
-void AtomVecWire::unpack_border(int n, int first, double *buf) {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (i == nmax) grow(0);
-    for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
-    m += unpack_bead(i, &buf[m]);
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->unpack_border(n, first, &buf[m]);
-}
-
-void AtomVecWire::unpack_border_vel(int n, int first, double *buf) {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (i == nmax) grow(0);
-    for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
-    m += unpack_bead(i, &buf[m]);
-    for (int d = 0; d < 3; d++) v[i][d] = buf[m++];
-  }
-  if (atom->nextra_border)
-    for (int iextra = 0; iextra < atom->nextra_border; iextra++)
-      m += modify->fix[atom->extra_border[iextra]]->unpack_border(n, first, &buf[m]);
 }
 
 int AtomVecWire::unpack_border_hybrid(int n, int first, double *buf) {
@@ -300,7 +253,7 @@ int AtomVecWire::pack_record(int i, double *buf) const {
   for (int d = 0; d < 3; d++) buf[m++] = x[i][d];
   for (int d = 0; d < 3; d++) buf[m++] = v[i][d];
   buf[m++] = ubuf(image[i]).d;
-  return m + pack_bead(i, &buf[m]);
+  return m + pack_ghost(i, &buf[m]);
 }
 
 int AtomVecWire::unpack_record(int i, const double *buf) {
@@ -308,62 +261,7 @@ int AtomVecWire::unpack_record(int i, const double *buf) {
   for (int d = 0; d < 3; d++) x[i][d] = buf[m++];
   for (int d = 0; d < 3; d++) v[i][d] = buf[m++];
   image[i] = (tagint)ubuf(buf[m++]).i;
-  return m + unpack_bead(i, &buf[m]);
-}
-
-int AtomVecWire::pack_exchange(int i, double *buf) {
-  int m = 1 + pack_record(i, &buf[1]);
-  if (atom->nextra_grow)
-    for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
-      m += modify->fix[atom->extra_grow[iextra]]->pack_exchange(i, &buf[m]);
-  buf[0] = m;
-  return m;
-}
-
-int AtomVecWire::unpack_exchange(double *buf) {
-  const int nlocal = atom->nlocal;
-  if (nlocal == nmax) grow(0);
-  int m = 1 + unpack_record(nlocal, &buf[1]);
-  if (atom->nextra_grow)
-    for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
-      m += modify->fix[atom->extra_grow[iextra]]->unpack_exchange(nlocal, &buf[m]);
-  atom->nlocal++;
-  return m;
-}
-
-int AtomVecWire::size_restart() {
-  const int nlocal = atom->nlocal;
-  int n = (kRestartValues + 1) * nlocal;
-  if (atom->nextra_restart)
-    for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
-      for (int i = 0; i < nlocal; i++)
-        n += modify->fix[atom->extra_restart[iextra]]->size_restart(i);
-  return n;
-}
-
-// x, y, z first: read_restart tests them to decide which rank keeps the bead.
-int AtomVecWire::pack_restart(int i, double *buf) {
-  int m = 1 + pack_record(i, &buf[1]);
-  if (atom->nextra_restart)
-    for (int iextra = 0; iextra < atom->nextra_restart; iextra++)
-      m += modify->fix[atom->extra_restart[iextra]]->pack_restart(i, &buf[m]);
-  buf[0] = m;
-  return m;
-}
-
-int AtomVecWire::unpack_restart(double *buf) {
-  const int nlocal = atom->nlocal;
-  if (nlocal == nmax) {
-    grow(0);
-    if (atom->nextra_store) memory->grow(atom->extra, nmax, atom->nextra_store, "atom:extra");
-  }
-  int m = 1 + unpack_record(nlocal, &buf[1]);
-  if (atom->nextra_store) {
-    const int size = static_cast<int>(buf[0]) - m;
-    for (int k = 0; k < size; k++) atom->extra[nlocal][k] = buf[m++];
-  }
-  atom->nlocal++;
-  return m;
+  return m + unpack_ghost(i, &buf[m]);
 }
 
 // A bead made by create_atoms or an insertion fix: unlinked, the paper's wire radius,

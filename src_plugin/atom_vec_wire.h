@@ -21,11 +21,11 @@ AtomStyle(wire,AtomVecWire)
 #ifndef LMP_ATOM_VEC_WIRE_H
 #define LMP_ATOM_VEC_WIRE_H
 
-#include "atom_vec.h"
+#include "plugin_atom_vec.h"
 
 namespace LAMMPS_NS {
 
-class AtomVecWire : public AtomVec {
+class AtomVecWire : public PluginAtomVec {
  public:
   AtomVecWire(class LAMMPS *);
   ~AtomVecWire();
@@ -40,17 +40,8 @@ class AtomVecWire : public AtomVec {
   void unpack_comm_vel(int, int, double *);
   int pack_reverse(int, int, double *);
   void unpack_reverse(int, int *, double *);
-  int pack_border(int, int *, double *, int, int *);
-  int pack_border_vel(int, int *, double *, int, int *);
   int pack_border_hybrid(int, int *, double *);
-  void unpack_border(int, int, double *);
-  void unpack_border_vel(int, int, double *);
   int unpack_border_hybrid(int, int, double *);
-  int pack_exchange(int, double *);
-  int unpack_exchange(double *);
-  int size_restart();
-  int pack_restart(int, double *);
-  int unpack_restart(double *);
   void create_atom(int, double *);
   void data_atom(double *, tagint, char **);
   int data_atom_hybrid(int, char **);
@@ -75,10 +66,13 @@ class AtomVecWire : public AtomVec {
   double *radius, *rmass;
 
   // the bead values sent to ghosts besides position: tag type mask radius mass links
-  int pack_bead(int j, double *buf) const;
-  int unpack_bead(int i, const double *buf);
+  int pack_ghost(int j, double *buf) const;
+  int unpack_ghost(int i, const double *buf);
+  int pack_ghost_velocity(int j, double *buf, const double dv[3]) const;
+  int unpack_ghost_velocity(int i, const double *buf);
   int pack_record(int i, double *buf) const;
   int unpack_record(int i, const double *buf);
+  int record_size() const;
 };
 
 }  // namespace LAMMPS_NS
