@@ -179,6 +179,32 @@ run             2000
         self.assertLess(np.max(np.abs(wall_x + floor_x - s)), 1e-6)
 
 
+class MovingWall(DeckTestCase):
+    # A box pressed by a sideways gravity against a frictionless wall moving away at 0.1
+    # (and resting on a frictionless floor) follows the wall exactly: x = 0.5 + 0.1 t.
+    def test_grain_follows_moving_wall(self):
+        made = grains_data("box 1.0 0.9 0.8", [(0.5, 0, 0.4, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector -0.6 0 -0.8
+fix             nscd all nscd/polyhedra friction 0 tolerance 1e-9 wall 0 0 0 0 0 1 wall 0 0 0 1 0 0 wall_velocity 0.1 0 0
+timestep        1e-3
+variable        x1 equal x[1]
+thermo_style    custom step time v_x1 f_nscd[10]
+thermo_modify   format float %.15g
+thermo          100
+run             2000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        # the wall moves after each step's solve: at the end of step n it is at 0.1 n h
+        lag = np.max(np.abs(t["x1"] - (0.5 + 0.1 * t["Time"])))
+        print(f"moving nscd wall: largest |x - (0.5 + 0.1 t)| = {lag:.2e}, wall force {-t['nscd[10]'][-1]:.6f} "
+              f"(m g sin = {0.72 * 1.0 * 0.6:.6f})")
+        self.assertLess(lag, 2e-4)
+        self.assertAlmostEqual(-t["nscd[10]"][-1], 0.72 * 0.6, delta=1e-6)
+
+
 class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses) reproduces the straight run.

@@ -150,6 +150,33 @@ run             10000
         self.assertAlmostEqual(-slope / 0.3, 1.0, delta=0.005)
 
 
+class MovingWall(DeckTestCase):
+    # A short wire pushed by a sideways gravity against a wall that moves away at 0.1
+    # follows it: after t = 2 its beads sit at the wall position + r_w − the overlap m g/k_n.
+    def test_wire_follows_moving_wall(self):
+        r = run(HEADER + """
+create_wire     1 line 0.1 -0.5 0 0.1 0.5 0
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+fix             g all gravity 1.0 vector -1 0 0
+fix             wall all wire/wall plane 0 0 0 1 0 0 mu_s 0 mu_d 0 restitution 0.1 velocity 0.1 0 0
+timestep        1e-4
+compute         xmean all reduce ave x
+thermo_style    custom step time c_xmean f_wall[1] f_wall[3]
+thermo_modify   format float %.15g norm no
+thermo          1000
+run             20000
+""")
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        k_n = 100.0 / (1.0 - 0.0) * 0.2 * math.pi / 4.0        # rigid wall: E* l_w π/4
+        expected = 0.1 * t["Time"][-1] + 0.1 - bead_mass() / k_n
+        print(f"moving wall: wire at {t['xmean'][-1]:.6f}, wall + r_w - m g/k_n = {expected:.6f}; "
+              f"force on the wall {t['wall[3]'][-1]:.6f} (weight {6 * bead_mass():.6f})")
+        self.assertAlmostEqual(t["xmean"][-1], expected, delta=1e-4)
+        self.assertEqual(int(t["wall[1]"][-1]), 6)
+
+
 class Pile(DeckTestCase):
     # A 2000-segment wire coiled above a floor falls into a box and piles up; the segments
     # never pass through each other: the largest overlap stays below half the wire radius.
