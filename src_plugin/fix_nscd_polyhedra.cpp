@@ -31,6 +31,8 @@ using namespace FixConst;
 
 namespace {
 
+constexpr int kMaxCapWarnings = 10;
+
 // per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3)
 constexpr int kGrainRecord = 25;
 
@@ -415,7 +417,11 @@ void FixNSCDPolyhedra::solve_step() {
   stats_[4] = result.max_predicted_penetration;
   if (report.hit_iteration_cap) {
     stats_[5] += 1.0;
-    if (comm->me == 0) {
+    // the first kMaxCapWarnings steps that hit the cap are named; the count goes on in f_ID[6]
+    if (comm->me == 0 && stats_[5] == kMaxCapWarnings + 1)
+      error->warning(FLERR, ("fix nscd/polyhedra (id " + std::string(id) +
+                             "): further steps that hit the iteration cap are only counted (f_" + id + "[6])").c_str(), 0);
+    if (comm->me == 0 && stats_[5] <= kMaxCapWarnings) {
       char line[256];
       snprintf(line, sizeof(line),
                "fix nscd/polyhedra (id %s): step " BIGINT_FORMAT " hit the iteration cap %d, residual %.3g "

@@ -253,6 +253,29 @@ read_restart heap.restart
         self.assertLess(restart, 1e-12)
 
 
+class IterationCap(DeckTestCase):
+    # A cap of 2 sweeps on a 5-cube stack at tolerance 1e-12: every step hits it; the
+    # first 10 are named in warnings, all are counted in f_ID[6].
+    def test_cap_warnings(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(5)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-12 max_iterations 2 wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[6]
+thermo          50
+run             50
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        named = r.output.count("hit the iteration cap 2, residual")
+        counted = r.thermo()["nscd[6]"][-1]
+        print(f"iteration cap: {named} warnings, {counted:.0f} steps counted")
+        self.assertEqual(named, 10)
+        self.assertIn("further steps that hit the iteration cap are only counted (f_nscd[6])", r.output)
+        self.assertEqual(counted, 51)                 # the setup solve and 50 steps
+
+
 class BadInput(DeckTestCase):
     def check(self, options, message):
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])

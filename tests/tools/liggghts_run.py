@@ -39,6 +39,8 @@ class Run:
         header = lines[heads[-1]].split()
         rows = []
         for line in lines[heads[-1] + 1:]:
+            if line.startswith("WARNING"):   # warnings may come between thermo rows
+                continue
             words = line.split()
             if len(words) != len(header):
                 break
