@@ -14,6 +14,19 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
+# the wire, its walls and integrator, shared by the piling and the timed runs
+FIXES = """
+fix             elastic all wire/elastic
+fix             integr all nve/gear forces velocity
+fix             gravity all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1
+fix             wxlo all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
+fix             wxhi all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
+fix             wylo all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
+fix             wyhi all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
+timestep        1e-4
+"""
+
 PILE = """
 units           lj
 atom_style      wire
@@ -25,16 +38,7 @@ create_wire     1 loop 0 0 0.1 1.5 90.3 0.21
 pair_style      wire/contact
 pair_coeff      * *
 neighbor        0.1 bin
-fix             elastic all wire/elastic
-fix             integr all nve/gear forces velocity
-fix             gravity all gravity 1.0 vector 0 0 -1
-fix             floor all wire/wall plane 0 0 0 0 0 1
-fix             wxlo all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
-fix             wxhi all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
-fix             wylo all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
-fix             wyhi all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
-timestep        1e-4
-run             5000
+{fixes}run             5000
 write_restart   pile.restart
 """
 
@@ -46,16 +50,7 @@ newton          off
 read_restart    pile.restart
 {pair}
 neighbor        0.1 bin
-fix             elastic all wire/elastic
-fix             integr all nve/gear forces velocity
-fix             gravity all gravity 1.0 vector 0 0 -1
-fix             floor all wire/wall plane 0 0 0 0 0 1
-fix             wxlo all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
-fix             wxhi all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
-fix             wylo all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
-fix             wyhi all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
-timestep        1e-4
-{stats}
+{fixes}{stats}
 thermo          {steps}
 run             {steps}
 """
@@ -84,13 +79,13 @@ def main():
     parser.add_argument("--np", type=int, default=1)
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="wiregrain-bench-")
-    liggghts(args, work, PILE)
+    liggghts(args, work, PILE.format(fixes=FIXES))
 
     stats = ("compute c all wire/contacts\nthermo_style custom step atoms c_c[1] c_c[4]\n"
              "thermo_modify norm no")
     with_contacts = liggghts(args, work, MEASURE.format(
-        pair="pair_style wire/contact\npair_coeff * *", stats=stats, steps=args.steps))
-    without = liggghts(args, work, MEASURE.format(pair="pair_style none", stats="", steps=args.steps))
+        pair="pair_style wire/contact\npair_coeff * *", stats=stats, steps=args.steps, fixes=FIXES))
+    without = liggghts(args, work, MEASURE.format(pair="pair_style none", stats="", steps=args.steps, fixes=FIXES))
     t_with, steps, atoms = loop_time(with_contacts)
     t_without, _, _ = loop_time(without)
     rows = re.findall(r"^\s*\d+\s+\d+\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s*$", with_contacts, re.M)
