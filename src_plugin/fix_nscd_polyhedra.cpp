@@ -83,6 +83,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       tolerance_(1e-4),
       restitution_(0.0),
       margin_(0.0),
+      theta_(1.0),
       max_iterations_(1000),
       order_(2),
       convergence_(0),
@@ -90,7 +91,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       warm_start_(true),
       grains_(NULL),
       solved_once_(false),
-      contact_force_(NULL) {
+      contact_force_(NULL),
+      step_start_velocity_(NULL) {
   wiregrain_lmp::StyleArgs args(error, "fix", "nscd/polyhedra", id, narg, arg, 3);
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
@@ -117,14 +119,15 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       if (v != "yes" && v != "no") args.fail("value of 'warm_start' must be yes or no, got '" + v + "'");
       warm_start_ = v == "yes";
     } else if (key == "restitution") {
-      restitution_ = args.value_nonnegative(key);
-      if (restitution_ > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
+      restitution_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
     } else if (key == "convergence") {
       const std::string v = args.value_word(key);
       if (v == "natural_map") convergence_ = 0;
       else if (v == "increment") convergence_ = 1;
       else if (v == "both") convergence_ = 2;
       else args.fail("value of 'convergence' must be natural_map, increment or both, got '" + v + "'");
+    } else if (key == "theta") {
+      theta_ = args.value_in_range(key, 0.5, 1.0, "[0.5, 1]");
     } else if (key == "margin") {
       margin_ = args.value_nonnegative(key);
     } else if (key == "wall") {
@@ -156,8 +159,12 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   peratom_flag = 1;
   size_peratom_cols = 6;
   peratom_freq = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
+  atom->add_callback(1);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
   global_freq = 1;
   extvector = 0;
   for (double &s : stats_) s = 0.0;
@@ -166,17 +173,63 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
 
 FixNSCDPolyhedra::~FixNSCDPolyhedra() {
   atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
   memory->destroy(contact_force_);
+  memory->destroy(step_start_velocity_);
 }
 
 void FixNSCDPolyhedra::grow_arrays(int nmax) {
   memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
+  memory->grow(step_start_velocity_, nmax, 6, "nscd/polyhedra:step_start_velocity");
   array_atom = contact_force_;
 }
 
 void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
-  for (int k = 0; k < 6; k++) contact_force_[j][k] = contact_force_[i][k];
+  for (int k = 0; k < 6; k++) {
+    contact_force_[j][k] = contact_force_[i][k];
+    step_start_velocity_[j][k] = step_start_velocity_[i][k];
+  }
 }
+
+// a grain that never went through a solve starts from its current velocity
+void FixNSCDPolyhedra::set_arrays(int i) {
+  for (int d = 0; d < 3; d++) {
+    contact_force_[i][d] = contact_force_[i][3 + d] = 0.0;
+    step_start_velocity_[i][d] = atom->v[i][d];
+    step_start_velocity_[i][3 + d] = atom->angmom[i][d];
+  }
+}
+
+int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
+  for (int k = 0; k < 6; k++) buf[k] = step_start_velocity_[i][k];
+  return 6;
+}
+
+int FixNSCDPolyhedra::unpack_exchange(int nlocal, double *buf) {
+  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = buf[k];
+  for (int k = 0; k < 6; k++) contact_force_[nlocal][k] = 0.0;
+  return 6;
+}
+
+int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
+  buf[0] = 7;
+  for (int k = 0; k < 6; k++) buf[k + 1] = step_start_velocity_[i][k];
+  return 7;
+}
+
+void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 7; }
+
+int FixNSCDPolyhedra::maxsize_restart() { return 7; }
+
+double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 12 * sizeof(double); }
 
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
@@ -199,9 +252,13 @@ void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
   double **x = atom->x, **v = atom->v, **angmom = atom->angmom, **quat = atom->quaternion, **inertia = atom->inertia;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    for (int d = 0; d < 3; d++) x[i][d] += h * v[i][d];
+    // θ-method: x += h((1 − θ) v_n + θ v_{n+1}); the rotation with (1 − θ) L_n + θ L_{n+1}
+    const double *start = step_start_velocity_[i];
+    const Eigen::Vector3d velocity = (1.0 - theta_) * vec(start) + theta_ * vec(v[i]);
+    const Eigen::Vector3d momentum = (1.0 - theta_) * vec(start + 3) + theta_ * vec(angmom[i]);
+    for (int d = 0; d < 3; d++) x[i][d] += h * velocity[d];
     wiregrain::RigidRotation body(vec(inertia[i]), Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3]),
-                                  vec(angmom[i]));
+                                  momentum);
     body.rotate_free(h);
     const Eigen::Quaterniond &q = body.orientation();
     quat[i][0] = q.w();
@@ -359,6 +416,7 @@ void FixNSCDPolyhedra::solve_step() {
                               : order_ == 1 ? wiregrain::SweepOrder::alternating : wiregrain::SweepOrder::random;
   options.seed = (std::uint64_t)seed_ + (std::uint64_t)update->ntimestep;
   options.restitution = restitution_;
+  options.theta = theta_;
   options.measure = convergence_ == 0 ? wiregrain::ConvergenceMeasure::natural_map
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
@@ -403,6 +461,8 @@ void FixNSCDPolyhedra::solve_step() {
       contact_force_[i][3 + d] = torque[k][d];
     }
     for (int d = 0; d < 3; d++) {
+      step_start_velocity_[i][d] = atom->v[i][d];
+      step_start_velocity_[i][3 + d] = atom->angmom[i][d];
       atom->v[i][d] = result.velocities[k][d];
       atom->omega[i][d] = result.angular_velocities[k][d];
     }

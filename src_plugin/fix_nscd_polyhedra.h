@@ -4,15 +4,18 @@
 
    fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
        [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
+       [theta 1]
        [convergence natural_map|increment|both]
        [margin 0] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
-   Each step (θ = 1): at the end of step n, with the forces and torques of step n (gravity
+   Each step: at the end of step n, with the forces and torques of step n (gravity
    and every other style's), the free velocities v + h F/m, L + h T are corrected by the
    contact impulses of all contact points whose gap g at the current positions is below
    the activation distance; non-penetration is imposed with gap anticipation,
-   g + h u_n ≥ 0. The positions follow at the start of step n+1: x += h v_{n+1}, the
-   orientation by the exact torque-free rotation with L_{n+1}. Walls are planes of
+   g + h((1 − θ) u_n^n + θ u_n^{n+1}) ≥ 0. The positions follow at the start of step n+1:
+   x += h((1 − θ) v_n + θ v_{n+1}), the orientation by the exact torque-free rotation with
+   (1 − θ) L_n + θ L_{n+1} (θ = 1 by default). v_n and L_n of each grain are kept per atom
+   (they migrate and restart), so velocities set between runs are honoured. Walls are planes of
    infinite mass, each with its own friction and velocity.
 
    MPI: every rank gathers all grains of the group, detects and solves the same contact
@@ -56,6 +59,16 @@ class FixNSCDPolyhedra : public Fix {
   ~FixNSCDPolyhedra();
   void write_restart(FILE *);
   void restart(char *);
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  void set_arrays(int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
+  int pack_restart(int, double *);
+  void unpack_restart(int, int);
+  int size_restart(int);
+  int maxsize_restart();
+  double memory_usage();
 
   struct Wall {
     double point[3], normal[3], velocity[3];
@@ -69,7 +82,7 @@ class FixNSCDPolyhedra : public Fix {
   };
 
  private:
-  double friction_, tolerance_, restitution_, margin_;
+  double friction_, tolerance_, restitution_, margin_, theta_;
   int max_iterations_, order_, convergence_;
   long seed_;
   bool warm_start_;
@@ -81,8 +94,7 @@ class FixNSCDPolyhedra : public Fix {
   double timings_[2];                     // wall-clock seconds of the last step: gather+detection, solve
   std::vector<double> wall_forces_;       // 3 per wall
   double **contact_force_;                // per grain: force, torque
-  void grow_arrays(int);
-  void copy_arrays(int, int, int);
+  double **step_start_velocity_;          // per grain: v_n, L_n of the last solve (θ-method)
 
   void solve_step();
 };

@@ -64,6 +64,12 @@ double StyleArgs::value_nonnegative(const std::string& keyword) {
   return v;
 }
 
+double StyleArgs::value_in_range(const std::string& keyword, double lo, double hi, const std::string& range_text) {
+  const double v = value_double(keyword);
+  if (!(v >= lo && v <= hi)) fail("value of '" + keyword + "' must be in " + range_text + ", got " + arg_[pos_ - 1]);
+  return v;
+}
+
 void StyleArgs::unknown_keyword(const std::string& keyword) const {
   fail("unknown keyword '" + keyword + "'");
 }

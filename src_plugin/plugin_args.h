@@ -30,6 +30,8 @@ class StyleArgs {
   // value_double with a domain check, e.g. "value of 'E' must be > 0, got -1"
   double value_positive(const std::string& keyword);
   double value_nonnegative(const std::string& keyword);
+  // "value of 'theta' must be in [0.5, 1], got 0.4"; lo and hi given as the user reads them
+  double value_in_range(const std::string& keyword, double lo, double hi, const std::string& range_text);
 
   [[noreturn]] void unknown_keyword(const std::string& keyword) const;
   [[noreturn]] void fail(const std::string& what) const;

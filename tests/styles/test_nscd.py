@@ -25,7 +25,8 @@ create_grains 1 {len(poses)} random box seed 7 shape {shape} sweep {sweep} densi
 write_data grains.data
 grain_shapes write grains.shapes
 """)
-    lines = open(made.path("grains.data")).read().splitlines()
+    with open(made.path("grains.data")) as f:
+        lines = f.read().splitlines()
     k = next(i for i, line in enumerate(lines) if line.startswith("Atoms")) + 2
     for n, pose in enumerate(poses):
         words = lines[k + n].split()
@@ -204,6 +205,36 @@ run             2000
         self.assertAlmostEqual(-t["nscd[10]"][-1], 0.72 * 0.6, delta=1e-6)
 
 
+class ThetaMethod(DeckTestCase):
+    # Free fall from rest, h = 1e-2, 100 steps: positions x += h((1 − θ) v_n + θ v_{n+1}).
+    # θ = 1/2 (trapezoid) is exact for constant g: z = z0 − g t²/2; θ = 1 lags by g h t / 2.
+    def fall(self, theta):
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 10.0, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra theta {theta} wall 0 0 0 0 0 1
+timestep        1e-2
+variable        z1 equal z[1]
+thermo_style    custom step time v_z1
+thermo_modify   format float %.15g
+thermo          10
+run             100
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        return t["Time"], t["z1"] - (10.0 - 0.5 * G * t["Time"] ** 2)
+
+    def test_free_fall(self):
+        time, half = self.fall(0.5)
+        time, one = self.fall(1.0)
+        lag = np.max(np.abs(one + 0.5 * G * 1e-2 * time))
+        print(f"free fall: theta 1/2 error {np.max(np.abs(half)):.1e}; theta 1 error {one[-1]:.6f} at t = 1 "
+              f"(-g h t / 2 = -0.005), deviation from it {lag:.1e}")
+        self.assertLess(np.max(np.abs(half)), 1e-12)
+        self.assertLess(lag, 1e-12)
+
+
 class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses) reproduces the straight run.
@@ -285,6 +316,8 @@ class BadInput(DeckTestCase):
         self.check("friction -0.1", "fix nscd/polyhedra (id nscd): value of 'friction' must be >= 0, got -0.1")
         self.check("tolerance -1e-4", "fix nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got -1e-4")
         self.check("max_iterations 0", "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be >= 1, got 0")
+        self.check("theta 0.4", "fix nscd/polyhedra (id nscd): value of 'theta' must be in [0.5, 1], got 0.4")
+        self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
