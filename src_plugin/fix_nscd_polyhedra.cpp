@@ -84,6 +84,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       restitution_(0.0),
       margin_(0.0),
       theta_(1.0),
+      overlap_recovery_(1.0),
+      damping_(0.0),
       max_iterations_(1000),
       order_(2),
       convergence_(0),
@@ -128,6 +130,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       else args.fail("value of 'convergence' must be natural_map, increment or both, got '" + v + "'");
     } else if (key == "theta") {
       theta_ = args.value_in_range(key, 0.5, 1.0, "[0.5, 1]");
+    } else if (key == "overlap_recovery") {
+      overlap_recovery_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+    } else if (key == "damping") {
+      damping_ = args.value_nonnegative(key);
     } else if (key == "margin") {
       margin_ = args.value_nonnegative(key);
     } else if (key == "wall") {
@@ -330,8 +336,10 @@ void FixNSCDPolyhedra::solve_step() {
     const Eigen::Matrix3d inertia_world = r * g.inertia.asDiagonal() * r.transpose();
     b.velocity_begin = g.v;
     b.angular_velocity_begin = g.w;
-    b.velocity_free = g.v + h * ftm2v * g.f / g.mass;
-    b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.w + h * ftm2v * g.t);
+    // optional viscous damping at rate γ, implicit: v_free = (v + h F/m) / (1 + h γ), same for L
+    const double damped = 1.0 / (1.0 + h * damping_);
+    b.velocity_free = damped * (g.v + h * ftm2v * g.f / g.mass);
+    b.angular_velocity_free = damped * (b.inverse_inertia * (inertia_world * g.w + h * ftm2v * g.t));
     step.bodies.push_back(b);
     const double radius = library[g.shape].bounding_radius;
     largest_radius = std::max(largest_radius, radius);
@@ -417,6 +425,7 @@ void FixNSCDPolyhedra::solve_step() {
   options.seed = (std::uint64_t)seed_ + (std::uint64_t)update->ntimestep;
   options.restitution = restitution_;
   options.theta = theta_;
+  options.overlap_recovery = overlap_recovery_;
   options.measure = convergence_ == 0 ? wiregrain::ConvergenceMeasure::natural_map
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
@@ -493,6 +502,21 @@ void FixNSCDPolyhedra::solve_step() {
   // the wall positions for the next detection
   for (Wall &w : walls_)
     for (int d = 0; d < 3; d++) w.point[d] += w.velocity[d] * h;
+}
+
+// fix_modify ID damping γ | overlap_recovery β | tolerance t | friction μ (grain–grain),
+// e.g. to relax a deposit with damping and go on without it, keeping the warm start.
+int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
+  if (narg < 1) return 0;
+  const std::string key = arg[0];
+  if (key != "damping" && key != "overlap_recovery" && key != "tolerance" && key != "friction") return 0;
+  wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, 2), arg, 0);
+  args.next_keyword();
+  if (key == "damping") damping_ = args.value_nonnegative(key);
+  else if (key == "overlap_recovery") overlap_recovery_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+  else if (key == "tolerance") tolerance_ = args.value_positive(key);
+  else friction_ = args.value_nonnegative(key);
+  return 2;
 }
 
 double FixNSCDPolyhedra::compute_vector(int k) {

@@ -4,7 +4,7 @@
 
    fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
        [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
-       [theta 1]
+       [theta 1] [overlap_recovery 1] [damping 0]
        [convergence natural_map|increment|both]
        [margin 0] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
@@ -56,6 +56,7 @@ class FixNSCDPolyhedra : public Fix {
   void initial_integrate(int);
   void final_integrate();
   double compute_vector(int);
+  int modify_param(int, char **);
   ~FixNSCDPolyhedra();
   void write_restart(FILE *);
   void restart(char *);
@@ -82,7 +83,7 @@ class FixNSCDPolyhedra : public Fix {
   };
 
  private:
-  double friction_, tolerance_, restitution_, margin_, theta_;
+  double friction_, tolerance_, restitution_, margin_, theta_, overlap_recovery_, damping_;
   int max_iterations_, order_, convergence_;
   long seed_;
   bool warm_start_;

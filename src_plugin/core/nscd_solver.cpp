@@ -47,6 +47,10 @@ void NscdOptions::validate() const {
     throw InvalidArgument("restitution", "restitution must be in [0, 1], got " +
                                              format_number(restitution));
   }
+  if (!(overlap_recovery >= 0.0 && overlap_recovery <= 1.0)) {
+    throw InvalidArgument("overlap_recovery", "overlap_recovery must be in [0, 1], got " +
+                                                  format_number(overlap_recovery));
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -265,7 +269,8 @@ class BodyContactOperator final : public ContactOperator {
       const double g = contact.gap;
       const double un_begin = u_begin[0];
       start_normal_velocity_[c] = un_begin;
-      double shift = (g / h + (1.0 - theta) * un_begin) / theta;
+      const double g_target = g < 0.0 ? options.overlap_recovery * g : g;
+      double shift = (g_target / h + (1.0 - theta) * un_begin) / theta;
       if (options.restitution > 0.0 && un_begin < 0.0 && g + h * un_begin <= 0.0) {
         shift = std::min(shift, options.restitution * un_begin);
       }

@@ -13,7 +13,10 @@
 // Contact law, per contact point c (gap g_c ≥ 0 open, < 0 overlap, at the step start):
 // the predicted end-of-step gap g_c + h((1 − θ) u_n^k + θ u_n^{k+1}) must be ≥ 0, i.e.
 //     u_n^{k+1} + s_c ≥ 0,   s_c = (g_c / h + (1 − θ) u_n^k) / θ,
-// (for θ = 1: g + h u_n ≥ 0, the gap anticipation of the issue). u_n^k = H V_k is the
+// (for θ = 1: g + h u_n ≥ 0, the gap anticipation of the issue). An overlap (g < 0) is
+// removed only in part per step: g is replaced by β g, β = overlap_recovery ∈ [0, 1]
+// (1: the whole overlap in one step, pushing out at |g|/h; 0: overlaps are only kept
+// from growing). u_n^k = H V_k is the
 // normal velocity at the step start. With restitution e > 0, a contact that would close
 // within the step with its start velocity (u_n^k < 0 and g + h u_n^k ≤ 0) gets
 // Newton's impact law u_n^{k+1} ≥ −e u_n^k on top: s_c = min(s_c, e u_n^k). e = 0 (the
@@ -88,9 +91,10 @@ struct NscdOptions {
   // Moreau–Jean law (solve_nscd_step and assemble_reduced only; see above).
   double theta = 1.0;        // [0.5, 1]
   double restitution = 0.0;  // [0, 1]
+  double overlap_recovery = 1.0;  // β ∈ [0, 1]: fraction of an overlap removed per step
 
   // InvalidArgument("tolerance" | "max_iterations" | "relaxation" | "theta" |
-  // "restitution", ...) on values outside the ranges above.
+  // "restitution" | "overlap_recovery", ...) on values outside the ranges above.
   void validate() const;
 };
 

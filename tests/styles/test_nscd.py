@@ -235,6 +235,56 @@ run             100
         self.assertLess(lag, 1e-12)
 
 
+class DampingAndOverlap(DeckTestCase):
+    # damping γ (implicit): v_{k+1} = (v_k − g h)/(1 + h γ) in free fall, so the speed tends to
+    # the terminal g/γ as 1 − (1 + hγ)^−k. overlap_recovery β: a cube started 0.01 into the
+    # floor without gravity keeps (1 − β) of it after one step and none after two: the push-out
+    # speed β·overlap/h is a real velocity (it stays with the grain).
+    def test_terminal_velocity(self):
+        made = grains_data("cube 1.0", [(0, 0, 50.0, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra damping 2 wall 0 0 0 0 0 1
+timestep        1e-2
+variable        vz1 equal vz[1]
+thermo_style    custom step v_vz1
+thermo_modify   format float %.15g
+thermo          100
+run             300
+fix_modify      nscd damping 0
+run             100
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t, after = r.thermo(0), r.thermo(1)
+        expected = -0.5 * (1.0 - (1.0 + 2e-2) ** -(t["Step"] + 1))   # + 1: the setup solve
+        error = np.max(np.abs(t["vz1"] - expected))
+        free = after["vz1"][-1] - after["vz1"][0]
+        print(f"damping 2: vz {t['vz1'][-1]:.12f} at step 300 (terminal -0.5), error {error:.1e}; "
+              f"after fix_modify damping 0, 100 steps gain {free:.12f} (-g t = -1)")
+        self.assertLess(error, 1e-12)
+        self.assertAlmostEqual(free, -1.0, delta=1e-12)
+
+    def test_overlap_recovery(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.49, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             nscd all nscd/polyhedra overlap_recovery 0.5 tolerance 1e-12 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        vz1 equal vz[1]
+thermo_style    custom step f_nscd[4] v_vz1
+thermo_modify   format float %.15g
+thermo          1
+run             3
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        print(f"overlap_recovery 0.5: overlaps {t['nscd[4]']} (0.01, 0.005, 0, 0); vz {t['vz1'][-1]:.12f} "
+              f"(the recovery speed 0.5 * 0.01 / h = 5 is kept: no gravity)")
+        self.assertLess(np.max(np.abs(t["nscd[4]"] - [0.01, 0.005, 0, 0])), 1e-12)
+        self.assertLess(np.max(np.abs(t["vz1"] - 5.0)), 1e-9)
+
+
 class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses) reproduces the straight run.
@@ -317,6 +367,9 @@ class BadInput(DeckTestCase):
         self.check("tolerance -1e-4", "fix nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got -1e-4")
         self.check("max_iterations 0", "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be >= 1, got 0")
         self.check("theta 0.4", "fix nscd/polyhedra (id nscd): value of 'theta' must be in [0.5, 1], got 0.4")
+        self.check("overlap_recovery 2", "fix nscd/polyhedra (id nscd): value of 'overlap_recovery' must be in [0, 1], got 2")
+        self.check("damping -1", "fix nscd/polyhedra (id nscd): value of 'damping' must be >= 0, got -1")
+        self.check("\nfix_modify nscd damping", "fix_modify nscd/polyhedra (id nscd): missing value after 'damping'")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")

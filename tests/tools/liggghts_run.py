@@ -30,15 +30,15 @@ class Run:
     def errors(self):
         return [line for line in self.output.splitlines() if line.startswith("ERROR")]
 
-    def thermo(self):
-        """The thermo table of the last run as {column: numpy array}."""
+    def thermo(self, which=-1):
+        """The thermo table of a run (default the last; 0 the first) as {column: numpy array}."""
         lines = self.output.splitlines()
         heads = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]]
         if not heads:
             raise AssertionError("no thermo output found:\n" + self.output[-3000:])
-        header = lines[heads[-1]].split()
+        header = lines[heads[which]].split()
         rows = []
-        for line in lines[heads[-1] + 1:]:
+        for line in lines[heads[which] + 1:]:
             if line.startswith("WARNING"):   # warnings may come between thermo rows
                 continue
             words = line.split()
