@@ -1,7 +1,11 @@
 // fclib_nscd: wiregrain's NSCD Gauss–Seidel (core/nscd_solver.h, solve_reduced) against
 // Siconos numerics' fc3d_nsgs on the same frictional contact problem u = W r + q.
 //
-//   fclib_nscd solve FILE.hdf5 [options]        an FCLib local problem (fclib_read_local)
+//   fclib_nscd solve FILE [options]     an FCLib local problem (FILE.hdf5, fclib_read_local)
+//                                       or a problem written by fix nscd/polyhedra's
+//                                       write_problems (text, core/reduced_problem_io.h)
+//   fclib_nscd convert IN.txt OUT.hdf5  such a text problem as an FCLib file (compressed
+//                                       rows), read back and compared entry by entry
 //   fclib_nscd generate KIND ARGS [options]     a problem built here, no input file:
 //       pile NX NY NZ     NX×NY columns of NZ unit cubes on a frictional ground, in face
 //                         contact with their neighbours (4 points per face), random
@@ -39,12 +43,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/nscd_solver.h"
+#include "core/reduced_problem_io.h"
 #include "fclib_io.h"
 
 using namespace wiregrain;
@@ -288,7 +294,8 @@ Run run_siconos(const ReducedProblem& reduced, SiconosProblem& siconos, const Op
 }
 
 Run run_ours(const ReducedProblem& reduced, SiconosProblem& siconos, const Options& options,
-             SweepOrder order, double tolerance, const std::string& name) {
+             SweepOrder order, double tolerance, const std::string& name,
+             ConvergenceMeasure measure = ConvergenceMeasure::increment_then_natural_map) {
   Run run;
   run.name = name;
   run.seconds = 1e300;
@@ -297,6 +304,7 @@ Run run_ours(const ReducedProblem& reduced, SiconosProblem& siconos, const Optio
   nscd.max_iterations = options.max_iterations;
   nscd.order = order;
   nscd.seed = options.seed;
+  nscd.measure = measure;
   for (int k = 0; k < options.repeat; ++k) {
     const auto start = std::chrono::steady_clock::now();
     ContactSolution solution = solve_reduced(reduced, nscd);
@@ -349,7 +357,12 @@ void compare(const ReducedProblem& reduced, const std::string& label, const Opti
   runs.push_back(run_ours(reduced, siconos, options, SweepOrder::alternating, target,
                           "wiregrain nscd, alternating order"));
   runs.push_back(run_ours(reduced, siconos, options, SweepOrder::random, target,
-                          "wiregrain nscd, random order (default)"));
+                          "wiregrain nscd, random order"));
+  // what fix nscd/polyhedra does by default: the Siconos error checked after every sweep
+  runs.push_back(run_ours(reduced, siconos, options, SweepOrder::forward, target,
+                          "wiregrain nscd, forward, natural map", ConvergenceMeasure::natural_map));
+  runs.push_back(run_ours(reduced, siconos, options, SweepOrder::random, target,
+                          "wiregrain nscd, random, natural map (fix)", ConvergenceMeasure::natural_map));
   if (step != nullptr) runs.push_back(run_bodies(*step, siconos, options, target));
   std::printf("tolerance %.3g; our target: Siconos' final error %.3e; best of %d runs\n",
               options.tolerance, target, options.repeat);
@@ -363,9 +376,41 @@ void compare(const ReducedProblem& reduced, const std::string& label, const Opti
   }
 }
 
+// A problem file: FCLib HDF5, or the text format of fix nscd/polyhedra (by its first line).
+ReducedProblem read_problem(const std::string& path, std::string& title) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  std::string first;
+  std::getline(in, first);
+  if (first.rfind("wiregrain_reduced_problem", 0) == 0) {
+    in.seekg(0);
+    return read_reduced_problem(in, &title);
+  }
+  bench::FclibInfo info;
+  ReducedProblem problem = bench::read_fclib_local(path, &info);
+  title = info.title;
+  return problem;
+}
+
+// Largest difference of W entries, q and μ between two problems (1 if b has extra blocks).
+double difference(const ReducedProblem& a, const ReducedProblem& b) {
+  if (a.contact_count() != b.contact_count() || b.W.stored_blocks() > a.W.stored_blocks()) return 1.0;
+  double d = a.contact_count() ? (a.q - b.q).cwiseAbs().maxCoeff() : 0.0;
+  for (int c = 0; c < a.contact_count(); ++c) {
+    for (const BlockSparseMatrix3::Entry& entry : a.W.row(c)) {
+      const Matrix3d* read = b.W.find(c, entry.column);
+      const Matrix3d stored = read != nullptr ? *read : Matrix3d::Zero();
+      d = std::max(d, (stored - entry.block).cwiseAbs().maxCoeff());
+    }
+    d = std::max(d, std::abs(a.mu[c] - b.mu[c]));
+  }
+  return d;
+}
+
 void usage() {
   std::fprintf(stderr,
-               "usage: fclib_nscd solve FILE.hdf5 [options]\n"
+               "usage: fclib_nscd solve FILE.hdf5|FILE.txt [options]\n"
+               "       fclib_nscd convert IN.txt OUT.hdf5\n"
                "       fclib_nscd generate pile NX NY NZ | column N | random NB NC [options]\n"
                "       fclib_nscd write OUT.hdf5 pile NX NY NZ | column N | random NB NC "
                "[options]\n"
@@ -406,10 +451,27 @@ int main(int argc, char** argv) {
     const std::string mode = argv[1];
     if (mode == "solve") {
       const Options options = parse_options(argc, argv, 3);
-      bench::FclibInfo info;
-      const ReducedProblem problem = bench::read_fclib_local(argv[2], &info);
-      compare(problem, std::string(argv[2]) + (info.title.empty() ? "" : " (" + info.title + ")"),
-              options);
+      std::string title;
+      const ReducedProblem problem = read_problem(argv[2], title);
+      compare(problem, std::string(argv[2]) + (title.empty() ? "" : " (" + title + ")"), options);
+    } else if (mode == "convert") {
+      if (argc != 4) {
+        usage();
+        return 2;
+      }
+      std::string title;
+      std::ifstream in(argv[2]);
+      if (!in) throw std::runtime_error(std::string("cannot open ") + argv[2]);
+      const ReducedProblem problem = read_reduced_problem(in, &title);
+      const bench::FclibInfo info{title,
+                                  "reduced problem u = W r + q of one Moreau-Jean step of fix "
+                                  "nscd/polyhedra (wiregrain)",
+                                  "W symmetric positive semi-definite"};
+      bench::write_fclib_local(argv[3], problem, info);
+      const double d = difference(problem, bench::read_fclib_local(argv[3]));
+      std::printf("wrote %s: %d contacts, %ld W blocks; read back, max difference %.3g\n", argv[3],
+                  problem.contact_count(), problem.W.stored_blocks(), d);
+      if (d != 0.0) return 1;
     } else if (mode == "generate") {
       const Options options = parse_options(argc, argv, first_flag(argc, argv, 2));
       int next = 2;
@@ -442,18 +504,6 @@ int main(int argc, char** argv) {
       }
       skew.q = Eigen::VectorXd::LinSpaced(9, -1.0, 1.0);
       skew.mu = {0.1, 0.2, 0.3};
-      auto difference = [](const ReducedProblem& a, const ReducedProblem& b) {
-        double d = (a.q - b.q).cwiseAbs().maxCoeff();
-        for (int c = 0; c < a.contact_count(); ++c) {
-          for (const BlockSparseMatrix3::Entry& entry : a.W.row(c)) {
-            const Matrix3d* read = b.W.find(c, entry.column);
-            const Matrix3d stored = read != nullptr ? *read : Matrix3d::Zero();
-            d = std::max(d, (stored - entry.block).cwiseAbs().maxCoeff());
-          }
-          d = std::max(d, std::abs(a.mu[c] - b.mu[c]));
-        }
-        return b.W.stored_blocks() > a.W.stored_blocks() ? 1.0 : d;
-      };
       const std::pair<bench::FclibMatrixFormat, const char*> formats[] = {
           {bench::FclibMatrixFormat::triplets, "triplets"},
           {bench::FclibMatrixFormat::compressed_columns, "compressed columns"},

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <unordered_map>
 
@@ -22,6 +23,7 @@
 #include "core/contact_geometry.h"
 #include "core/errors.h"
 #include "core/nscd_solver.h"
+#include "core/reduced_problem_io.h"
 #include "core/rigid_body.h"
 #include "core/shape_library.h"
 #include "plugin_args.h"
@@ -134,6 +136,13 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       overlap_recovery_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
     } else if (key == "damping") {
       damping_ = args.value_nonnegative(key);
+    } else if (key == "write_problems") {
+      const long every = args.value_int(key);
+      if (every < 1) args.fail("value of 'write_problems' (every N steps) must be >= 1, got " + std::to_string(every));
+      problem_every_ = (int)every;
+      problem_file_ = args.value_word(key);
+      if (problem_file_.find('*') == std::string::npos)
+        args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" + problem_file_ + "'");
     } else if (key == "margin") {
       margin_ = args.value_nonnegative(key);
     } else if (key == "wall") {
@@ -395,6 +404,30 @@ void FixNSCDPolyhedra::solve_step() {
     }
   }
 
+  // Contacts listed from the top down (descending z of the contact point, ties in detection
+  // order): a forward sweep then carries the weight of a pile under gravity along −z to the
+  // floor in one pass. The order changes the sweeps needed, not the solution.
+  {
+    std::vector<int> top_down(step.contacts.size());
+    for (int c = 0; c < (int)top_down.size(); c++) top_down[c] = c;
+    std::stable_sort(top_down.begin(), top_down.end(),
+                     [&](int a, int b) { return positions[a].z() > positions[b].z(); });
+    std::vector<wiregrain::NscdContact> contacts(top_down.size());
+    std::vector<std::pair<int, int> > sorted_keys(top_down.size());
+    std::vector<Eigen::Vector3d> sorted_positions(top_down.size());
+    std::vector<Eigen::Matrix3d> sorted_frames(top_down.size());
+    for (int c = 0; c < (int)top_down.size(); c++) {
+      contacts[c] = step.contacts[top_down[c]];
+      sorted_keys[c] = keys[top_down[c]];
+      sorted_positions[c] = positions[top_down[c]];
+      sorted_frames[c] = frames[top_down[c]];
+    }
+    step.contacts.swap(contacts);
+    keys.swap(sorted_keys);
+    positions.swap(sorted_positions);
+    frames.swap(sorted_frames);
+  }
+
   // 4. warm start: last step's impulse of the nearest point of the same pair
   const int ncontacts = (int)step.contacts.size();
   std::vector<Eigen::Vector3d> warm;
@@ -429,6 +462,7 @@ void FixNSCDPolyhedra::solve_step() {
   options.measure = convergence_ == 0 ? wiregrain::ConvergenceMeasure::natural_map
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
+  if (problem_every_ > 0 && update->ntimestep % problem_every_ == 0 && comm->me == 0) write_problem(step, options);
   const wiregrain::NscdStepResult result = wiregrain::solve_nscd_step(step, options, warm);
   timings_[0] = detected - start;
   timings_[1] = MPI_Wtime() - detected;
@@ -502,6 +536,20 @@ void FixNSCDPolyhedra::solve_step() {
   // the wall positions for the next detection
   for (Wall &w : walls_)
     for (int d = 0; d < 3; d++) w.point[d] += w.velocity[d] * h;
+}
+
+// The reduced problem (W, q, μ) of this step as a text file (core/reduced_problem_io.h);
+// bench/fclib_nscd turns it into an FCLib file and solves it with Siconos and with ours.
+void FixNSCDPolyhedra::write_problem(const wiregrain::NscdStep &step, const wiregrain::NscdOptions &options) {
+  std::string path = problem_file_;
+  path.replace(path.find('*'), 1, std::to_string(update->ntimestep));
+  std::ofstream out(path);
+  if (!out)
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, "cannot open '" + path + "' for writing");
+  char title[256];
+  snprintf(title, sizeof(title), "fix nscd/polyhedra (id %s) step " BIGINT_FORMAT ": %d grains, %d contact points, h = %g",
+           id, update->ntimestep, (int)step.bodies.size(), (int)step.contacts.size(), step.time_step);
+  wiregrain::write_reduced_problem(out, wiregrain::assemble_reduced(step, options), title);
 }
 
 // fix_modify ID damping γ | overlap_recovery β | tolerance t | friction μ (grain–grain),

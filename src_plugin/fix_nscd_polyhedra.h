@@ -6,7 +6,7 @@
        [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
        [theta 1] [overlap_recovery 1] [damping 0]
        [convergence natural_map|increment|both]
-       [margin 0] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
+       [margin 0] [write_problems N file_*.txt] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
    Each step: at the end of step n, with the forces and torques of step n (gravity
    and every other style's), the free velocities v + h F/m, L + h T are corrected by the
@@ -40,10 +40,16 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 
 #include <cstdio>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "fix.h"
+
+namespace wiregrain {
+struct NscdStep;
+struct NscdOptions;
+}
 
 namespace LAMMPS_NS {
 
@@ -98,6 +104,9 @@ class FixNSCDPolyhedra : public Fix {
   double **step_start_velocity_;          // per grain: v_n, L_n of the last solve (θ-method)
 
   void solve_step();
+  int problem_every_ = 0;      // write the reduced problem every N steps (0: never)
+  std::string problem_file_;  // its file name, '*' replaced by the step
+  void write_problem(const wiregrain::NscdStep &, const wiregrain::NscdOptions &);
 };
 
 }  // namespace LAMMPS_NS

@@ -2,6 +2,7 @@
 Coulomb's law; 1 vs 2 ranks; restart with warm-start impulses; error messages."""
 
 import math
+import os
 
 import numpy as np
 
@@ -285,6 +286,34 @@ run             3
         self.assertLess(np.max(np.abs(t["vz1"] - 5.0)), 1e-9)
 
 
+class WriteProblems(DeckTestCase):
+    # A unit cube (m = 1, I = 1/6) resting on the floor: 4 contact points at its bottom
+    # corners; the written problem has q_n = −g h (free velocity, zero gap) and the
+    # Delassus diagonal W_nn = 1/m + |r × n|² / I = 1 + 0.5 · 6 = 4 for each corner.
+    def test_written_problem(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-12 write_problems 2 problem_*.txt wall 0 0 0 0 0 1
+timestep        1e-3
+run             3
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        for step in (0, 2):
+            with open(r.path(f"problem_{step}.txt")) as f:
+                lines = f.read().splitlines()
+            self.assertEqual(lines[0], "wiregrain_reduced_problem 1")
+            self.assertEqual(lines[2], "contacts 4 blocks 16")
+            q = np.array([[float(w) for w in line.split()] for line in lines[9:13]])
+            diagonal = [float(line.split()[2]) for line in lines[14:30] if line.split()[0] == line.split()[1]]
+            print(f"problem of step {step}: q_n {q[:, 0]}, W_nn {diagonal}")
+            self.assertLess(np.max(np.abs(q[:, 0] + 1e-3)), 1e-15)
+            self.assertLess(np.max(np.abs(q[:, 1:])), 1e-15)
+            self.assertLess(np.max(np.abs(np.array(diagonal) - 4.0)), 1e-12)
+        self.assertFalse(os.path.exists(r.path("problem_1.txt")))
+
+
 class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses) reproduces the straight run.
@@ -335,21 +364,22 @@ read_restart heap.restart
 
 
 class IterationCap(DeckTestCase):
-    # A cap of 2 sweeps on a 5-cube stack at tolerance 1e-12: every step hits it; the
-    # first 10 are named in warnings, all are counted in f_ID[6].
+    # A cap of 1 sweep from zero impulses (no warm start) on a 5-cube stack at tolerance
+    # 1e-15: every step hits it; the first 10 are named in warnings, all are counted in
+    # f_ID[6].
     def test_cap_warnings(self):
         made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(5)])
         self.assertRanCleanly(made)
         r = run(deck("""
 fix             g all gravity 1.0 vector 0 0 -1
-fix             nscd all nscd/polyhedra tolerance 1e-12 max_iterations 2 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra tolerance 1e-15 max_iterations 1 warm_start no wall 0 0 0 0 0 1
 timestep        1e-3
 thermo_style    custom step f_nscd[6]
 thermo          50
 run             50
 """), workdir=made.workdir)
         self.assertRanCleanly(r)
-        named = r.output.count("hit the iteration cap 2, residual")
+        named = r.output.count("hit the iteration cap 1, residual")
         counted = r.thermo()["nscd[6]"][-1]
         print(f"iteration cap: {named} warnings, {counted:.0f} steps counted")
         self.assertEqual(named, 10)
@@ -370,6 +400,11 @@ class BadInput(DeckTestCase):
         self.check("overlap_recovery 2", "fix nscd/polyhedra (id nscd): value of 'overlap_recovery' must be in [0, 1], got 2")
         self.check("damping -1", "fix nscd/polyhedra (id nscd): value of 'damping' must be >= 0, got -1")
         self.check("\nfix_modify nscd damping", "fix_modify nscd/polyhedra (id nscd): missing value after 'damping'")
+        self.check("write_problems 10 problem.txt",
+                   "fix nscd/polyhedra (id nscd): the file name of 'write_problems' must contain a '*' "
+                   "(replaced by the step), got 'problem.txt'")
+        self.check("write_problems 0 p_*.txt",
+                   "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be >= 1, got 0")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
