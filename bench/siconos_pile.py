@@ -4,13 +4,15 @@ of a settled pile of 915 grains (the paper's N_p), written by fix nscd/polyhedra
 (write_problems), converted to FCLib HDF5 files and solved cold by both (bench/fclib_nscd).
 
     bench/siconos_pile.py [--liggghts build/liggghts] [--fclib-nscd build/bench/fclib_nscd]
-                          [--grains 915] [--settle 8000] [--every 2000] [--keep DIR]
+                          [--grains 915] [--settle 10000] [--relax 4000] [--every 7000]
+                          [--keep DIR]
 
 The pile: Table 1 grains (a in [0.8, 1], b/a 0.8, c/a 0.6, N_v 20, r_p 0.1, rho_p 1.5) in
 layers of up to 221 (create_grains layer, two staggered lattices 2 a_max apart) 4.6 a_max
 apart in a 22 x 22 box, frictional floor (mu 0.5), frictionless side walls, g = 1,
-h = 1e-3, deposited and settled for --settle steps. The problems of every --every steps
-are written; the last two (settled) are compared. For each: Siconos with its defaults
+h = 1e-3, deposited for --settle steps, then relaxed with `damping 2` for --relax steps.
+The problems of every --every steps are written; the last two are compared (by default
+steps 7000, the pile still moving, and 14000, settled). For each: Siconos with its defaults
 (tolerance 1e-4, 1000 iterations), then our solver until it reaches Siconos' final
 error, in several orders and stopping measures; the ratio is our time over Siconos'."""
 
@@ -42,8 +44,10 @@ compute         ket all ke
 variable        ke equal c_ket+c_rot[1]
 compute         zmax all reduce max z
 thermo_style    custom step f_nscd[1] f_nscd[3] f_nscd[4] v_ke c_zmax
-thermo          {every}
+thermo          1000
 run             {settle}
+fix_modify      nscd damping 2
+run             {relax}
 """
 
 
@@ -52,8 +56,9 @@ def main():
     parser.add_argument("--liggghts", default=os.path.join(HERE, "..", "build", "liggghts"))
     parser.add_argument("--fclib-nscd", default=os.path.join(HERE, "..", "build", "bench", "fclib_nscd"))
     parser.add_argument("--grains", type=int, default=915)
-    parser.add_argument("--settle", type=int, default=8000)
-    parser.add_argument("--every", type=int, default=2000)
+    parser.add_argument("--settle", type=int, default=10000)
+    parser.add_argument("--relax", type=int, default=4000)
+    parser.add_argument("--every", type=int, default=7000)
     parser.add_argument("--keep", help="directory for the deck, problems and FCLib files")
     args = parser.parse_args()
     work = args.keep or tempfile.mkdtemp(prefix="wiregrain-siconos-")
@@ -64,12 +69,13 @@ def main():
         layers.append(f"create_grains   1 {n} layer inside {z} seed {seed}")
         left, z, seed = left - n, z + 4.6, seed + 2
     with open(os.path.join(work, "in.pile"), "w") as f:
-        f.write(DECK.format(top=z + 4, layers="\n".join(layers), every=args.every, settle=args.settle))
+        f.write(DECK.format(top=z + 4, layers="\n".join(layers), every=args.every, settle=args.settle,
+                            relax=args.relax))
     out = subprocess.run([args.liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode()
-    table = re.search(r"^\s*Step .*?(?=^Loop time)", out, re.M | re.S)
+    tables = re.findall(r"^\s*Step .*?(?=^Loop time)", out, re.M | re.S)
     print(f"pile of {args.grains} grains in {work}:")
-    print(table.group(0) if table else out[-3000:])
+    print("".join(tables) if tables else out[-3000:])
     problems = sorted(glob.glob(os.path.join(work, "problem_*.txt")),
                       key=lambda p: int(re.search(r"problem_(\d+)", p).group(1)))[-2:]
     for text in problems:

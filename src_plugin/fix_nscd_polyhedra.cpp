@@ -87,9 +87,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       margin_(0.0),
       theta_(1.0),
       overlap_recovery_(1.0),
+      overlap_speed_(0.1),
       damping_(0.0),
       max_iterations_(1000),
-      order_(2),
+      order_(0),
       convergence_(0),
       seed_(1),
       warm_start_(true),
@@ -134,6 +135,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       theta_ = args.value_in_range(key, 0.5, 1.0, "[0.5, 1]");
     } else if (key == "overlap_recovery") {
       overlap_recovery_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+    } else if (key == "overlap_speed") {
+      overlap_speed_ = args.value_nonnegative(key);
     } else if (key == "damping") {
       damping_ = args.value_nonnegative(key);
     } else if (key == "write_problems") {
@@ -459,6 +462,7 @@ void FixNSCDPolyhedra::solve_step() {
   options.restitution = restitution_;
   options.theta = theta_;
   options.overlap_recovery = overlap_recovery_;
+  options.overlap_speed = overlap_speed_;
   options.measure = convergence_ == 0 ? wiregrain::ConvergenceMeasure::natural_map
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
@@ -552,16 +556,19 @@ void FixNSCDPolyhedra::write_problem(const wiregrain::NscdStep &step, const wire
   wiregrain::write_reduced_problem(out, wiregrain::assemble_reduced(step, options), title);
 }
 
-// fix_modify ID damping γ | overlap_recovery β | tolerance t | friction μ (grain–grain),
+// fix_modify ID damping γ | overlap_recovery β | overlap_speed v | tolerance t | friction μ,
 // e.g. to relax a deposit with damping and go on without it, keeping the warm start.
 int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
   if (narg < 1) return 0;
   const std::string key = arg[0];
-  if (key != "damping" && key != "overlap_recovery" && key != "tolerance" && key != "friction") return 0;
+  if (key != "damping" && key != "overlap_recovery" && key != "overlap_speed" && key != "tolerance" &&
+      key != "friction")
+    return 0;
   wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, 2), arg, 0);
   args.next_keyword();
   if (key == "damping") damping_ = args.value_nonnegative(key);
   else if (key == "overlap_recovery") overlap_recovery_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+  else if (key == "overlap_speed") overlap_speed_ = args.value_nonnegative(key);
   else if (key == "tolerance") tolerance_ = args.value_positive(key);
   else friction_ = args.value_nonnegative(key);
   return 2;

@@ -3,8 +3,8 @@
    Gauss–Seidel over contact points (DESIGN.md section 3; core/nscd_solver.h).
 
    fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
-       [order random|forward|alternating] [seed 1] [warm_start yes|no] [restitution 0]
-       [theta 1] [overlap_recovery 1] [damping 0]
+       [order forward|alternating|random] [seed 1] [warm_start yes|no] [restitution 0]
+       [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
        [margin 0] [write_problems N file_*.txt] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
@@ -89,7 +89,7 @@ class FixNSCDPolyhedra : public Fix {
   };
 
  private:
-  double friction_, tolerance_, restitution_, margin_, theta_, overlap_recovery_, damping_;
+  double friction_, tolerance_, restitution_, margin_, theta_, overlap_recovery_, overlap_speed_, damping_;
   int max_iterations_, order_, convergence_;
   long seed_;
   bool warm_start_;

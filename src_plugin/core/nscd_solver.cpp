@@ -47,6 +47,9 @@ void NscdOptions::validate() const {
     throw InvalidArgument("restitution", "restitution must be in [0, 1], got " +
                                              format_number(restitution));
   }
+  if (!(overlap_speed >= 0.0)) {
+    throw InvalidArgument("overlap_speed", "overlap_speed must be >= 0, got " + format_number(overlap_speed));
+  }
   if (!(overlap_recovery >= 0.0 && overlap_recovery <= 1.0)) {
     throw InvalidArgument("overlap_recovery", "overlap_recovery must be in [0, 1], got " +
                                                   format_number(overlap_recovery));
@@ -269,7 +272,9 @@ class BodyContactOperator final : public ContactOperator {
       const double g = contact.gap;
       const double un_begin = u_begin[0];
       start_normal_velocity_[c] = un_begin;
-      const double g_target = g < 0.0 ? options.overlap_recovery * g : g;
+      // an overlap is removed by β of it per step, at most at the speed overlap_speed
+      const double g_target =
+          g < 0.0 ? std::max(options.overlap_recovery * g, -options.overlap_speed * h) : g;
       double shift = (g_target / h + (1.0 - theta) * un_begin) / theta;
       if (options.restitution > 0.0 && un_begin < 0.0 && g + h * un_begin <= 0.0) {
         shift = std::min(shift, options.restitution * un_begin);

@@ -14,9 +14,11 @@
 // the predicted end-of-step gap g_c + h((1 − θ) u_n^k + θ u_n^{k+1}) must be ≥ 0, i.e.
 //     u_n^{k+1} + s_c ≥ 0,   s_c = (g_c / h + (1 − θ) u_n^k) / θ,
 // (for θ = 1: g + h u_n ≥ 0, the gap anticipation of the issue). An overlap (g < 0) is
-// removed only in part per step: g is replaced by β g, β = overlap_recovery ∈ [0, 1]
-// (1: the whole overlap in one step, pushing out at |g|/h; 0: overlaps are only kept
-// from growing). u_n^k = H V_k is the
+// removed only in part per step: g is replaced by max(β g, −v_o h), β = overlap_recovery
+// ∈ [0, 1] (1: the whole overlap in one step; 0: overlaps are only kept from growing),
+// v_o = overlap_speed ≥ 0 the largest push-out speed. The push-out speed is a real
+// velocity: without the cap an overlap of 0.04 at h = 1e-3 (a grain created across a
+// wall) would leave at 40. u_n^k = H V_k is the
 // normal velocity at the step start. With restitution e > 0, a contact that would close
 // within the step with its start velocity (u_n^k < 0 and g + h u_n^k ≤ 0) gets
 // Newton's impact law u_n^{k+1} ≥ −e u_n^k on top: s_c = min(s_c, e u_n^k). e = 0 (the
@@ -92,9 +94,10 @@ struct NscdOptions {
   double theta = 1.0;        // [0.5, 1]
   double restitution = 0.0;  // [0, 1]
   double overlap_recovery = 1.0;  // β ∈ [0, 1]: fraction of an overlap removed per step
+  double overlap_speed = 1e300;   // v_o ≥ 0: largest push-out speed (none by default here)
 
   // InvalidArgument("tolerance" | "max_iterations" | "relaxation" | "theta" |
-  // "restitution" | "overlap_recovery", ...) on values outside the ranges above.
+  // "restitution" | "overlap_recovery" | "overlap_speed", ...) on values outside the ranges.
   void validate() const;
 };
 

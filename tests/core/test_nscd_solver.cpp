@@ -502,6 +502,8 @@ TEST(NscdOptions, BadInput) {
   options = NscdOptions();
   expect_argument("overlap_recovery", [&] { options.overlap_recovery = 1.5; options.validate(); });
   options = NscdOptions();
+  expect_argument("overlap_speed", [&] { options.overlap_speed = -1.0; options.validate(); });
+  options = NscdOptions();
   expect_argument("max_iterations", [&] { options.max_iterations = 0; options.validate(); });
   options = NscdOptions();
   expect_argument("time_step", [&] {

@@ -270,7 +270,7 @@ run             100
         made = grains_data("cube 1.0", [(0, 0, 0.49, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         r = run(deck("""
-fix             nscd all nscd/polyhedra overlap_recovery 0.5 tolerance 1e-12 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra overlap_recovery 0.5 overlap_speed 1e9 tolerance 1e-12 wall 0 0 0 0 0 1
 timestep        1e-3
 variable        vz1 equal vz[1]
 thermo_style    custom step f_nscd[4] v_vz1
@@ -284,6 +284,27 @@ run             3
               f"(the recovery speed 0.5 * 0.01 / h = 5 is kept: no gravity)")
         self.assertLess(np.max(np.abs(t["nscd[4]"] - [0.01, 0.005, 0, 0])), 1e-12)
         self.assertLess(np.max(np.abs(t["vz1"] - 5.0)), 1e-9)
+
+    def test_overlap_speed(self):
+        # the default push-out speed cap 0.1: a cube created 0.05 into the floor leaves at 0.1
+        # (not 0.05 / h = 50) and is out after 0.5 time units; then it rests (no gravity: at 0.1)
+        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             nscd all nscd/polyhedra tolerance 1e-12 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        vz1 equal vz[1]
+thermo_style    custom step f_nscd[4] v_vz1
+thermo_modify   format float %.15g
+thermo          100
+run             600
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        print(f"overlap_speed 0.1: overlaps {t['nscd[4]']}, vz {t['vz1'][-1]:.12f}")
+        self.assertLess(np.max(np.abs(t["nscd[4]"][:6] - (0.05 - 0.1 * 1e-3 * t["Step"][:6]))), 1e-12)
+        self.assertLess(t["nscd[4]"][-1], 1e-15)
+        self.assertLess(np.max(np.abs(t["vz1"] - 0.1)), 1e-12)
 
 
 class WriteProblems(DeckTestCase):
@@ -398,6 +419,7 @@ class BadInput(DeckTestCase):
         self.check("max_iterations 0", "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be >= 1, got 0")
         self.check("theta 0.4", "fix nscd/polyhedra (id nscd): value of 'theta' must be in [0.5, 1], got 0.4")
         self.check("overlap_recovery 2", "fix nscd/polyhedra (id nscd): value of 'overlap_recovery' must be in [0, 1], got 2")
+        self.check("overlap_speed -1", "fix nscd/polyhedra (id nscd): value of 'overlap_speed' must be >= 0, got -1")
         self.check("damping -1", "fix nscd/polyhedra (id nscd): value of 'damping' must be >= 0, got -1")
         self.check("\nfix_modify nscd damping", "fix_modify nscd/polyhedra (id nscd): missing value after 'damping'")
         self.check("write_problems 10 problem.txt",
