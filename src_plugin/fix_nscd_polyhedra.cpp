@@ -172,7 +172,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)walls_.size() + 2;
+  size_vector = 6 + 3 * (int)walls_.size() + 3;
   wall_forces_.assign(3 * walls_.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -342,16 +342,18 @@ void FixNSCDPolyhedra::solve_step() {
   for (const Grain &g : grains) {
     posed.emplace_back(library[g.shape].shape, g.x, g.q);
     const Eigen::Matrix3d r = g.q.toRotationMatrix();
+    // optional viscous damping at rate γ, implicit: m (v_{k+1} − v_k) = h F − h γ m v_{k+1} + Hᵀ r,
+    // i.e. the free velocity (v_k + h F/m)/(1 + h γ) and the mass (1 + h γ) m seen by the
+    // impulses (so a grain at rest still presses with its full weight); the same for L
+    const double damped = 1.0 / (1.0 + h * damping_);
     wiregrain::NscdBody b;
-    b.inverse_mass = 1.0 / g.mass;
-    b.inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
+    b.inverse_mass = damped / g.mass;
+    b.inverse_inertia = damped * (r * g.inertia.cwiseInverse().asDiagonal() * r.transpose());
     const Eigen::Matrix3d inertia_world = r * g.inertia.asDiagonal() * r.transpose();
     b.velocity_begin = g.v;
     b.angular_velocity_begin = g.w;
-    // optional viscous damping at rate γ, implicit: v_free = (v + h F/m) / (1 + h γ), same for L
-    const double damped = 1.0 / (1.0 + h * damping_);
     b.velocity_free = damped * (g.v + h * ftm2v * g.f / g.mass);
-    b.angular_velocity_free = damped * (b.inverse_inertia * (inertia_world * g.w + h * ftm2v * g.t));
+    b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.w + h * ftm2v * g.t);
     step.bodies.push_back(b);
     const double radius = library[g.shape].bounding_radius;
     largest_radius = std::max(largest_radius, radius);
@@ -521,6 +523,7 @@ void FixNSCDPolyhedra::solve_step() {
   stats_[1] = report.residual;
   stats_[2] = ncontacts;
   stats_[3] = result.max_overlap;
+  largest_overlap_ = std::max(largest_overlap_, result.max_overlap);
   stats_[4] = result.max_predicted_penetration;
   if (report.hit_iteration_cap) {
     stats_[5] += 1.0;
@@ -577,7 +580,8 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
 double FixNSCDPolyhedra::compute_vector(int k) {
   if (k < 6) return stats_[k];
   if (k < 6 + (int)wall_forces_.size()) return wall_forces_[k - 6];
-  return timings_[k - 6 - (int)wall_forces_.size()];
+  if (k < 8 + (int)wall_forces_.size()) return timings_[k - 6 - (int)wall_forces_.size()];
+  return largest_overlap_;
 }
 
 // restart: whether a solve happened, the wall positions and the warm-start impulses

@@ -26,7 +26,8 @@
    Outputs: vector [sweeps, residual, contact points, largest overlap at the step start,
    largest predicted penetration, steps that hit the iteration cap, then for each wall
    the force the grains exert on it (x, y, z), then the wall-clock seconds of the last
-   step spent in gathering + contact detection and in the solve]; per-atom array [contact force (3),
+   step spent in gathering + contact detection and in the solve, then the largest overlap
+   of all steps since the fix was defined]; per-atom array [contact force (3),
    contact torque about the centre (3)] of each grain (impulses / h). */
 
 #ifdef FIX_CLASS
@@ -98,6 +99,7 @@ class FixNSCDPolyhedra : public Fix {
   bool solved_once_;                // a contact solve happened (setup of the first run)
   std::map<std::pair<int, int>, std::vector<StoredImpulse> > impulses_;
   double stats_[6];
+  double largest_overlap_ = 0.0;         // over all steps since the fix was made
   double timings_[2];                     // wall-clock seconds of the last step: gather+detection, solve
   std::vector<double> wall_forces_;       // 3 per wall
   double **contact_force_;                // per grain: force, torque

@@ -266,6 +266,25 @@ run             100
         self.assertLess(error, 1e-12)
         self.assertAlmostEqual(free, -1.0, delta=1e-12)
 
+    def test_damping_keeps_the_weight(self):
+        # damping acts on motion only: a cube resting on the floor with damping 1000 (h γ = 1)
+        # still presses with m g (the impulses see the damped mass (1 + h γ) m)
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra damping 1000 tolerance 1e-12 wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[9]
+thermo_modify   format float %.15g
+thermo          10
+run             50
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        floor = -r.thermo()["nscd[9]"]
+        print(f"damping 1000, resting box (m g = 0.72): floor force {floor[-1]:.15f}")
+        self.assertLess(np.max(np.abs(floor - 0.72)), 1e-12)
+
     def test_overlap_recovery(self):
         made = grains_data("cube 1.0", [(0, 0, 0.49, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
