@@ -551,8 +551,8 @@ void FixNSCDPolyhedra::write_problem(const wiregrain::NscdStep &step, const wire
   std::string path = problem_file_;
   path.replace(path.find('*'), 1, std::to_string(update->ntimestep));
   std::ofstream out(path);
-  if (!out)
-    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, "cannot open '" + path + "' for writing");
+  if (!out)  // rank 0 alone writes: error->one, not style_error's error->all
+    error->one(FLERR, ("fix nscd/polyhedra (id " + std::string(id) + "): cannot open '" + path + "' for writing").c_str());
   char title[256];
   snprintf(title, sizeof(title), "fix nscd/polyhedra (id %s) step " BIGINT_FORMAT ": %d grains, %d contact points, h = %g",
            id, update->ntimestep, (int)step.bodies.size(), (int)step.contacts.size(), step.time_step);

@@ -444,6 +444,8 @@ class BadInput(DeckTestCase):
         self.check("write_problems 10 problem.txt",
                    "fix nscd/polyhedra (id nscd): the file name of 'write_problems' must contain a '*' "
                    "(replaced by the step), got 'problem.txt'")
+        self.check("write_problems 1 no_such_directory/p_*.txt",
+                   "fix nscd/polyhedra (id nscd): cannot open 'no_such_directory/p_0.txt' for writing")
         self.check("write_problems 0 p_*.txt",
                    "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be >= 1, got 0")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
