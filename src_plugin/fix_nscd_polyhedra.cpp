@@ -331,6 +331,17 @@ void FixNSCDPolyhedra::solve_step() {
     g.inertia = vec(r + 22);
   }
   std::sort(grains.begin(), grains.end(), [](const Grain &a, const Grain &b) { return a.tag < b.tag; });
+  // every rank holds the same grains, so error->all is safe here
+  for (const Grain &g : grains) {
+    const char *what = !(g.x.allFinite() && g.q.coeffs().allFinite()) ? "position or orientation"
+                       : !(g.v.allFinite() && g.w.allFinite())         ? "velocity"
+                       : !(g.f.allFinite() && g.t.allFinite())         ? "force or torque (from another style)"
+                                                                        : nullptr;
+    if (what)
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 "grain " + std::to_string(g.tag) + " has a non-finite " + what + " at step " +
+                                     std::to_string(update->ntimestep));
+  }
 
   // 2. bodies: free velocities after the external forces and torques of this step
   const wiregrain::ShapeLibrary &library = grains_->shapes();
@@ -469,7 +480,13 @@ void FixNSCDPolyhedra::solve_step() {
                     : convergence_ == 1 ? wiregrain::ConvergenceMeasure::increment
                                         : wiregrain::ConvergenceMeasure::increment_then_natural_map;
   if (problem_every_ > 0 && update->ntimestep % problem_every_ == 0 && comm->me == 0) write_problem(step, options);
-  const wiregrain::NscdStepResult result = wiregrain::solve_nscd_step(step, options, warm);
+  wiregrain::NscdStepResult result;
+  try {
+    result = wiregrain::solve_nscd_step(step, options, warm);
+  } catch (const std::exception &e) {  // the same on every rank (replicated solve)
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                               "contact solve failed at step " + std::to_string(update->ntimestep) + ": " + e.what());
+  }
   timings_[0] = detected - start;
   timings_[1] = MPI_Wtime() - detected;
 

@@ -432,6 +432,20 @@ class BadInput(DeckTestCase):
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
         self.assertStopsWith(run(deck(f"fix nscd all nscd/polyhedra {options}\nrun 1"), workdir=made.workdir), message)
 
+    def test_non_finite_state(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0), (3, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        with open(made.path("grains.data")) as f:
+            lines = f.read().splitlines()
+        k = next(i for i, line in enumerate(lines) if line.startswith("Velocities")) + 3   # grain 2
+        words = lines[k].split()
+        words[1] = "nan"
+        lines[k] = " ".join(words)
+        with open(made.path("grains.data"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+        self.assertStopsWith(run(deck("fix nscd all nscd/polyhedra wall 0 0 0 0 0 1\nrun 1"), workdir=made.workdir),
+                             "fix nscd/polyhedra (id nscd): grain 2 has a non-finite velocity at step 0")
+
     def test_messages(self):
         self.check("friction -0.1", "fix nscd/polyhedra (id nscd): value of 'friction' must be >= 0, got -0.1")
         self.check("tolerance -1e-4", "fix nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got -1e-4")
