@@ -27,6 +27,7 @@
 #include "core/rigid_body.h"
 #include "core/shape_library.h"
 #include "plugin_args.h"
+#include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -236,11 +237,8 @@ int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
 }
 
 void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = extra[nlocal][m++];
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth);
+  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = record[k];
 }
 
 int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 7; }

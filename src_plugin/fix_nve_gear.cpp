@@ -10,6 +10,7 @@
 
 #include "core/gear_integrator.h"
 #include "plugin_args.h"
+#include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -167,11 +168,8 @@ int FixNVEGear::pack_restart(int i, double *buf) {
 }
 
 void FixNVEGear::unpack_restart(int nlocal, int nth) {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = extra[nlocal][m++];
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth);
+  for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = record[k];
 }
 
 int FixNVEGear::size_restart(int /*nlocal*/) { return kPerAtom + 1; }

@@ -7,6 +7,7 @@
 #include "error.h"
 #include "memory.h"
 
+#include "plugin_comm.h"
 #include "core/soft_contact.h"
 
 using namespace LAMMPS_NS;
@@ -139,10 +140,7 @@ int FixWireContactHistory::pack_restart(int i, double *buf) {
 }
 
 void FixWireContactHistory::unpack_restart(int nlocal, int nth) {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  unpack(nlocal, &extra[nlocal][m + 1]);
+  unpack(nlocal, wiregrain_lmp::fix_restart_record(atom, nlocal, nth));
 }
 
 int FixWireContactHistory::size_restart(int nlocal) { return 2 + count_[nlocal] * (1 + kValues); }

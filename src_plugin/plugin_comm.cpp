@@ -41,4 +41,10 @@ void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, c
   dv[2] = pbc[2] * h_rate[2];
 }
 
+const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth) {
+  const double *record = atom->extra[nlocal];
+  for (int i = 0; i < nth; i++) record += static_cast<int>(record[0]);
+  return record + 1;
+}
+
 }  // namespace wiregrain_lmp

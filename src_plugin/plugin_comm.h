@@ -5,6 +5,7 @@
 namespace LAMMPS_NS {
 class LAMMPS;
 class Domain;
+class Atom;
 }
 
 namespace wiregrain_lmp {
@@ -23,6 +24,10 @@ void periodic_image_shift(const LAMMPS_NS::Domain *domain, int pbc_flag, const i
 // Velocity added to a periodic image in a deforming box (fix deform remap v).
 void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, const double *h_rate,
                               double dv[3]);
+
+// A fix's per-atom restart record of atom nlocal (Fix::unpack_restart(nlocal, nth)): the
+// values after its length word, skipping the records of the nth fixes stored before it.
+const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth);
 
 }  // namespace wiregrain_lmp
 
