@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "core/nscd_solver.h"
+#include "core/nscd/nscd_solver.h"
 
 namespace wiregrain::bench {
 

@@ -51,8 +51,8 @@
 #include <string>
 #include <vector>
 
-#include "core/nscd_solver.h"
-#include "core/reduced_problem_io.h"
+#include "core/nscd/nscd_solver.h"
+#include "core/nscd/reduced_problem_io.h"
 #include "fclib_io.h"
 
 using namespace wiregrain;

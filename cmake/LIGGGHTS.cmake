@@ -120,8 +120,19 @@ endif()
 
 # Append the plugin style headers to the generated style_*.h. A header registers a style
 # when it holds the class macro block (e.g. "#ifdef FIX_CLASS") as LIGGGHTS' own do.
-file(GLOB PLUGIN_STYLE_HEADERS CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.h")
-file(GLOB PLUGIN_STYLE_SOURCES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.cpp")
+# The style files live in src_plugin/<subsystem>/ (common, grains, wire, coupling, output);
+# core/ is the physics library, built on its own. Every subsystem folder is on the include
+# path, so style files include each other by file name as LIGGGHTS' own do.
+file(GLOB_RECURSE PLUGIN_STYLE_HEADERS CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.h")
+file(GLOB_RECURSE PLUGIN_STYLE_SOURCES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.cpp")
+list(FILTER PLUGIN_STYLE_HEADERS EXCLUDE REGEX "/src_plugin/core/")
+list(FILTER PLUGIN_STYLE_SOURCES EXCLUDE REGEX "/src_plugin/core/")
+set(PLUGIN_STYLE_DIRS "")
+foreach(_h IN LISTS PLUGIN_STYLE_HEADERS)
+  get_filename_component(_d "${_h}" DIRECTORY)
+  list(APPEND PLUGIN_STYLE_DIRS "${_d}")
+endforeach()
+list(REMOVE_DUPLICATES PLUGIN_STYLE_DIRS)
 set(WIREGRAIN_REGISTERED_STYLES "")
 foreach(_entry IN LISTS _style_classes)
   string(REPLACE ":" ";" _pair "${_entry}")
@@ -154,7 +165,8 @@ file(GLOB LIGGGHTS_UPSTREAM_SOURCES "${LIGGGHTS_STAGED_SRC}/*.cpp")
 
 # Upstream code is compiled as upstream compiles it, with its warnings silenced.
 add_library(liggghts_upstream OBJECT ${LIGGGHTS_UPSTREAM_SOURCES})
-target_include_directories(liggghts_upstream PUBLIC "${LIGGGHTS_STAGED_SRC}" "${CMAKE_SOURCE_DIR}/src_plugin")
+target_include_directories(liggghts_upstream PUBLIC "${LIGGGHTS_STAGED_SRC}" "${CMAKE_SOURCE_DIR}/src_plugin"
+                           ${PLUGIN_STYLE_DIRS})
 target_link_libraries(liggghts_upstream PUBLIC MPI::MPI_CXX)
 target_compile_options(liggghts_upstream PRIVATE -funroll-loops -fstrict-aliasing -w)
 set_target_properties(liggghts_upstream PROPERTIES CXX_EXTENSIONS ON)

@@ -11,9 +11,9 @@
 #include <random>
 #include <vector>
 
-#include "core/contact_geometry.h"
-#include "core/convex_shape.h"
-#include "core/errors.h"
+#include "core/geometry/contact_geometry.h"
+#include "core/geometry/convex_shape.h"
+#include "core/common/errors.h"
 
 using namespace wiregrain;
 using Eigen::AngleAxisd;

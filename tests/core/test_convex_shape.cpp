@@ -10,8 +10,8 @@
 #include <string>
 #include <unistd.h>
 
-#include "core/convex_shape.h"
-#include "core/errors.h"
+#include "core/geometry/convex_shape.h"
+#include "core/common/errors.h"
 
 using namespace wiregrain;
 using Eigen::Matrix3d;

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <random>
 
-#include "core/coulomb_local.h"
-#include "core/errors.h"
+#include "core/nscd/coulomb_local.h"
+#include "core/common/errors.h"
 
 using namespace wiregrain;
 using Eigen::Matrix3d;

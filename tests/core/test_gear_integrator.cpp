@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/gear_integrator.h"
+#include "core/wire/gear_integrator.h"
 
 using namespace wiregrain;
 

@@ -26,10 +26,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/contact_geometry.h"
-#include "core/convex_shape.h"
-#include "core/nscd_solver.h"
-#include "core/rigid_body.h"
+#include "core/geometry/contact_geometry.h"
+#include "core/geometry/convex_shape.h"
+#include "core/nscd/nscd_solver.h"
+#include "core/nscd/rigid_body.h"
 
 using namespace wiregrain;
 using Eigen::Matrix3d;

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <random>
 
-#include "core/errors.h"
-#include "core/nscd_solver.h"
+#include "core/common/errors.h"
+#include "core/nscd/nscd_solver.h"
 
 using namespace wiregrain;
 using Eigen::Matrix3d;

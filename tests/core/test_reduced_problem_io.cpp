@@ -5,8 +5,8 @@
 #include <random>
 #include <sstream>
 
-#include "core/errors.h"
-#include "core/reduced_problem_io.h"
+#include "core/common/errors.h"
+#include "core/nscd/reduced_problem_io.h"
 
 using namespace wiregrain;
 

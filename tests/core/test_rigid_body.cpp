@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/errors.h"
-#include "core/rigid_body.h"
+#include "core/common/errors.h"
+#include "core/nscd/rigid_body.h"
 
 using namespace wiregrain;
 using Eigen::AngleAxisd;

@@ -19,7 +19,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/segment_distance.h"
+#include "core/geometry/segment_distance.h"
 
 using namespace wiregrain;
 using Eigen::Vector3d;

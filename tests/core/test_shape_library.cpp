@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "core/errors.h"
-#include "core/shape_library.h"
+#include "core/common/errors.h"
+#include "core/geometry/shape_library.h"
 
 using namespace wiregrain;
 

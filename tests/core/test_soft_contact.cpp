@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/errors.h"
-#include "core/soft_contact.h"
+#include "core/common/errors.h"
+#include "core/contact/soft_contact.h"
 
 using namespace wiregrain;
 using Eigen::Vector3d;

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/gear_integrator.h"
-#include "core/wire_elasticity.h"
+#include "core/common/errors.h"
+#include "core/wire/gear_integrator.h"
+#include "core/wire/wire_elasticity.h"
 
 using namespace wiregrain;
 using Eigen::Vector3d;

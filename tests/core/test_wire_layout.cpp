@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/wire_layout.h"
+#include "core/common/errors.h"
+#include "core/wire/wire_layout.h"
 
 using namespace wiregrain;
 using Eigen::Vector3d;

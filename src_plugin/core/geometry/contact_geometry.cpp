@@ -1,0 +1,1203 @@
+// Contact geometry of spheropolyhedra, walls and wire segments: GJK distance with the
+// signed-volumes sub-simplex solver, separating-axis penetration depth, closest-feature
+// contact manifolds. See contact_geometry.h and docs/core_contact.md.
+#include "core/geometry/contact_geometry.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "core/common/errors.h"
+
+namespace wiregrain {
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Cores closer than this (relative to the size of the configuration) are "nearly
+// touching": the direction of the GJK closest-point difference, whose rounding is
+// ~1e-16 × |x|, is then worse than ~1e-8 rad, and the normal is taken from the SAT unless
+// the GJK direction separates the cores more.
+constexpr double kNearTouching = 1e-8;
+// GJK: the origin counts as reached (cores touch or overlap) when |v| is below this
+// times the size; the iteration stops when the support point improves the bound by less
+// than this (relative to |v| and to the size).
+constexpr double kGjkOrigin = 1e-14;
+constexpr double kGjkProgress = 1e-15;
+constexpr int kGjkMaxIterations = 200;
+// Clipped polygon vertices closer than this times the size are merged; a vertex this
+// close to the line through its neighbours is dropped; clipping treats points this far
+// outside a polygon edge as on it; vertices this close to a supporting plane belong to
+// the support set.
+constexpr double kMergeTolerance = 1e-10;
+// Edge pairs whose cross product is below this (relative to the edge lengths) are
+// parallel: their separating axis coincides with a face normal (tested anyway).
+constexpr double kParallelEdges = 1e-12;
+
+std::string number(double x) {
+  std::ostringstream s;
+  s.precision(12);
+  s << x;
+  return s.str();
+}
+
+bool finite(const Vector3d& v) { return v.allFinite(); }
+
+bool same_sign(double a, double b) { return (a > 0.0 && b > 0.0) || (a < 0.0 && b < 0.0); }
+
+double cross2(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+void check_options(const ContactOptions& options) {
+  if (!(options.angle_tolerance >= 0.0 && options.angle_tolerance <= 0.5))
+    throw InvalidArgument("angle_tolerance", "angle_tolerance must be in [0, 0.5] rad, got " +
+                                                 number(options.angle_tolerance));
+  if (options.max_points < 0)
+    throw InvalidArgument("max_points", "max_points must be >= 0 (0: no limit), got " +
+                                            std::to_string(options.max_points));
+}
+
+void check_not_nan(const char* name, double value) {
+  if (std::isnan(value))
+    throw InvalidArgument(name, std::string(name) + " must be a number (±inf allowed), got nan");
+}
+
+void check_finite(const char* name, const Vector3d& value) {
+  if (!finite(value))
+    throw InvalidArgument(name, std::string(name) + " must have finite coordinates");
+}
+
+// ---------------------------------------------------------------------------------------
+// Convex sets seen by GJK through their support points (vertex indices).
+
+struct PolytopeSet {
+  const PosedShape* shape;
+  int support(const Vector3d& d) const { return shape->support_vertex(d); }
+  const Vector3d& point(int i) const { return shape->vertices()[i]; }
+};
+
+struct SegmentSet {
+  std::array<Vector3d, 2> end;
+  int support(const Vector3d& d) const { return d.dot(end[1]) > d.dot(end[0]) ? 1 : 0; }
+  const Vector3d& point(int i) const { return end[i]; }
+};
+
+// ---------------------------------------------------------------------------------------
+// Signed-volumes sub-simplex solver (Montanari, Petrinic & Barbieri 2017). Given the
+// points s of a simplex (1 to 4 points of the Minkowski difference), find the point v of
+// their convex hull nearest to the origin, the smallest sub-simplex containing it and
+// its barycentric weights. The barycentric coordinates of the origin's projection on the
+// simplex's affine hull are ratios of signed lengths/areas/volumes, computed in the
+// coordinate plane (line) where the simplex's projection is largest; if they all have
+// the sign of the total, the projection is inside. Otherwise every sub-simplex opposite
+// a vertex is solved (not only those Montanari's sign rule selects: a misclassified sign
+// cannot then lose the minimum) and the nearest wins.
+
+struct Reduced {
+  int n = 0;
+  std::array<int, 4> index{};       // into the input points
+  std::array<double, 4> lambda{};   // barycentric weights, sum 1
+  Vector3d v = Vector3d::Zero();
+};
+
+Reduced single(const Vector3d* s, int i) {
+  Reduced r;
+  r.n = 1;
+  r.index[0] = i;
+  r.lambda[0] = 1.0;
+  r.v = s[i];
+  return r;
+}
+
+const Reduced& nearer(const Reduced& a, const Reduced& b) {
+  return b.v.squaredNorm() < a.v.squaredNorm() ? b : a;
+}
+
+Reduced solve_segment(const Vector3d* s, int i0, int i1) {
+  const Vector3d& a = s[i0];
+  const Vector3d& b = s[i1];
+  const Vector3d t = b - a;
+  const double tt = t.squaredNorm();
+  if (tt > 0.0) {
+    // projection of the origin on the line: p0 = a − (a·t / t·t) t
+    const Vector3d p0 = a - (a.dot(t) / tt) * t;
+    int I = 0;
+    t.cwiseAbs().maxCoeff(&I);
+    const double mu = a[I] - b[I];
+    const double c_a = p0[I] - b[I];  // weight of a times mu
+    const double c_b = a[I] - p0[I];  // weight of b times mu
+    if (same_sign(mu, c_a) && same_sign(mu, c_b)) {
+      Reduced r;
+      r.n = 2;
+      r.index = {i0, i1, 0, 0};
+      r.lambda = {c_a / mu, c_b / mu, 0.0, 0.0};
+      r.v = r.lambda[0] * a + r.lambda[1] * b;
+      return r;
+    }
+  }
+  return nearer(single(s, i0), single(s, i1));
+}
+
+Reduced solve_triangle(const Vector3d* s, int i0, int i1, int i2) {
+  const Vector3d& a = s[i0];
+  const Vector3d& b = s[i1];
+  const Vector3d& c = s[i2];
+  const Vector3d n = (b - a).cross(c - a);
+  const double nn = n.squaredNorm();
+  if (nn > 0.0) {
+    const Vector3d p0 = (a.dot(n) / nn) * n;  // origin projected on the plane
+    int J = 0;
+    n.cwiseAbs().maxCoeff(&J);
+    const int k = (J + 1) % 3, l = (J + 2) % 3;  // signed area in (k, l) has the sign of n_J
+    const auto area = [k, l](const Vector3d& p, const Vector3d& q, const Vector3d& r) {
+      return (q[k] - p[k]) * (r[l] - p[l]) - (r[k] - p[k]) * (q[l] - p[l]);
+    };
+    const double mu = area(a, b, c);
+    const std::array<double, 3> C = {area(p0, b, c), area(a, p0, c), area(a, b, p0)};
+    if (same_sign(mu, C[0]) && same_sign(mu, C[1]) && same_sign(mu, C[2])) {
+      Reduced r;
+      r.n = 3;
+      r.index = {i0, i1, i2, 0};
+      r.lambda = {C[0] / mu, C[1] / mu, C[2] / mu, 0.0};
+      r.v = r.lambda[0] * a + r.lambda[1] * b + r.lambda[2] * c;
+      return r;
+    }
+  }
+  Reduced best = solve_segment(s, i1, i2);
+  best = nearer(best, solve_segment(s, i0, i2));
+  best = nearer(best, solve_segment(s, i0, i1));
+  return best;
+}
+
+Reduced solve_tetrahedron(const Vector3d* s) {
+  const Vector3d &a = s[0], &b = s[1], &c = s[2], &d = s[3];
+  // C_j = signed volume of the tetrahedron with vertex j replaced by the origin:
+  // vol(0,b,c,d) = b·(c×d), vol(a,0,c,d) = −a·(c×d), vol(a,b,0,d) = a·(b×d),
+  // vol(a,b,c,0) = −a·(b×c); their sum is vol(a,b,c,d).
+  const Vector3d cxd = c.cross(d);
+  const std::array<double, 4> C = {b.dot(cxd), -a.dot(cxd), a.dot(b.cross(d)),
+                                   -a.dot(b.cross(c))};
+  const double det = C[0] + C[1] + C[2] + C[3];
+  if (same_sign(det, C[0]) && same_sign(det, C[1]) && same_sign(det, C[2]) &&
+      same_sign(det, C[3])) {
+    Reduced r;
+    r.n = 4;
+    r.index = {0, 1, 2, 3};
+    for (int j = 0; j < 4; ++j) r.lambda[j] = C[j] / det;
+    r.v = Vector3d::Zero();  // the origin is inside
+    return r;
+  }
+  Reduced best = solve_triangle(s, 1, 2, 3);
+  best = nearer(best, solve_triangle(s, 0, 2, 3));
+  best = nearer(best, solve_triangle(s, 0, 1, 3));
+  best = nearer(best, solve_triangle(s, 0, 1, 2));
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------
+// GJK on the Minkowski difference A − B.
+
+struct GjkResult {
+  bool touching = false;   // |v| reached ~0: the cores touch or overlap
+  bool far = false;        // stopped by the early-exit bound
+  double distance = 0.0;   // |v| (far: the lower bound)
+  Vector3d point_a = Vector3d::Zero(), point_b = Vector3d::Zero();
+  double weight_b1 = 0.0;  // total barycentric weight of B's support index 1 (segments)
+  int iterations = 0;
+};
+
+template <class SetA, class SetB>
+GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, double size,
+              double early_exit_distance) {
+  std::array<Vector3d, 4> w;
+  std::array<int, 4> ia{}, ib{};
+  std::array<double, 4> lambda{};
+  int n = 0;
+
+  const auto support = [&](const Vector3d& v, int& i_a, int& i_b) {
+    i_a = A.support(-v);
+    i_b = B.support(v);
+    return Vector3d(A.point(i_a) - B.point(i_b));
+  };
+
+  Vector3d dir = initial_direction;
+  if (!(dir.squaredNorm() > 0.0)) dir = Vector3d::UnitX();
+  int a0 = 0, b0 = 0;
+  w[0] = support(dir, a0, b0);
+  ia[0] = a0;
+  ib[0] = b0;
+  lambda[0] = 1.0;
+  n = 1;
+  Vector3d v = w[0];
+
+  GjkResult result;
+  const double origin_tol = kGjkOrigin * size;
+  int iteration = 0;
+  for (; iteration < kGjkMaxIterations; ++iteration) {
+    const double vv = v.squaredNorm();
+    if (vv <= origin_tol * origin_tol) {
+      result.touching = true;
+      break;
+    }
+    int i_a = 0, i_b = 0;
+    const Vector3d p = support(v, i_a, i_b);
+    const double vp = v.dot(p);
+    // v·p/|v| is a lower bound of the distance, |v| an upper bound
+    if (early_exit_distance > 0.0 && vp > 0.0 &&
+        vp * vp > early_exit_distance * early_exit_distance * vv) {
+      result.far = true;
+      result.distance = vp / std::sqrt(vv);
+      break;
+    }
+    bool repeated = false;
+    for (int j = 0; j < n; ++j) repeated = repeated || (ia[j] == i_a && ib[j] == i_b);
+    if (repeated) break;  // the support is already a simplex vertex: v is optimal
+    const double norm_v = std::sqrt(vv);
+    if (vv - vp <= kGjkProgress * std::max(vv, norm_v * size)) break;
+
+    std::array<Vector3d, 4> trial = w;
+    trial[n] = p;
+    const int m = n + 1;
+    Reduced r;
+    if (m == 2)
+      r = solve_segment(trial.data(), 0, 1);
+    else if (m == 3)
+      r = solve_triangle(trial.data(), 0, 1, 2);
+    else
+      r = solve_tetrahedron(trial.data());
+    if (r.n == 4) {
+      result.touching = true;
+      ++iteration;
+      break;
+    }
+    if (!(r.v.squaredNorm() < vv)) break;  // no progress (rounding): keep the last simplex
+
+    std::array<int, 4> trial_ia = ia, trial_ib = ib;
+    trial_ia[n] = i_a;
+    trial_ib[n] = i_b;
+    for (int j = 0; j < r.n; ++j) {
+      w[j] = trial[r.index[j]];
+      ia[j] = trial_ia[r.index[j]];
+      ib[j] = trial_ib[r.index[j]];
+      lambda[j] = r.lambda[j];
+    }
+    n = r.n;
+    v = r.v;
+  }
+  result.iterations = iteration;
+  if (result.far) return result;
+  for (int j = 0; j < n; ++j) {
+    result.point_a += lambda[j] * A.point(ia[j]);
+    result.point_b += lambda[j] * B.point(ib[j]);
+    if (ib[j] == 1) result.weight_b1 += lambda[j];
+  }
+  result.distance = result.touching ? 0.0 : (result.point_b - result.point_a).norm();
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------
+// Topology helpers (body-frame indices; the PosedShape has the world coordinates).
+
+// The two faces of every edge, in the order of shape.edges(): every face loop's directed
+// edge i → j is recorded at vertex i as (j, face); edge (i, j) then finds its faces in
+// the short lists of i and j (a vertex has a handful of neighbours).
+std::vector<std::array<int, 2>> edge_faces(const ConvexShape& shape) {
+  const auto& faces = shape.faces();
+  const int n_v = static_cast<int>(shape.vertices().size());
+  std::vector<int> start(n_v + 1, 0);
+  for (const auto& f : faces)
+    for (int i : f.vertices) ++start[i + 1];
+  for (int i = 0; i < n_v; ++i) start[i + 1] += start[i];
+  std::vector<std::array<int, 2>> directed(start[n_v]);  // (head vertex, face) by tail
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    const auto& loop = faces[f].vertices;
+    const std::size_t m = loop.size();
+    for (std::size_t k = 0; k < m; ++k) directed[fill[loop[k]]++] = {loop[(k + 1) % m], f};
+  }
+  const auto face_of = [&](int tail, int head) {
+    for (int k = start[tail]; k < start[tail + 1]; ++k)
+      if (directed[k][0] == head) return directed[k][1];
+    return -1;
+  };
+  std::vector<std::array<int, 2>> out;
+  out.reserve(shape.edges().size());
+  for (const auto& e : shape.edges()) {
+    std::array<int, 2> f = {face_of(e[0], e[1]), face_of(e[1], e[0])};
+    if (f[0] < 0) f[0] = f[1];  // cannot happen for a closed hull; keeps the code total
+    if (f[1] < 0) f[1] = f[0];
+    out.push_back(f);
+  }
+  return out;
+}
+
+bool face_has_vertex(const ConvexShape::Face& face, int vertex) {
+  return std::find(face.vertices.begin(), face.vertices.end(), vertex) != face.vertices.end();
+}
+
+// h(n) = max over the core of n·x
+double support_value(const PosedShape& p, const Vector3d& n) {
+  double h = -kInf;
+  for (const auto& v : p.vertices()) h = std::max(h, n.dot(v));
+  return h;
+}
+
+// ---------------------------------------------------------------------------------------
+// Separating-axis test. depth(n) = h_A(n) + h_B(−n) is, for every unit n, an upper bound
+// of the penetration depth (the distance from the origin to the boundary of A − B when
+// the origin is inside); its minimum over the face normals of A − B is the depth. Those
+// normals are the face normals of A, minus those of B, and e_A × e_B for the edge pairs
+// whose arcs on the Gauss sphere cross (A's arc and the antipode of B's). For disjoint
+// cores the minimum is minus the largest separation along a candidate axis.
+
+struct SatAxis {
+  double depth = kInf;
+  Vector3d normal = Vector3d::UnitX();  // from A to B
+};
+
+// Gauss-map test for edge pairs (Gregorius, "The Separating Axis Test between Convex
+// Polyhedra", GDC 2013): the great arcs a1→a2 of A's edge and c→d = −b1→−b2 of B's
+// (each shorter than π) intersect iff c·(a2×a1) and d·(a2×a1) differ in sign, a1·(d×c)
+// and a2·(d×c) differ in sign, and c·(a2×a1), a2·(d×c) agree (same hemisphere).
+// Inclusive by a rounding margin: an extra candidate axis is harmless (it only gives an
+// upper bound of the depth).
+
+// An edge of a posed core, as the SAT needs it: a point, the direction, the normals of
+// its two faces (for B negated: the arc of −B) and their cross product.
+struct SatEdge {
+  Vector3d point, dir, n1, n2, n2_x_n1;
+};
+
+std::vector<SatEdge> sat_edges(const PosedShape& P, double sign) {
+  const auto faces = edge_faces(P.shape());
+  const auto& edges = P.shape().edges();
+  std::vector<SatEdge> out(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    SatEdge& e = out[i];
+    e.point = P.vertices()[edges[i][0]];
+    e.dir = P.vertices()[edges[i][1]] - e.point;
+    e.n1 = sign * P.face_normals()[faces[i][0]];
+    e.n2 = sign * P.face_normals()[faces[i][1]];
+    e.n2_x_n1 = e.n2.cross(e.n1);
+  }
+  return out;
+}
+
+SatAxis sat_polytopes(const PosedShape& A, const PosedShape& B) {
+  SatAxis best;
+  const auto consider = [&best](double depth, const Vector3d& n) {
+    if (depth < best.depth) {
+      best.depth = depth;
+      best.normal = n;
+    }
+  };
+  for (std::size_t f = 0; f < A.face_normals().size(); ++f) {
+    const Vector3d& n = A.face_normals()[f];
+    consider(A.face_offsets()[f] + support_value(B, -n), n);
+  }
+  for (std::size_t g = 0; g < B.face_normals().size(); ++g) {
+    const Vector3d& m = B.face_normals()[g];
+    consider(support_value(A, -m) + B.face_offsets()[g], -m);
+  }
+  // Edge pairs: the arcs (a1, a2) of A and (−b1, −b2) of B must cross (the test of
+  // arcs_cross, unrolled so that half the pairs stop after two dot products). For a
+  // crossing pair the two edges are the supports along the axis, so n·(p_A − p_B) is
+  // the depth; it never exceeds the depth from the full supports, which is computed
+  // only when the edge value would improve the minimum (and then counts).
+  constexpr double eps = 1e-14;
+  const std::vector<SatEdge> ea = sat_edges(A, 1.0), eb = sat_edges(B, -1.0);
+  for (const SatEdge& a : ea) {
+    for (const SatEdge& b : eb) {
+      const double cba = b.n1.dot(a.n2_x_n1), dba = b.n2.dot(a.n2_x_n1);
+      if (cba * dba > eps) continue;
+      const double adc = a.n1.dot(b.n2_x_n1), bdc = a.n2.dot(b.n2_x_n1);
+      if (adc * bdc > eps || cba * bdc < -eps) continue;
+      Vector3d axis = a.dir.cross(b.dir);
+      const double length = axis.norm();
+      if (!(length > kParallelEdges * a.dir.norm() * b.dir.norm())) continue;
+      axis /= length;
+      if (axis.dot(a.n1 + a.n2) < 0.0) axis = -axis;  // outward of A at its edge
+      if (axis.dot(a.point - b.point) >= best.depth) continue;
+      consider(support_value(A, axis) + support_value(B, -axis), axis);
+    }
+  }
+  return best;
+}
+
+double segment_support(const std::array<Vector3d, 2>& end, const Vector3d& n) {
+  return std::max(n.dot(end[0]), n.dot(end[1]));
+}
+
+// The same for a polytope P (as A) and a segment S (as B): the faces of P − S are the
+// faces of P and the products of an edge of P with the segment, for the edges whose arc
+// crosses the great circle ⟂ S (S has no faces).
+SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end) {
+  SatAxis best;
+  const auto consider = [&best](double depth, const Vector3d& n) {
+    if (depth < best.depth) {
+      best.depth = depth;
+      best.normal = n;
+    }
+  };
+  for (std::size_t f = 0; f < P.face_normals().size(); ++f) {
+    const Vector3d& n = P.face_normals()[f];
+    consider(P.face_offsets()[f] + segment_support(end, -n), n);
+  }
+  const Vector3d s = end[1] - end[0];
+  if (s.squaredNorm() > 0.0) {
+    const auto faces = edge_faces(P.shape());
+    const auto& edges = P.shape().edges();
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const Vector3d& n1 = P.face_normals()[faces[i][0]];
+      const Vector3d& n2 = P.face_normals()[faces[i][1]];
+      if (n1.dot(s) * n2.dot(s) > 1e-14 * s.squaredNorm()) continue;
+      const Vector3d dir = P.vertices()[edges[i][1]] - P.vertices()[edges[i][0]];
+      Vector3d axis = dir.cross(s);
+      const double length = axis.norm();
+      if (!(length > kParallelEdges * dir.norm() * s.norm())) continue;
+      axis /= length;
+      if (axis.dot(n1 + n2) < 0.0) axis = -axis;
+      consider(support_value(P, axis) + segment_support(end, -axis), axis);
+    }
+  }
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------
+// Features.
+
+// The feature of P that faces direction n (unit). The support set S (vertices within
+// `tight` of the supporting plane ⟂ n: one vertex, an edge or a face) contains the
+// deepest points; only features containing all of S are candidates, so the feature
+// always contains them: a face whose normal is within the angle tolerance of n, else an
+// edge perpendicular to n within the tolerance, else the support vertex.
+ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos_tol,
+                              double sin_tol, double tight) {
+  const int v = P.support_vertex(n);
+  const double h = n.dot(P.vertices()[v]);
+  std::vector<int> support_set;
+  for (int i = 0; i < static_cast<int>(P.vertices().size()); ++i)
+    if (n.dot(P.vertices()[i]) >= h - tight) support_set.push_back(i);
+
+  const auto& faces = P.shape().faces();
+  const auto best_face_containing = [&](const std::vector<int>& required, double& best_cos) {
+    int best = -1;
+    best_cos = -2.0;
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+      bool contains = true;
+      for (int i : required) contains = contains && face_has_vertex(faces[f], i);
+      if (!contains) continue;
+      const double c = P.face_normals()[f].dot(n);
+      if (c > best_cos) {
+        best_cos = c;
+        best = f;
+      }
+    }
+    return best;
+  };
+  double best_cos = -2.0;
+  int face = best_face_containing(support_set, best_cos);
+  if (face < 0) face = best_face_containing({v}, best_cos);  // S spans no face: rounding
+  if (face >= 0 && best_cos >= cos_tol) return {FeatureKind::face, face};
+
+  if (support_set.size() <= 2) {
+    const auto& edges = P.shape().edges();
+    int best_edge = -1;
+    double best_sin = kInf;
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      const bool at_v = edges[e][0] == v || edges[e][1] == v;
+      const bool is_s = support_set.size() == 2 &&
+                        std::min(support_set[0], support_set[1]) == edges[e][0] &&
+                        std::max(support_set[0], support_set[1]) == edges[e][1];
+      if (support_set.size() == 1 ? !at_v : !is_s) continue;
+      const Vector3d dir = P.vertices()[edges[e][1]] - P.vertices()[edges[e][0]];
+      const double s = std::abs(dir.dot(n)) / dir.norm();
+      if (s < best_sin) {
+        best_sin = s;
+        best_edge = e;
+      }
+    }
+    if (best_edge >= 0 && best_sin <= sin_tol) return {FeatureKind::edge, best_edge};
+  }
+  return {FeatureKind::vertex, v};
+}
+
+// Orthonormal basis (u, w) of the plane ⟂ n with u × w = n.
+void plane_basis(const Vector3d& n, Vector3d& u, Vector3d& w) {
+  int k = 0;
+  n.cwiseAbs().minCoeff(&k);
+  u = Vector3d::Unit(k).cross(n).normalized();
+  w = n.cross(u);
+}
+
+// The contact plane: 2D coordinates ⟂ n about an origin.
+struct ContactFrame {
+  Vector3d origin, n, u, w;
+  ContactFrame(const Vector3d& origin_, const Vector3d& n_) : origin(origin_), n(n_) {
+    plane_basis(n, u, w);
+  }
+  Vector2d project(const Vector3d& x) const {
+    const Vector3d d = x - origin;
+    return Vector2d(u.dot(d), w.dot(d));
+  }
+  Vector3d lift(const Vector2d& p) const { return origin + p.x() * u + p.y() * w; }
+  // The point of the plane {N·x = offset} on the line through x parallel to n.
+  Vector3d onto_plane(const Vector3d& x, const Vector3d& N, double offset) const {
+    return x + ((offset - N.dot(x)) / N.dot(n)) * n;
+  }
+};
+
+// Closest points of segments [p0, p1] and [q0, q1]: parameters s, t in [0, 1]
+// (Ericson, Real-Time Collision Detection, 2005, §5.1.9).
+void closest_segment_segment(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0,
+                             const Vector3d& q1, double& s, double& t) {
+  const Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  if (a <= 0.0 && e <= 0.0) {
+    s = t = 0.0;
+    return;
+  }
+  if (a <= 0.0) {
+    s = 0.0;
+    t = std::clamp(f / e, 0.0, 1.0);
+    return;
+  }
+  const double c = d1.dot(r);
+  if (e <= 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+    return;
+  }
+  const double b = d1.dot(d2), denom = a * e - b * b;
+  s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  t = (b * s + f) / e;
+  if (t < 0.0) {
+    t = 0.0;
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (t > 1.0) {
+    t = 1.0;
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+}
+
+// The parameter s ∈ [0, 1] of the point of segment [b0, b1] nearest to the line through x
+// with direction n (unit): minimises |P(b(s) − x)|, P the projector ⟂ n.
+double segment_param_nearest_line(const Vector3d& b0, const Vector3d& b1, const Vector3d& x,
+                                  const Vector3d& n) {
+  const Vector3d e = b1 - b0, r = b0 - x;
+  const Vector3d pe = e - n.dot(e) * n, pr = r - n.dot(r) * n;
+  const double ee = pe.squaredNorm();
+  return ee > 0.0 ? std::clamp(-pr.dot(pe) / ee, 0.0, 1.0) : 0.0;
+}
+
+// The point of a feature of P on (or nearest to) the line through x along n.
+Vector3d feature_point_on_line(const PosedShape& P, const ContactFeature& f, const Vector3d& x,
+                               const Vector3d& n) {
+  switch (f.kind) {
+    case FeatureKind::face: {
+      const Vector3d& N = P.face_normals()[f.index];
+      return x + ((P.face_offsets()[f.index] - N.dot(x)) / N.dot(n)) * n;
+    }
+    case FeatureKind::edge: {
+      const auto& e = P.shape().edges()[f.index];
+      const Vector3d& b0 = P.vertices()[e[0]];
+      const Vector3d& b1 = P.vertices()[e[1]];
+      return b0 + segment_param_nearest_line(b0, b1, x, n) * (b1 - b0);
+    }
+    case FeatureKind::vertex:
+    default:
+      return P.vertices()[f.index];
+  }
+}
+
+// 2D polygon of a face, counter-clockwise about n (the face's loop is counter-clockwise
+// about its outward normal; reversed when that points against n).
+std::vector<Vector2d> face_polygon(const PosedShape& P, int face, const ContactFrame& frame) {
+  const auto& loop = P.shape().faces()[face].vertices;
+  std::vector<Vector2d> poly;
+  poly.reserve(loop.size());
+  for (int i : loop) poly.push_back(frame.project(P.vertices()[i]));
+  if (P.face_normals()[face].dot(frame.n) < 0.0) std::reverse(poly.begin(), poly.end());
+  return poly;
+}
+
+// Sutherland–Hodgman: the part of `subject` inside the convex counter-clockwise `clip`.
+// A point counts as inside an edge when at most `tol` outside it.
+std::vector<Vector2d> clip_polygon(const std::vector<Vector2d>& subject,
+                                   const std::vector<Vector2d>& clip, double tol) {
+  std::vector<Vector2d> out = subject;
+  const std::size_t m = clip.size();
+  for (std::size_t k = 0; k < m && !out.empty(); ++k) {
+    const Vector2d& c0 = clip[k];
+    const Vector2d edge = clip[(k + 1) % m] - c0;
+    const double length = edge.norm();
+    if (!(length > 0.0)) continue;
+    const auto side = [&](const Vector2d& p) { return cross2(edge, p - c0) / length; };
+    std::vector<Vector2d> in = std::move(out);
+    out.clear();
+    const std::size_t q = in.size();
+    for (std::size_t i = 0; i < q; ++i) {
+      const Vector2d& S = in[(i + q - 1) % q];
+      const Vector2d& E = in[i];
+      const double fs = side(S), fe = side(E);
+      const bool s_in = fs >= -tol, e_in = fe >= -tol;
+      if (e_in != s_in) {
+        const double t = std::clamp(fs / (fs - fe), 0.0, 1.0);
+        out.push_back(S + t * (E - S));
+      }
+      if (e_in) out.push_back(E);
+    }
+  }
+  return out;
+}
+
+// Cyrus–Beck: the parameter interval [lo, hi] of the segment p0 + s (p1 − p0), s ∈ [0, 1],
+// inside the convex counter-clockwise polygon (tolerance as above). False if empty.
+bool clip_segment(const Vector2d& p0, const Vector2d& p1, const std::vector<Vector2d>& poly,
+                  double tol, double& lo, double& hi) {
+  lo = 0.0;
+  hi = 1.0;
+  const std::size_t m = poly.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vector2d& c0 = poly[k];
+    const Vector2d edge = poly[(k + 1) % m] - c0;
+    const double length = edge.norm();
+    if (!(length > 0.0)) continue;
+    const double f0 = cross2(edge, p0 - c0) / length, f1 = cross2(edge, p1 - c0) / length;
+    if (f0 < -tol && f1 < -tol) return false;
+    if (f0 >= -tol && f1 >= -tol) continue;
+    const double s = std::clamp(f0 / (f0 - f1), 0.0, 1.0);  // where f crosses 0
+    if (f0 < -tol)
+      lo = std::max(lo, s);
+    else
+      hi = std::min(hi, s);
+  }
+  return lo <= hi;
+}
+
+// Convex hull (Andrew's monotone chain), counter-clockwise, of a clipped polygon's
+// vertices: merges vertices closer than tol and drops vertices within tol of the line
+// through their neighbours. A degenerate polygon becomes its two extreme points (a line
+// contact) or one point.
+std::vector<Vector2d> convex_hull_2d(std::vector<Vector2d> points, double tol) {
+  std::sort(points.begin(), points.end(), [](const Vector2d& a, const Vector2d& b) {
+    return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
+  });
+  if (points.size() < 2) return points;
+  // b is a corner of the counter-clockwise chain a → b → c only if it lies more than tol
+  // to the right of the line a → c (a strict left turn at b)
+  const auto not_corner = [tol](const Vector2d& a, const Vector2d& b, const Vector2d& c) {
+    const double length = (c - a).norm();
+    return length <= tol || cross2(b - a, c - a) <= tol * length;
+  };
+  std::vector<Vector2d> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const auto& p : points) {  // lower chain
+    while (k >= 2 && not_corner(hull[k - 2], hull[k - 1], p)) --k;
+    if (k == 1 && (p - hull[0]).norm() <= tol) continue;
+    hull[k++] = p;
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = points.size() - 1; i-- > 0;) {  // upper chain
+    const Vector2d& p = points[i];
+    while (k >= lower && not_corner(hull[k - 2], hull[k - 1], p)) --k;
+    hull[k++] = p;
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  // a chain that came back on itself: merge coincident ends
+  while (hull.size() > 1 && (hull.back() - hull.front()).norm() <= tol) hull.pop_back();
+  if (hull.size() == 2 && (hull[1] - hull[0]).norm() <= tol) hull.pop_back();
+  return hull;
+}
+
+// Reduce a convex polygon (with a gap per vertex) to at most max_points vertices by
+// repeatedly removing the vertex whose triangle with its neighbours has the smallest
+// area, never the deepest vertex. Returns the kept indices in polygon order.
+std::vector<int> reduce_polygon(const std::vector<Vector2d>& poly,
+                                const std::vector<double>& gaps, int max_points) {
+  std::vector<int> kept(poly.size());
+  for (std::size_t i = 0; i < poly.size(); ++i) kept[i] = static_cast<int>(i);
+  if (max_points <= 0 || static_cast<int>(poly.size()) <= max_points) return kept;
+  const int deepest =
+      static_cast<int>(std::min_element(gaps.begin(), gaps.end()) - gaps.begin());
+  while (static_cast<int>(kept.size()) > max_points) {
+    const std::size_t m = kept.size();
+    std::size_t victim = m;
+    double least = kInf;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (kept[i] == deepest) continue;
+      const Vector2d& a = poly[kept[(i + m - 1) % m]];
+      const Vector2d& b = poly[kept[i]];
+      const Vector2d& c = poly[kept[(i + 1) % m]];
+      double area = std::abs(cross2(b - a, c - a));
+      if (m <= 2) area = (b - poly[deepest]).norm();  // keep the farthest point
+      if (area < least) {
+        least = area;
+        victim = i;
+      }
+    }
+    if (victim == m) break;
+    kept.erase(kept.begin() + static_cast<long>(victim));
+  }
+  return kept;
+}
+
+// Pairs of core points (on A, on B) making up a manifold, before the radii are applied.
+struct CorePair {
+  Vector3d a, b;
+  Vector2d in_plane;  // position in the contact plane (for the polygon reduction)
+};
+
+ContactPoint make_point(const Vector3d& core_a, const Vector3d& core_b, const Vector3d& n,
+                        double r_a, double r_b) {
+  ContactPoint p;
+  p.normal = n;
+  p.point_a = core_a + r_a * n;
+  p.point_b = core_b - r_b * n;
+  p.gap = n.dot(p.point_b - p.point_a);
+  p.position = 0.5 * (p.point_a + p.point_b);
+  return p;
+}
+
+// Multi-point manifolds from the two features; empty when the features give no
+// polygon/segment (a vertex is involved, crossing edges, or degenerate clipping).
+std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& fa,
+                                    const PosedShape& B, const ContactFeature& fb,
+                                    const ContactFrame& frame, double sin_tol, double tol) {
+  std::vector<CorePair> out;
+  const Vector3d& n = frame.n;
+  if (fa.kind == FeatureKind::face && fb.kind == FeatureKind::face) {
+    std::vector<Vector2d> poly =
+        clip_polygon(face_polygon(A, fa.index, frame), face_polygon(B, fb.index, frame), tol);
+    poly = convex_hull_2d(poly, tol);
+    const Vector3d& Na = A.face_normals()[fa.index];
+    const Vector3d& Nb = B.face_normals()[fb.index];
+    for (const auto& p : poly) {
+      const Vector3d x = frame.lift(p);
+      out.push_back({frame.onto_plane(x, Na, A.face_offsets()[fa.index]),
+                     frame.onto_plane(x, Nb, B.face_offsets()[fb.index]), p});
+    }
+    return out;
+  }
+  const bool edge_face = fa.kind == FeatureKind::edge && fb.kind == FeatureKind::face;
+  const bool face_edge = fa.kind == FeatureKind::face && fb.kind == FeatureKind::edge;
+  if (edge_face || face_edge) {
+    const PosedShape& E = edge_face ? A : B;  // the body with the edge
+    const PosedShape& F = edge_face ? B : A;  // the body with the face
+    const int edge = edge_face ? fa.index : fb.index;
+    const int face = edge_face ? fb.index : fa.index;
+    const auto& e = E.shape().edges()[edge];
+    const Vector3d& e0 = E.vertices()[e[0]];
+    const Vector3d& e1 = E.vertices()[e[1]];
+    double lo = 0.0, hi = 1.0;
+    if (!clip_segment(frame.project(e0), frame.project(e1), face_polygon(F, face, frame), tol,
+                      lo, hi))
+      return out;
+    const double length = (frame.project(e1) - frame.project(e0)).norm();
+    std::vector<double> params = {lo, hi};
+    if ((hi - lo) * length <= tol) params = {0.5 * (lo + hi)};
+    for (double s : params) {
+      const Vector3d on_edge = e0 + s * (e1 - e0);
+      const Vector3d on_face =
+          frame.onto_plane(on_edge, F.face_normals()[face], F.face_offsets()[face]);
+      if (edge_face)
+        out.push_back({on_edge, on_face, frame.project(on_edge)});
+      else
+        out.push_back({on_face, on_edge, frame.project(on_edge)});
+    }
+    return out;
+  }
+  if (fa.kind == FeatureKind::edge && fb.kind == FeatureKind::edge) {
+    const auto& ea = A.shape().edges()[fa.index];
+    const auto& eb = B.shape().edges()[fb.index];
+    const Vector3d &a0 = A.vertices()[ea[0]], &a1 = A.vertices()[ea[1]];
+    const Vector3d &b0 = B.vertices()[eb[0]], &b1 = B.vertices()[eb[1]];
+    const Vector3d da = (a1 - a0).normalized(), db = (b1 - b0).normalized();
+    if (da.cross(db).norm() > sin_tol) return out;  // crossing edges: one point
+    // parallel edges: the overlap of their intervals along the common direction
+    Vector3d dir = da - n.dot(da) * n;
+    dir.normalize();
+    const double alpha0 = dir.dot(a0), alpha1 = dir.dot(a1);
+    const double beta0 = dir.dot(b0), beta1 = dir.dot(b1);
+    const double lo = std::max(std::min(alpha0, alpha1), std::min(beta0, beta1));
+    const double hi = std::min(std::max(alpha0, alpha1), std::max(beta0, beta1));
+    if (hi < lo - tol) return out;
+    std::vector<double> at = {lo, hi};
+    if (hi - lo <= tol) at = {0.5 * (lo + hi)};
+    for (double sigma : at) {
+      const double sa = std::clamp((sigma - alpha0) / (alpha1 - alpha0), 0.0, 1.0);
+      const double sb = std::clamp((sigma - beta0) / (beta1 - beta0), 0.0, 1.0);
+      const Vector3d pa = a0 + sa * (a1 - a0), pb = b0 + sb * (b1 - b0);
+      out.push_back({pa, pb, frame.project(pa)});
+    }
+    return out;
+  }
+  return out;
+}
+
+// One pair of core points from the features, for a normal that does not come from the
+// closest points (SAT): a vertex and its projection along n on the other feature, or the
+// closest points of two crossing edges.
+CorePair single_pair(const PosedShape& A, const ContactFeature& fa, const PosedShape& B,
+                     const ContactFeature& fb, const ContactFrame& frame,
+                     double signed_distance) {
+  const Vector3d& n = frame.n;
+  CorePair out;
+  if (fa.kind == FeatureKind::vertex) {
+    out.a = A.vertices()[fa.index];
+    out.b = feature_point_on_line(B, fb, out.a, n);
+  } else if (fb.kind == FeatureKind::vertex) {
+    out.b = B.vertices()[fb.index];
+    out.a = feature_point_on_line(A, fa, out.b, n);
+  } else if (fa.kind == FeatureKind::edge && fb.kind == FeatureKind::edge) {
+    const auto& ea = A.shape().edges()[fa.index];
+    const auto& eb = B.shape().edges()[fb.index];
+    double s = 0.0, t = 0.0;
+    closest_segment_segment(A.vertices()[ea[0]], A.vertices()[ea[1]], B.vertices()[eb[0]],
+                            B.vertices()[eb[1]], s, t);
+    out.a = A.vertices()[ea[0]] + s * (A.vertices()[ea[1]] - A.vertices()[ea[0]]);
+    out.b = B.vertices()[eb[0]] + t * (B.vertices()[eb[1]] - B.vertices()[eb[0]]);
+  } else {
+    // degenerate clipping of parallel features: A's support vertex and the point at the
+    // separation along n
+    out.a = A.vertices()[A.support_vertex(n)];
+    out.b = out.a + signed_distance * n;
+  }
+  out.in_plane = frame.project(out.a);
+  return out;
+}
+
+double configuration_size(const PosedShape& a, const Vector3d& other_center,
+                          double other_radius) {
+  return std::max({a.core_radius(), other_radius, (a.position() - other_center).norm(),
+                   std::numeric_limits<double>::min()});
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// PosedShape
+
+PosedShape::PosedShape(const ConvexShape& shape, const Vector3d& position,
+                       const Eigen::Quaterniond& orientation)
+    : shape_(&shape), position_(position) {
+  check_finite("position", position);
+  const double norm = orientation.norm();
+  if (!std::isfinite(norm) || !(norm > 0.0))
+    throw InvalidArgument("orientation", "orientation must be a finite non-zero quaternion");
+  orientation_ = orientation.normalized();
+  rotation_ = orientation_.toRotationMatrix();
+  vertices_.reserve(shape.vertices().size());
+  for (const auto& v : shape.vertices()) {
+    core_radius_ = std::max(core_radius_, v.norm());
+    vertices_.push_back(rotation_ * v + position_);
+  }
+  face_normals_.reserve(shape.faces().size());
+  face_offsets_.reserve(shape.faces().size());
+  for (const auto& f : shape.faces()) {
+    const Vector3d n = rotation_ * f.normal;
+    face_normals_.push_back(n);
+    face_offsets_.push_back(f.offset + n.dot(position_));
+  }
+}
+
+int PosedShape::support_vertex(const Vector3d& direction) const {
+  int best = 0;
+  double h = -kInf;
+  for (int i = 0; i < static_cast<int>(vertices_.size()); ++i) {
+    const double x = direction.dot(vertices_[i]);
+    if (x > h) {
+      h = x;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------
+// Core distance
+
+CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
+                           double early_exit_distance) {
+  if (!(early_exit_distance >= 0.0))
+    throw InvalidArgument("early_exit_distance",
+                          "early_exit_distance must be >= 0, got " + number(early_exit_distance));
+  if (std::isinf(early_exit_distance)) early_exit_distance = 0.0;  // never stop early
+  const double size = configuration_size(a, b.position(), b.core_radius());
+  const GjkResult g = gjk(PolytopeSet{&a}, PolytopeSet{&b}, a.position() - b.position(), size,
+                          early_exit_distance);
+  CoreDistance out;
+  out.gjk_iterations = g.iterations;
+  if (g.far) {
+    out.method = DistanceMethod::gjk_far;
+    out.distance = g.distance;
+    const Vector3d d = b.position() - a.position();
+    out.normal = d.squaredNorm() > 0.0 ? Vector3d(d.normalized()) : Vector3d::UnitX();
+    out.point_a = a.position();
+    out.point_b = b.position();
+    return out;
+  }
+  if (!g.touching && g.distance > kNearTouching * size) {
+    out.method = DistanceMethod::gjk;
+    out.distance = g.distance;
+    out.normal = (g.point_b - g.point_a) / g.distance;
+    out.point_a = g.point_a;
+    out.point_b = g.point_b;
+    return out;
+  }
+  const SatAxis axis = sat_polytopes(a, b);
+  out.normal = axis.normal;
+  if (!g.touching) {
+    // Disjoint but nearly touching: exact closest points. The normal is the direction
+    // of largest separation: the SAT axis (exact when the contact involves a face or two
+    // crossing edges), unless the GJK direction separates more (vertex–vertex,
+    // vertex–edge, parallel edges: their normal is no SAT candidate).
+    out.distance = g.distance;
+    out.point_a = g.point_a;
+    out.point_b = g.point_b;
+    const Vector3d n_gjk = (g.point_b - g.point_a) / g.distance;
+    const double separation_gjk = -(support_value(a, n_gjk) + support_value(b, -n_gjk));
+    if (separation_gjk > -axis.depth + kGjkProgress * size) {
+      out.method = DistanceMethod::gjk;
+      out.normal = n_gjk;
+    } else {
+      out.method = DistanceMethod::gjk_sat;
+    }
+    return out;
+  }
+  out.method = DistanceMethod::sat;
+  out.distance = -axis.depth;
+  const Vector3d& n = axis.normal;
+  out.point_a = a.vertices()[a.support_vertex(n)];
+  out.point_b = b.vertices()[b.support_vertex(-n)];
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Contact manifold of two grains
+
+ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
+                                 double activation_distance, const ContactOptions& options) {
+  check_not_nan("activation_distance", activation_distance);
+  check_options(options);
+  const double r_a = a.sweep_radius(), r_b = b.sweep_radius();
+  const double reach = activation_distance + r_a + r_b;
+  const CoreDistance cd = core_distance(a, b, reach > 0.0 ? reach : 0.0);  // inf: never
+
+  ContactManifold m;
+  m.normal = cd.normal;
+  m.core_distance = cd.distance;
+  m.gap = cd.distance - (r_a + r_b);
+  m.method = cd.method;
+  if (cd.method == DistanceMethod::gjk_far || !(m.gap < activation_distance)) return m;
+
+  const Vector3d& n = cd.normal;
+  const double cos_tol = std::cos(options.angle_tolerance);
+  const double sin_tol = std::sin(options.angle_tolerance);
+  const double size = configuration_size(a, b.position(), b.core_radius());
+  const double tol = kMergeTolerance * size;
+  m.feature_a = select_feature(a, n, cos_tol, sin_tol, tol);
+  m.feature_b = select_feature(b, -n, cos_tol, sin_tol, tol);
+
+  const ContactFrame frame(cd.point_a, n);
+  std::vector<CorePair> pairs = feature_pairs(a, m.feature_a, b, m.feature_b, frame, sin_tol, tol);
+  if (pairs.empty()) {
+    if (cd.method == DistanceMethod::gjk || cd.method == DistanceMethod::gjk_sat)
+      pairs.push_back({cd.point_a, cd.point_b, frame.project(cd.point_a)});
+    else
+      pairs.push_back(single_pair(a, m.feature_a, b, m.feature_b, frame, cd.distance));
+  }
+
+  std::vector<Vector2d> in_plane;
+  std::vector<double> gaps;
+  for (const auto& p : pairs) {
+    in_plane.push_back(p.in_plane);
+    gaps.push_back(n.dot(p.b - p.a));
+  }
+  for (int i : reduce_polygon(in_plane, gaps, options.max_points))
+    m.points.push_back(make_point(pairs[i].a, pairs[i].b, n, r_a, r_b));
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------
+// Wall
+
+ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
+                              double activation_distance, const ContactOptions& options) {
+  check_not_nan("activation_distance", activation_distance);
+  check_options(options);
+  check_finite("wall.point", wall.point);
+  const double length = wall.normal.norm();
+  if (!std::isfinite(length) || !(length > 0.0))
+    throw InvalidArgument("wall.normal", "wall.normal must be a finite non-zero vector");
+  const Vector3d n = wall.normal / length;
+  const double r = grain.sweep_radius();
+
+  ContactManifold m;
+  m.normal = n;
+  m.method = DistanceMethod::plane;
+  m.feature_a = {FeatureKind::face, -1};
+  const int lowest = grain.support_vertex(-n);
+  m.core_distance = n.dot(grain.vertices()[lowest] - wall.point);
+  m.gap = m.core_distance - r;
+  if (!(m.gap < activation_distance)) return m;
+
+  const double size = grain.core_radius();
+  m.feature_b = select_feature(grain, -n, std::cos(options.angle_tolerance),
+                               std::sin(options.angle_tolerance), kMergeTolerance * size);
+  std::vector<int> vertices;
+  switch (m.feature_b.kind) {
+    case FeatureKind::face:
+      vertices = grain.shape().faces()[m.feature_b.index].vertices;
+      break;
+    case FeatureKind::edge: {
+      const auto& e = grain.shape().edges()[m.feature_b.index];
+      vertices = {e[0], e[1]};
+      break;
+    }
+    case FeatureKind::vertex:
+    default:
+      vertices = {m.feature_b.index};
+  }
+  const ContactFrame frame(wall.point, n);
+  std::vector<Vector2d> in_plane;
+  std::vector<double> gaps;
+  for (int v : vertices) {
+    in_plane.push_back(frame.project(grain.vertices()[v]));
+    gaps.push_back(n.dot(grain.vertices()[v] - wall.point));
+  }
+  for (int i : reduce_polygon(in_plane, gaps, options.max_points)) {
+    const Vector3d& v = grain.vertices()[vertices[i]];
+    m.points.push_back(make_point(v - gaps[i] * n, v, n, 0.0, r));
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------
+// Wire segment
+
+SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
+                               const Vector3d& end1, double wire_radius,
+                               const ContactOptions& options) {
+  check_finite("end0", end0);
+  check_finite("end1", end1);
+  if (!(wire_radius >= 0.0) || !std::isfinite(wire_radius))
+    throw InvalidArgument("wire_radius",
+                          "wire_radius must be >= 0 and finite, got " + number(wire_radius));
+  check_options(options);
+
+  const SegmentSet S{{end0, end1}};
+  const Vector3d mid = 0.5 * (end0 + end1);
+  const Vector3d s = end1 - end0;
+  const double length = s.norm();
+  const double size = configuration_size(grain, mid, 0.5 * length);
+  const GjkResult g = gjk(PolytopeSet{&grain}, S, grain.position() - mid, size, 0.0);
+
+  SegmentContact out;
+  out.gjk_iterations = g.iterations;
+  const auto param_of = [&](const Vector3d& x) {
+    return length > 0.0 ? std::clamp((x - end0).dot(s) / (length * length), 0.0, 1.0) : 0.0;
+  };
+
+  Vector3d n;
+  if (!g.touching && g.distance > kNearTouching * size) {
+    out.method = DistanceMethod::gjk;
+    out.distance = g.distance;
+    n = (g.point_b - g.point_a) / g.distance;
+  } else {
+    const SatAxis axis = sat_segment(grain, S.end);
+    n = axis.normal;
+    if (g.touching) {
+      out.method = DistanceMethod::sat;
+      out.distance = -axis.depth;
+    } else {
+      // nearly touching: the direction of largest separation (see core_distance)
+      out.method = DistanceMethod::gjk_sat;
+      out.distance = g.distance;
+      const Vector3d n_gjk = (g.point_b - g.point_a) / g.distance;
+      const double separation_gjk =
+          -(support_value(grain, n_gjk) + segment_support(S.end, -n_gjk));
+      if (separation_gjk > -axis.depth + kGjkProgress * size) {
+        out.method = DistanceMethod::gjk;
+        n = n_gjk;
+      }
+    }
+  }
+  out.normal = n;
+  out.gap = out.distance - (grain.sweep_radius() + wire_radius);
+
+  // Single closest points: GJK's (t = the barycentric weight of end1), or for the SAT
+  // the deepest end of the segment and its projection along n on the grain's feature
+  // (for an edge axis the segment is ⟂ n: the closest points of edge and segment).
+  const double sin_tol = std::sin(options.angle_tolerance);
+  const ContactFeature feature = select_feature(grain, n, std::cos(options.angle_tolerance),
+                                                sin_tol, kMergeTolerance * size);
+  if (out.method == DistanceMethod::sat) {
+    if (feature.kind == FeatureKind::vertex) {
+      const Vector3d& v = grain.vertices()[feature.index];
+      out.point_on_core = v;
+      out.point_on_segment = end0 + segment_param_nearest_line(end0, end1, v, n) * s;
+    } else if (feature.kind == FeatureKind::edge && std::abs(s.dot(n)) <= sin_tol * length) {
+      const auto& e = grain.shape().edges()[feature.index];
+      const Vector3d &e0 = grain.vertices()[e[0]], &e1 = grain.vertices()[e[1]];
+      double p = 0.0, q = 0.0;
+      closest_segment_segment(e0, e1, end0, end1, p, q);
+      out.point_on_core = e0 + p * (e1 - e0);
+      out.point_on_segment = end0 + q * s;
+    } else {
+      out.point_on_segment = n.dot(end1) < n.dot(end0) ? end1 : end0;
+      out.point_on_core = feature_point_on_line(grain, feature, out.point_on_segment, n);
+    }
+    out.t = param_of(out.point_on_segment);
+  } else {
+    out.point_on_core = g.point_a;
+    out.point_on_segment = g.point_b;
+    out.t = length > 0.0 ? std::clamp(g.weight_b1, 0.0, 1.0) : 0.0;
+  }
+  out.t_begin = out.t_end = out.t;
+
+  // A segment parallel to the contact face or edge: the closest points form an interval.
+  if (length > 0.0 && std::abs(s.dot(n)) <= sin_tol * length &&
+      feature.kind != FeatureKind::vertex) {
+    const ContactFrame frame(out.point_on_core, n);
+    const double tol = kMergeTolerance * size;
+    double lo = 0.0, hi = 1.0;
+    bool found = false;
+    if (feature.kind == FeatureKind::face) {
+      found = clip_segment(frame.project(end0), frame.project(end1),
+                           face_polygon(grain, feature.index, frame), tol, lo, hi);
+    } else {
+      const auto& e = grain.shape().edges()[feature.index];
+      const Vector3d &e0 = grain.vertices()[e[0]], &e1 = grain.vertices()[e[1]];
+      const Vector3d de = e1 - e0;
+      if (de.normalized().cross(s / length).norm() <= sin_tol) {
+        Vector3d dir = s - n.dot(s) * n;
+        dir.normalize();
+        const double a0 = dir.dot(end0), a1 = dir.dot(end1);  // a1 > a0
+        const double b_lo = std::min(dir.dot(e0), dir.dot(e1));
+        const double b_hi = std::max(dir.dot(e0), dir.dot(e1));
+        lo = std::clamp((b_lo - a0) / (a1 - a0), 0.0, 1.0);
+        hi = std::clamp((b_hi - a0) / (a1 - a0), 0.0, 1.0);
+        found = b_hi >= a0 - tol && b_lo <= a1 + tol && lo <= hi;
+      }
+    }
+    if (found) {
+      out.t_begin = lo;
+      out.t_end = hi;
+      out.t = 0.5 * (lo + hi);
+      out.point_on_segment = end0 + out.t * s;
+      out.point_on_core = feature_point_on_line(grain, feature, out.point_on_segment, n);
+    }
+  }
+  return out;
+}
+
+}  // namespace wiregrain

@@ -1,0 +1,204 @@
+// Contact geometry of spheropolyhedra (grains), walls and wire segments.
+//
+// A grain is a convex polyhedron P (its "core", a ConvexShape in the body frame) dilated
+// by its sweep radius r (ConvexShape::sweep_radius()). Two grains A and B touch when the
+// distance between their cores equals r_A + r_B, so every query first solves the
+// distance problem of the sharp cores and then subtracts the radii:
+//
+//   gap g = d_core − (r_A + r_B),      normal n: unit vector from A to B.
+//
+// The core distance d_core is signed: the Euclidean distance of the cores when they are
+// disjoint, minus their penetration depth when they overlap (the length of the shortest
+// translation of B that separates the cores; n is its direction). So g < 0 means
+// interpenetration of the dilated grains, whatever its depth.
+//
+// Algorithms (details and measured accuracy in docs/core_contact.md):
+//   - distance of disjoint cores: GJK (Gilbert, Johnson & Keerthi, IEEE J. Robot. Autom.
+//     4 (1988) 193) on the Minkowski difference A − B, with the signed-volumes
+//     sub-simplex solver of Montanari, Petrinic & Barbieri, ACM Trans. Graph. 36 (2017)
+//     32, made exhaustive (every face/edge of a simplex whose barycentric coordinates
+//     fail the sign test is tried, the nearest wins). Terminates when the support point
+//     repeats a simplex vertex (exact optimality for polytopes) or gains less than
+//     1e-15 relative;
+//   - overlapping cores (and, for the normal, cores closer than 1e-8 × their size, where
+//     the GJK direction is ill-conditioned; the direction that separates the cores more
+//     is kept): separating-axis test over the face normals of both
+//     cores and the cross products of edge pairs that form a face of the Minkowski
+//     difference (Gauss-map arc test, Gregorius, GDC 2013). For polytopes this candidate
+//     set contains the minimum, so the depth is exact to rounding;
+//   - contact manifold: closest features. The features of A and B in the directions n
+//     and −n (vertex, edge or face, chosen with an angle tolerance) are projected on the
+//     plane ⟂ n; face–face → Sutherland–Hodgman polygon clipping, edge–face → clipping of
+//     the segment by the polygon, parallel edges → overlap interval, otherwise one point.
+//     Each point gets its own gap measured along n (exact for every point, also for a
+//     feature that is parallel only within the tolerance).
+//
+// Inputs are checked (InvalidArgument, argument() names the C++ parameter): non-finite
+// positions or orientations, zero quaternions, negative radii, bad options.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "core/geometry/convex_shape.h"
+
+namespace wiregrain {
+
+// A ConvexShape (body frame) placed in the world: x_world = R(q) x_body + position.
+// Holds a pointer to the shape (which must outlive it) and the world-frame vertices,
+// face normals and face offsets, computed once at construction (so a grain posed once
+// per time step can be used in all its pair queries).
+class PosedShape {
+ public:
+  // orientation: body -> world, any non-zero finite quaternion (normalised here).
+  PosedShape(const ConvexShape& shape, const Eigen::Vector3d& position,
+             const Eigen::Quaterniond& orientation);
+
+  const ConvexShape& shape() const { return *shape_; }
+  const Eigen::Vector3d& position() const { return position_; }
+  const Eigen::Quaterniond& orientation() const { return orientation_; }
+  const Eigen::Matrix3d& rotation() const { return rotation_; }
+  double sweep_radius() const { return shape_->sweep_radius(); }
+  // max |v_body| over the core's vertices (the core's radius about `position`)
+  double core_radius() const { return core_radius_; }
+
+  // world-frame core: vertex i, unit outward normal and plane offset of face f
+  // (normal · x = offset on the face)
+  const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
+  const std::vector<Eigen::Vector3d>& face_normals() const { return face_normals_; }
+  const std::vector<double>& face_offsets() const { return face_offsets_; }
+
+  Eigen::Vector3d to_world(const Eigen::Vector3d& body_point) const {
+    return rotation_ * body_point + position_;
+  }
+  // Index of a vertex of the core maximising direction · v (the support point).
+  int support_vertex(const Eigen::Vector3d& direction) const;
+
+ private:
+  const ConvexShape* shape_;
+  Eigen::Vector3d position_;
+  Eigen::Quaterniond orientation_;
+  Eigen::Matrix3d rotation_;
+  double core_radius_ = 0.0;
+  std::vector<Eigen::Vector3d> vertices_;
+  std::vector<Eigen::Vector3d> face_normals_;
+  std::vector<double> face_offsets_;
+};
+
+// How the signed core distance was obtained.
+enum class DistanceMethod {
+  gjk,         // disjoint cores: GJK distance, normal along the closest points
+  gjk_sat,     // disjoint but nearly touching cores (< 1e-8 × size): GJK distance,
+               // normal from the SAT
+  sat,         // overlapping cores: SAT penetration depth and normal
+  gjk_far,     // GJK stopped early: the cores are farther apart than the early-exit
+               // distance; `distance` is a lower bound, points and normal approximate
+  plane        // wall contact: exact support-point query against the plane
+};
+
+// Signed distance of the two sharp cores.
+struct CoreDistance {
+  double distance = 0.0;  // > 0: Euclidean distance; <= 0: minus the penetration depth
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit, from A to B
+  // disjoint: the closest points of the cores (point_b − point_a = distance · normal);
+  // overlapping: a deepest point of each core along the normal
+  // (normal · (point_b − point_a) = distance)
+  Eigen::Vector3d point_a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_b = Eigen::Vector3d::Zero();
+  DistanceMethod method = DistanceMethod::gjk;
+  int gjk_iterations = 0;
+  bool overlapping() const { return distance <= 0.0; }
+};
+
+// Distance of the cores of a and b. early_exit_distance: if > 0, GJK stops as soon as its
+// lower bound proves distance > early_exit_distance (method gjk_far); 0 or +inf: always
+// solve.
+CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
+                           double early_exit_distance = 0.0);
+
+// Tolerances and limits of the contact manifold.
+struct ContactOptions {
+  // A face (edge) counts as parallel to the contact plane when its normal (direction) is
+  // within this angle of n (of the plane). Radians, in [0, 0.5]. Larger values give
+  // multi-point manifolds for more tilted resting contacts; the point gaps stay exact.
+  double angle_tolerance = 1e-2;
+  // At most this many points per manifold (0: no limit). Polygons with more vertices
+  // are reduced by repeatedly dropping the vertex whose removal loses the least area,
+  // never the deepest one.
+  int max_points = 8;
+};
+
+enum class FeatureKind { vertex, edge, face };
+
+// The feature of a core that carries the contact: index into the shape's vertices(),
+// edges() or faces().
+struct ContactFeature {
+  FeatureKind kind = FeatureKind::vertex;
+  int index = -1;
+};
+
+struct ContactPoint {
+  Eigen::Vector3d position;  // mid-point between the two dilated surfaces
+  Eigen::Vector3d normal;    // the manifold normal, from A to B
+  double gap = 0.0;          // normal · (point_b − point_a); < 0: interpenetration
+  Eigen::Vector3d point_a;   // on the dilated surface of A (core point + r_A n)
+  Eigen::Vector3d point_b;   // on the dilated surface of B (core point − r_B n)
+};
+
+struct ContactManifold {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // from A to B
+  double gap = 0.0;            // of the pair: core_distance − (r_A + r_B)
+  double core_distance = 0.0;  // signed, see CoreDistance
+  DistanceMethod method = DistanceMethod::gjk;
+  ContactFeature feature_a, feature_b;  // for a wall: feature_b only
+  // Empty when gap >= activation_distance. Otherwise one point (vertex involved, or
+  // crossing edges), two (edge–face, parallel edges) or the clipped polygon (face–face,
+  // up to max_points). The smallest point gap equals `gap` to rounding.
+  std::vector<ContactPoint> points;
+};
+
+// Contact of two grains. Points are produced when gap < activation_distance (e.g. a
+// margin for gap anticipation in NSCD; +inf: always; NaN is rejected).
+ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
+                                 double activation_distance,
+                                 const ContactOptions& options = ContactOptions());
+
+// An infinite wall: the plane through `point` with unit normal `normal` pointing out of
+// the wall, into the space the grains occupy.
+struct Plane {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
+// Contact of a wall (body A, no radius) and a grain (body B); normal = the wall normal.
+// Points: the vertex of the core nearest to the plane, or all vertices of the edge or
+// face at that vertex that is parallel to the plane within the angle tolerance (a face
+// polygon is reduced to max_points as above); gap per point = n·(v − point) − r_B.
+// Points are produced when the pair gap < activation_distance.
+ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
+                              double activation_distance,
+                              const ContactOptions& options = ContactOptions());
+
+// Contact of a grain and a wire element: the segment [end0, end1] dilated by
+// wire_radius (a spherocylinder).
+struct SegmentContact {
+  double distance = 0.0;  // signed core–axis distance (<= 0: minus the penetration depth)
+  double gap = 0.0;       // distance − (r_grain + wire_radius)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit, from the grain to the wire
+  Eigen::Vector3d point_on_core = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_on_segment = Eigen::Vector3d::Zero();
+  // point_on_segment = end0 + t (end1 − end0), t ∈ [0, 1]: the closest point; when the
+  // segment is parallel (within the angle tolerance) to the contact face or edge the
+  // closest points form an interval [t_begin, t_end] and t is its middle (the force is
+  // then shared by the nodes); otherwise t_begin = t_end = t.
+  double t = 0.0, t_begin = 0.0, t_end = 0.0;
+  DistanceMethod method = DistanceMethod::gjk;
+  int gjk_iterations = 0;
+};
+
+SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& end0,
+                               const Eigen::Vector3d& end1, double wire_radius,
+                               const ContactOptions& options = ContactOptions());
+
+}  // namespace wiregrain

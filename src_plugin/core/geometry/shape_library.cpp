@@ -1,0 +1,56 @@
+#include "core/geometry/shape_library.h"
+
+#include <cmath>
+
+#include "core/common/errors.h"
+
+namespace wiregrain {
+
+void ShapeLibrary::append_body_frame(const ConvexShape& body) {
+  GrainShape g{body};
+  const MassProperties m = body.mass_properties(1.0, model_);
+  g.volume = m.volume;
+  g.unit_inertia = m.inertia.diagonal();
+  g.bounding_radius = body.bounding_radius();
+  shapes_.push_back(std::move(g));
+}
+
+int ShapeLibrary::add(const ConvexShape& shape, Placement* placement) {
+  const BodyFrameShape body = to_body_frame(shape, 1.0, model_);
+  if (placement) {
+    placement->rotation = body.rotation;
+    placement->centroid = body.centroid;
+  }
+  append_body_frame(body.shape);
+  return size() - 1;
+}
+
+std::vector<double> ShapeLibrary::serialize() const {
+  std::vector<double> out{model_ == MassModel::dilated ? 1.0 : 0.0, double(shapes_.size())};
+  for (const GrainShape& g : shapes_) {
+    out.push_back(g.shape.sweep_radius());
+    out.push_back(double(g.shape.vertices().size()));
+    for (const Eigen::Vector3d& v : g.shape.vertices()) out.insert(out.end(), {v.x(), v.y(), v.z()});
+  }
+  return out;
+}
+
+ShapeLibrary ShapeLibrary::deserialize(const std::vector<double>& data) {
+  const auto fail = [] { throw InvalidArgument("shape library", "shape library data is truncated or corrupt"); };
+  if (data.size() < 2) fail();
+  ShapeLibrary library(data[0] != 0.0 ? MassModel::dilated : MassModel::sharp_polyhedron);
+  const long count = std::lround(data[1]);
+  std::size_t k = 2;
+  for (long s = 0; s < count; ++s) {
+    if (k + 2 > data.size()) fail();
+    const double sweep = data[k++];
+    const long n = std::lround(data[k++]);
+    if (n < 4 || k + 3 * std::size_t(n) > data.size()) fail();
+    std::vector<Eigen::Vector3d> vertices;
+    for (long v = 0; v < n; ++v, k += 3) vertices.emplace_back(data[k], data[k + 1], data[k + 2]);
+    library.append_body_frame(ConvexShape::from_points(vertices, sweep));
+  }
+  return library;
+}
+
+}  // namespace wiregrain

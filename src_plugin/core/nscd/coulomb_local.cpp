@@ -1,0 +1,285 @@
+// Exact local Signorini–Coulomb solution; the equations are in core/coulomb_local.h.
+#include "core/nscd/coulomb_local.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+
+namespace wiregrain {
+
+const char* contact_state_name(ContactState state) {
+  switch (state) {
+    case ContactState::open: return "open";
+    case ContactState::stick: return "stick";
+    case ContactState::slide: return "slide";
+  }
+  return "unknown";
+}
+
+LocalDelassus::LocalDelassus(const Eigen::Matrix3d& W) : matrix_(W) {
+  if (!W.allFinite()) throw InvalidArgument("W", "local Delassus block W has a non-finite entry");
+  if (!(W(0, 0) > 0.0)) {
+    throw InvalidArgument("W", "local Delassus block needs W_nn > 0, got " +
+                                   format_number(W(0, 0)));
+  }
+  // Singular (to round-off) when |det W| is below 1e-13 of the product of the row norms.
+  const double scale = W.row(0).norm() * W.row(1).norm() * W.row(2).norm();
+  double determinant = 0.0;
+  W.computeInverseAndDetWithCheck(inverse_, determinant, invertible_, 1e-13 * scale);
+  if (!invertible_) inverse_.setZero();
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+
+// Wraps an angle to (−π, π].
+double wrap_angle(double phi) {
+  phi = std::remainder(phi, kTwoPi);
+  return phi <= -kPi ? phi + kTwoPi : phi;
+}
+
+// The slide equation g(φ) = v(φ) × t(φ) of coulomb_local.h, with its derivative.
+class SlideEquation {
+ public:
+  struct Value {
+    double g;    // v × t
+    double dg;   // dg/dφ = v' × t + v·t
+    double a;    // (W c(φ))_n; r_n = −q_n / a
+    double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
+  };
+
+  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
+      : W_(W), q_(q), mu_(mu) {
+    const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
+    v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
+    a_floor_ = 1e-14 * w_size;
+  }
+
+  Value at(double phi) const {
+    const double c = std::cos(phi), s = std::sin(phi);
+    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
+    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
+    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
+    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
+    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
+    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
+    const double qn = q_[0];
+    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
+    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
+    Value value;
+    value.g = v1 * s - v2 * c;
+    value.dot = v1 * c + v2 * s;
+    value.dg = dv1 * s - dv2 * c + value.dot;
+    value.a = a;
+    return value;
+  }
+
+  // a > 0 (r_n > 0) and λ ≥ 0 (v·t ≤ 0, to round-off).
+  bool admissible(const Value& value) const {
+    return value.a > a_floor_ && value.dot <= 1e-12 * v_scale_;
+  }
+  // |g| small enough to be a root to round-off.
+  bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
+
+ private:
+  const Eigen::Matrix3d& W_;
+  const Eigen::Vector3d& q_;
+  double mu_;
+  double v_scale_;
+  double a_floor_;
+};
+
+// Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
+// Returns true on convergence (step below 1e-13 rad, or g = 0).
+bool newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
+                        int max_iterations) {
+  for (int it = 0; it < max_iterations; ++it) {
+    const SlideEquation::Value value = eq.at(phi);
+    if (value.g == 0.0) return true;
+    if (value.dg == 0.0 || !std::isfinite(value.dg)) return false;
+    double step = -value.g / value.dg;
+    step = std::clamp(step, -0.5, 0.5);
+    phi += step;
+    ++iterations;
+    if (std::abs(step) <= 1e-13) return true;
+  }
+  return false;
+}
+
+// Safeguarded Newton–bisection on the bracket [lo, hi], g(lo) g(hi) < 0 ("rtsafe",
+// Press et al., Numerical Recipes, Sec. 9.4): a Newton step when it stays inside the
+// bracket, else bisection; the bracket shrinks every iteration.
+double newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_lo,
+                        int& iterations) {
+  double phi = 0.5 * (lo + hi);
+  for (int it = 0; it < 200; ++it) {
+    const SlideEquation::Value value = eq.at(phi);
+    ++iterations;
+    if (value.g == 0.0) return phi;
+    if ((value.g < 0.0) == (g_lo < 0.0)) {
+      lo = phi;
+      g_lo = value.g;
+    } else {
+      hi = phi;
+    }
+    double next = phi - value.g / value.dg;
+    if (!(value.dg != 0.0 && next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const double step = next - phi;
+    phi = next;
+    if (std::abs(step) <= 1e-14 || hi - lo <= 1e-15) return phi;
+  }
+  return phi;
+}
+
+struct Candidate {
+  double phi;
+  double distance;  // angular distance to the guess
+};
+
+}  // namespace
+
+LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Vector3d& q,
+                                  double mu, const Eigen::Vector3d& guess) {
+  require_nonnegative("mu", mu);
+  if (!q.allFinite()) throw InvalidArgument("q", "local free velocity q has a non-finite entry");
+
+  const Eigen::Matrix3d& W = delassus.matrix();
+  LocalSolution solution;
+
+  // Open: the contact separates (or stays at the anticipated gap) without impulse.
+  if (q[0] >= 0.0) {
+    solution.velocity = q;
+    solution.state = ContactState::open;
+    return solution;
+  }
+
+  // Frictionless closed contact: r_n from u_n = 0, no tangential impulse.
+  if (mu == 0.0) {
+    solution.impulse = Eigen::Vector3d(-q[0] / W(0, 0), 0.0, 0.0);
+    solution.velocity = W * solution.impulse + q;
+    solution.state = ContactState::slide;
+    return solution;
+  }
+
+  // Stick: u = 0.
+  Eigen::Vector3d stick = Eigen::Vector3d::Zero();
+  if (delassus.invertible()) {
+    stick = -(delassus.inverse() * q);
+    if (stick[0] >= 0.0 && std::hypot(stick[1], stick[2]) <= mu * stick[0]) {
+      solution.impulse = stick;
+      solution.velocity = W * stick + q;
+      solution.state = ContactState::stick;
+      return solution;
+    }
+  }
+
+  // Slide. Starting direction: the guess if it lies on the cone boundary, else the
+  // direction of the rejected stick impulse, else the direction opposing q_t.
+  const SlideEquation equation(W, q, mu);
+  double phi0 = 0.0;
+  const double guess_t = std::hypot(guess[1], guess[2]);
+  if (guess[0] > 0.0 && guess_t > 0.0 && guess_t >= (1.0 - 1e-6) * mu * guess[0]) {
+    phi0 = std::atan2(guess[2], guess[1]);
+  } else if (std::hypot(stick[1], stick[2]) > 0.0) {
+    phi0 = std::atan2(stick[2], stick[1]);
+  } else if (std::hypot(q[1], q[2]) > 0.0) {
+    phi0 = std::atan2(-q[2], -q[1]);
+  }
+
+  int iterations = 0;
+  double phi = phi0;
+  bool found = false;
+  if (newton_unbracketed(equation, phi, iterations, 30)) {
+    phi = wrap_angle(phi);
+    const SlideEquation::Value value = equation.at(phi);
+    found = equation.is_root(value) && equation.admissible(value);
+    if (found) solution.slide_method = SlideMethod::newton;
+  }
+
+  if (!found) {
+    // Scan g on 24 angles from phi0; refine every sign change; keep the admissible root
+    // nearest to phi0.
+    constexpr int kSamples = 24;
+    std::array<double, kSamples + 1> angle{};
+    std::array<double, kSamples + 1> g{};
+    for (int j = 0; j <= kSamples; ++j) {
+      angle[j] = phi0 + kTwoPi * j / kSamples;
+      g[j] = j < kSamples ? equation.at(angle[j]).g : g[0];
+    }
+    std::vector<Candidate> roots;
+    auto consider = [&](double candidate) {
+      candidate = wrap_angle(candidate);
+      const SlideEquation::Value value = equation.at(candidate);
+      if (equation.is_root(value) && equation.admissible(value)) {
+        roots.push_back({candidate, std::abs(wrap_angle(candidate - phi0))});
+      }
+    };
+    for (int j = 0; j < kSamples; ++j) {
+      if (g[j] == 0.0) {
+        consider(angle[j]);
+      } else if ((g[j] < 0.0) != (g[j + 1] < 0.0) && g[j + 1] != 0.0) {
+        consider(newton_bracketed(equation, angle[j], angle[j + 1], g[j], iterations));
+      }
+    }
+    if (roots.empty()) {
+      // No sign change holds an admissible root: a double (tangent) root, or two roots
+      // closer than the sampling. Newton from every local minimum of |g| among the samples.
+      for (int j = 0; j < kSamples; ++j) {
+        const double left = std::abs(g[(j + kSamples - 1) % kSamples]);
+        if (std::abs(g[j]) <= left && std::abs(g[j]) <= std::abs(g[j + 1])) {
+          double candidate = angle[j];
+          newton_unbracketed(equation, candidate, iterations, 60);
+          consider(candidate);
+        }
+      }
+    }
+    solution.slide_method = SlideMethod::scan;
+    if (roots.empty()) {
+      throw NumericalFailure(
+          "coulomb_local: no admissible sliding solution (W not positive definite?)");
+    }
+    phi = std::min_element(roots.begin(), roots.end(),
+                           [](const Candidate& x, const Candidate& y) {
+                             return x.distance < y.distance;
+                           })
+              ->phi;
+  }
+
+  const SlideEquation::Value value = equation.at(phi);
+  const double r_n = -q[0] / value.a;
+  solution.impulse = Eigen::Vector3d(r_n, mu * r_n * std::cos(phi), mu * r_n * std::sin(phi));
+  solution.velocity = W * solution.impulse + q;
+  solution.state = ContactState::slide;
+  solution.newton_iterations = iterations;
+  return solution;
+}
+
+LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3d& q,
+                                  double mu) {
+  return solve_coulomb_local(LocalDelassus(W), q, mu);
+}
+
+Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
+  const double r_t = std::hypot(r[1], r[2]);
+  if (r_t <= mu * r[0]) return r;                       // inside K_μ
+  if (mu * r_t <= -r[0]) return Eigen::Vector3d::Zero();  // inside the polar cone
+  const double r_n = (r[0] + mu * r_t) / (1.0 + mu * mu);
+  const double scale = mu * r_n / r_t;
+  return Eigen::Vector3d(r_n, scale * r[1], scale * r[2]);
+}
+
+Eigen::Vector3d natural_map_residual(const Eigen::Vector3d& r, const Eigen::Vector3d& u,
+                                     double mu) {
+  const Eigen::Vector3d modified(u[0] + mu * std::hypot(u[1], u[2]), u[1], u[2]);
+  return r - project_on_coulomb_cone(r - modified, mu);
+}
+
+}  // namespace wiregrain

@@ -1,0 +1,260 @@
+// Non-Smooth Contact Dynamics (Moreau–Jean) contact solver: nonlinear Gauss–Seidel over
+// contact points with the exact local Signorini–Coulomb solution (core/coulomb_local.h).
+//
+// Moreau–Jean time stepping (Jean, Comput. Methods Appl. Mech. Engrg. 177 (1999) 235; the
+// paper's Sec. 2.1): over a step h, with M the body mass matrix, H the contact Jacobian
+// (local relative velocity u = H V, V = (v, ω) per body) and r the contact impulses,
+//     M (V_{k+1} − V_k) = h f + Hᵀ r,            i.e.  V_{k+1} = V_free + M⁻¹ Hᵀ r,
+//     X_{k+1} = X_k + h ((1 − θ) V_k + θ V_{k+1})      (θ-method position update),
+// with V_free = V_k + h M⁻¹ f the free velocity after the external forces (f independent
+// of the velocity: gravity, the wire forces averaged over the sub-steps). Substituting,
+// u_{k+1} = W r + q with the Delassus operator W = H M⁻¹ Hᵀ and q = H V_free.
+//
+// Contact law, per contact point c (gap g_c ≥ 0 open, < 0 overlap, at the step start):
+// the predicted end-of-step gap g_c + h((1 − θ) u_n^k + θ u_n^{k+1}) must be ≥ 0, i.e.
+//     u_n^{k+1} + s_c ≥ 0,   s_c = (g_c / h + (1 − θ) u_n^k) / θ,
+// (for θ = 1: g + h u_n ≥ 0, the gap anticipation of the issue). An overlap (g < 0) is
+// removed only in part per step: g is replaced by max(β g, −v_o h), β = overlap_recovery
+// ∈ [0, 1] (1: the whole overlap in one step; 0: overlaps are only kept from growing),
+// v_o = overlap_speed ≥ 0 the largest push-out speed. The push-out speed is a real
+// velocity: without the cap an overlap of 0.04 at h = 1e-3 (a grain created across a
+// wall) would leave at 40. u_n^k = H V_k is the
+// normal velocity at the step start. With restitution e > 0, a contact that would close
+// within the step with its start velocity (u_n^k < 0 and g + h u_n^k ≤ 0) gets
+// Newton's impact law u_n^{k+1} ≥ −e u_n^k on top: s_c = min(s_c, e u_n^k). e = 0 (the
+// default) is perfectly inelastic. The shift s_c is added to q_n, so the local problem is
+// the standard one with u_n ≥ 0 (core/coulomb_local.h). θ ∈ [1/2, 1]; default θ = 1
+// (positions advanced with the end-of-step velocity, as core/rigid_body.h's Moreau–Jean
+// step does). With θ < 1 an impacting contact is pushed out at (1 − θ)/θ |u_n^k|, an
+// elastic-like bounce of the gap prediction, hence the default.
+//
+// The solver sees the problem only through a ContactOperator (the idea of Chrono's
+// solver interface: a Delassus operator and a cone projector, not the engine): per
+// contact its diagonal Delassus block W_cc, μ_c, the current local velocity
+// u_c = (W r + q)_c, and a way to add an impulse increment. One Gauss–Seidel sweep:
+//     for c in order:  q_loc = u_c − W_cc r_c   (velocity without the contact's own impulse)
+//                      r_c ← ω solve_coulomb_local(W_cc, q_loc, μ_c) + (1 − ω) r_c
+//                      apply Δr_c (the operator updates u of every contact it touches).
+// Two operators share that sweep: BodyContactOperator (bodies, Jacobians; keeps the body
+// velocities up to date, V += M⁻¹ Hᵀ Δr, never forms W) behind solve_nscd_step, and the
+// reduced operator (W as 3×3 blocks, q, μ: the FCLib "local" problem) behind
+// solve_reduced.
+//
+// Stopping: after each sweep, one of
+//   increment         ‖Δr‖₂ / ‖r‖₂ over the sweep (absolute when r = 0) < tolerance;
+//   natural_map       the Siconos error below < tolerance (costs one more pass per sweep);
+//   increment_then_natural_map   (default; after Siconos' default for fc3d_nsgs) once
+//                     the increment is below the tolerance, the Siconos error must be too;
+//                     while it is not, it is re-checked at doubling intervals (at most a
+//                     twentieth of the sweeps done).
+// or the iteration cap (hit_iteration_cap = true; both numbers are reported).
+//
+// Siconos error (fc3d_compute_error of Siconos numerics 4.4 as fc3d_nsgs calls it, with
+// the De Saxcé modified velocity, natural_map_residual in core/coulomb_local.h):
+//     error = sqrt(Σ_c ‖r_c − proj_{K_μc}(r_c − u_c − μ_c ‖u_t,c‖ e_n)‖²)
+//             / max(‖q‖, ‖r‖, ‖u‖)
+// (no division when the maximum is ≤ DBL_EPSILON). The normalisation was measured on the
+// installed library (Debian's 4.4; releases before 4.x divided by 1 + ‖q‖);
+// bench/fclib_nscd prints both values for every solve.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "core/nscd/coulomb_local.h"
+
+namespace wiregrain {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+// Maps one body's (v, ω) to its part of the local relative velocity (u_n, u_t1, u_t2).
+using ContactJacobian = Eigen::Matrix<double, 3, 6>;
+
+enum class SweepOrder {
+  forward,      // 0, 1, …, n−1 every sweep
+  alternating,  // forward, then backward (n−1, …, 0), and so on (symmetric Gauss–Seidel)
+  random        // a new random permutation every sweep (seeded, reproducible)
+};
+
+enum class ConvergenceMeasure { increment, natural_map, increment_then_natural_map };
+
+// Defaults: random order and the increment-then-natural-map measure. Measured on a
+// column of 20 frictional cubes (4 points per interface, docs/core_nscd.md): to a Siconos
+// error of 1e-6 the forward order needs ~230000 sweeps, alternating ~17000, random ~6500;
+// with the forward order the increment sat near 4e-6 per sweep while the interface loads
+// were still 2e-4 off, so the tolerance is checked on the Siconos error before stopping.
+struct NscdOptions {
+  double tolerance = 1e-4;  // relative residual (DESIGN.md §3 default)
+  int max_iterations = 1000;
+  SweepOrder order = SweepOrder::random;
+  std::uint64_t seed = 1;  // random order
+  double relaxation = 1.0;  // ω in (0, 2): r ← ω r_local + (1 − ω) r
+  ConvergenceMeasure measure = ConvergenceMeasure::increment_then_natural_map;
+  // Moreau–Jean law (solve_nscd_step and assemble_reduced only; see above).
+  double theta = 1.0;        // [0.5, 1]
+  double restitution = 0.0;  // [0, 1]
+  double overlap_recovery = 1.0;  // β ∈ [0, 1]: fraction of an overlap removed per step
+  double overlap_speed = 1e300;   // v_o ≥ 0: largest push-out speed (none by default here)
+
+  // InvalidArgument("tolerance" | "max_iterations" | "relaxation" | "theta" |
+  // "restitution" | "overlap_recovery" | "overlap_speed", ...) on values outside the ranges.
+  void validate() const;
+};
+
+struct NscdReport {
+  int iterations = 0;         // sweeps done
+  double residual = 0.0;      // last value of the stopping measure
+  double increment = 0.0;     // last ‖Δr‖/‖r‖
+  double siconos_error = 0.0; // Siconos error of the returned impulses
+  bool hit_iteration_cap = false;
+  int open = 0, stick = 0, slide = 0;  // contact states in the last sweep
+  long newton_iterations = 0;          // all local slide Newton steps
+  long slide_fallbacks = 0;            // local slide solves that needed the scan
+};
+
+// What the Gauss–Seidel solver needs from a problem. The operator starts in the state
+// r = 0 (velocity(c) = q_c) and follows the increments given to add_impulse.
+class ContactOperator {
+ public:
+  virtual ~ContactOperator() = default;
+  virtual int contact_count() const = 0;
+  virtual const LocalDelassus& delassus_block(int contact) const = 0;
+  virtual double friction_coefficient(int contact) const = 0;
+  // u_c = (W r + q)_c for the impulses added so far.
+  virtual Eigen::Vector3d velocity(int contact) const = 0;
+  // r_c += delta; updates what velocity() depends on.
+  virtual void add_impulse(int contact, const Eigen::Vector3d& delta) = 0;
+  // ‖q‖ (all contacts), the Siconos error's normalisation.
+  virtual double free_velocity_norm() const = 0;
+};
+
+struct ContactSolution {
+  std::vector<Eigen::Vector3d> impulses;  // r_c in the local frame
+  std::vector<ContactState> states;
+  NscdReport report;
+};
+
+// The Gauss–Seidel solver on any operator. warm_start: empty, or one impulse per contact
+// (e.g. the last step's impulses on persistent contacts, zero on new ones), applied to the
+// operator before the first sweep. InvalidArgument("warm_start", ...) on a size mismatch.
+ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
+                                         const std::vector<Eigen::Vector3d>& warm_start = {});
+
+// Siconos error of impulses r on an operator in the state r (see the top of this file).
+double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses);
+
+// ---------------------------------------------------------------------------------------
+// Bodies and contacts of one time step.
+
+struct NscdBody {
+  double inverse_mass = 0.0;                                    // 0: infinite mass
+  Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();    // world frame
+  Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();     // v_k
+  Eigen::Vector3d angular_velocity_begin = Eigen::Vector3d::Zero();  // ω_k
+  Eigen::Vector3d velocity_free = Eigen::Vector3d::Zero();      // v_k + h f / m
+  Eigen::Vector3d angular_velocity_free = Eigen::Vector3d::Zero();   // ω_k + h I⁻¹ T
+};
+
+struct NscdContact {
+  int body_a = -1;  // index into NscdStep::bodies, −1 for none (a fixed wall)
+  int body_b = -1;
+  // u = H_a (v_a, ω_a) + H_b (v_b, ω_b) + velocity_offset, local frame (n, t1, t2).
+  ContactJacobian jacobian_a = ContactJacobian::Zero();
+  ContactJacobian jacobian_b = ContactJacobian::Zero();
+  // Relative velocity from kinematically driven parts not in `bodies` (a moving wall),
+  // the same at the start and end of the step.
+  Eigen::Vector3d velocity_offset = Eigen::Vector3d::Zero();
+  double friction = 0.0;  // μ ≥ 0
+  double gap = 0.0;       // g at the step start (< 0: overlap)
+};
+
+struct NscdStep {
+  double time_step = 0.0;  // h > 0
+  std::vector<NscdBody> bodies;
+  std::vector<NscdContact> contacts;
+};
+
+struct NscdStepResult {
+  ContactSolution contacts;
+  std::vector<Eigen::Vector3d> velocities;          // v_{k+1} per body
+  std::vector<Eigen::Vector3d> angular_velocities;  // ω_{k+1} per body
+  double max_overlap = 0.0;              // max(0, −min g_c) at the step start
+  double max_predicted_penetration = 0.0;  // max(0, −min(g_c + h((1−θ)u_n^k + θ u_n^{k+1})))
+};
+
+// One Moreau–Jean contact solve: impulses and end-of-step velocities. Throws
+// InvalidArgument("time_step" | "bodies" | "contacts" | options keywords, ...) on bad input
+// (body index out of range, a contact whose Delassus block has W_nn ≤ 0, e.g. between two
+// infinite masses; negative inverse mass; μ < 0; non-finite data).
+NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
+                               const std::vector<Eigen::Vector3d>& warm_start = {});
+
+// Local frame from a unit normal n (normalised here): columns (n, t1, t2), right-handed,
+// t1 ⟂ n chosen from the coordinate axis least aligned with n.
+Eigen::Matrix3d contact_frame(const Eigen::Vector3d& normal);
+// Jacobian block of a body for a contact point at lever arm p − x_body, frame columns
+// (n, t1, t2): u += sign · frameᵀ (v + ω × arm), sign = +1 for body_b, −1 for body_a
+// (u is the velocity of b relative to a; n points from a to b).
+ContactJacobian contact_jacobian(const Eigen::Matrix3d& frame, const Eigen::Vector3d& arm,
+                                 double sign);
+
+// θ-method displacement over a step: h ((1 − θ) v_k + θ v_{k+1}).
+inline Eigen::Vector3d theta_method_displacement(const Eigen::Vector3d& v_begin,
+                                                 const Eigen::Vector3d& v_end, double h,
+                                                 double theta) {
+  return h * ((1.0 - theta) * v_begin + theta * v_end);
+}
+
+// ---------------------------------------------------------------------------------------
+// Reduced ("local" in FCLib's words) problem: u = W r + q, W given as 3×3 blocks.
+
+// n × n blocks of 3×3, stored by block row (each row sorted by column).
+class BlockSparseMatrix3 {
+ public:
+  struct Entry {
+    int column;
+    Eigen::Matrix3d block;
+  };
+
+  BlockSparseMatrix3() = default;
+  explicit BlockSparseMatrix3(int block_count);
+
+  int block_count() const { return static_cast<int>(rows_.size()); }
+  long stored_blocks() const;
+  // Adds `block` to block (row, column), creating it if absent.
+  void add(int row, int column, const Eigen::Matrix3d& block);
+  // nullptr when the block is not stored.
+  const Eigen::Matrix3d* find(int row, int column) const;
+  const std::vector<Entry>& row(int row) const { return rows_[row]; }
+
+  // Keeps the blocks with at least one non-zero entry. dense: 3n × 3n.
+  static BlockSparseMatrix3 from_dense(const Eigen::MatrixXd& dense);
+  Eigen::MatrixXd to_dense() const;
+  Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+
+ private:
+  std::vector<std::vector<Entry>> rows_;
+};
+
+struct ReducedProblem {
+  BlockSparseMatrix3 W;
+  Eigen::VectorXd q;           // 3n
+  std::vector<double> mu;      // n
+  int contact_count() const { return W.block_count(); }
+  // InvalidArgument("W" | "q" | "mu", ...): sizes, a missing or W_nn ≤ 0 diagonal block,
+  // μ < 0, non-finite data.
+  void validate() const;
+};
+
+// The reduced problem of a time step: W = H M⁻¹ Hᵀ (blocks between contacts sharing a
+// body) and q = H V_free + velocity_offset + s e_n with the contact-law shift s of the
+// options (θ, restitution). Its solution equals solve_nscd_step's (same sweep).
+ReducedProblem assemble_reduced(const NscdStep& step, const NscdOptions& options);
+
+ContactSolution solve_reduced(const ReducedProblem& problem, const NscdOptions& options,
+                              const std::vector<Eigen::Vector3d>& warm_start = {});
+
+// Siconos error of impulses r (one per contact) for a reduced problem.
+double siconos_error(const ReducedProblem& problem, const std::vector<Eigen::Vector3d>& r);
+
+}  // namespace wiregrain

@@ -1,0 +1,207 @@
+#include "core/wire/wire_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+
+namespace wiregrain {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// A length ratio this close to an integer counts as that integer, so that e.g.
+// length 1 with l_w 0.2 (1/0.2 = 4.999... in floating point) gives 5 segments.
+constexpr double kCountTolerance = 1e-9;
+
+
+long whole_segments(double ratio) {
+  return static_cast<long>(std::floor(ratio * (1.0 + kCountTolerance)));
+}
+
+// Azimuth step Δφ ∈ (0, π] of a helix chord of length l:
+// f(Δφ) = (2R sin(Δφ/2))² + (p Δφ/2π)² − l² is increasing on [0, π], f(0) = −l² < 0;
+// bisection to the last representable bit.
+double helix_azimuth_step(double radius, double pitch, double l) {
+  const auto chord2_minus_l2 = [&](double dphi) {
+    const double horizontal = 2.0 * radius * std::sin(0.5 * dphi);
+    const double vertical = pitch * dphi / (2.0 * kPi);
+    return horizontal * horizontal + vertical * vertical - l * l;
+  };
+  if (pitch == 0.0) return 2.0 * std::asin(l / (2.0 * radius));
+  double lo = 0.0, hi = kPi;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (chord2_minus_l2(mid) < 0.0 ? lo : hi) = mid;
+  }
+  // the end whose chord is closer to l
+  return std::abs(chord2_minus_l2(lo)) < std::abs(chord2_minus_l2(hi)) ? lo : hi;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> wire_line(const Eigen::Vector3d& start,
+                                       const Eigen::Vector3d& direction, double length,
+                                       double segment_length) {
+  require_positive("segment_length", segment_length);
+  require_positive("length", length);
+  if (!start.allFinite())
+    throw InvalidArgument("start", "start must be a finite point");
+  const double dir_norm = direction.norm();
+  if (!(dir_norm > 0.0) || !std::isfinite(dir_norm))
+    throw InvalidArgument("direction", "direction must be a finite non-zero vector, got (" +
+                                           format_number(direction.x()) + ", " +
+                                           format_number(direction.y()) + ", " +
+                                           format_number(direction.z()) + ")");
+  const long segments = whole_segments(length / segment_length);
+  if (segments < 1)
+    throw InvalidArgument("length", "length must be at least one segment_length (" +
+                                        format_number(segment_length) + "), got " +
+                                        format_number(length));
+  const Eigen::Vector3d step = direction / dir_norm;
+  std::vector<Eigen::Vector3d> nodes;
+  nodes.reserve(static_cast<std::size_t>(segments) + 1);
+  for (long k = 0; k <= segments; ++k)
+    nodes.push_back(start + (static_cast<double>(k) * segment_length) * step);
+  return nodes;
+}
+
+std::vector<Eigen::Vector3d> wire_helix(const WireHelix& h, double segment_length) {
+  require_positive("segment_length", segment_length);
+  require_positive("radius", h.radius);
+  require_positive("turns", h.turns);
+  require_finite("pitch", h.pitch);
+  require_finite("centre_x", h.centre_x);
+  require_finite("centre_y", h.centre_y);
+  require_finite("z", h.z);
+  require_finite("start_angle", h.start_angle);
+  const double l = segment_length;
+  if (4.0 * h.radius * h.radius + 0.25 * h.pitch * h.pitch < l * l)
+    throw InvalidArgument("radius", "radius " + format_number(h.radius) +
+                                        " is too small for segment_length " +
+                                        format_number(l) +
+                                        ": one segment must fit in half a turn "
+                                        "(4 radius^2 + pitch^2/4 >= segment_length^2)");
+  const double dphi = helix_azimuth_step(h.radius, h.pitch, l);
+  const long segments = whole_segments(2.0 * kPi * h.turns / dphi);
+  if (segments < 1)
+    throw InvalidArgument("turns", "turns " + format_number(h.turns) +
+                                       " is shorter than one segment");
+  std::vector<Eigen::Vector3d> nodes;
+  nodes.reserve(static_cast<std::size_t>(segments) + 1);
+  for (long k = 0; k <= segments; ++k) {
+    const double swept = static_cast<double>(k) * dphi;
+    const double phi = h.start_angle + swept;
+    nodes.emplace_back(h.centre_x + h.radius * std::cos(phi),
+                       h.centre_y + h.radius * std::sin(phi),
+                       h.z + h.pitch * swept / (2.0 * kPi));
+  }
+  return nodes;
+}
+
+std::vector<Eigen::Vector3d> wire_loop(double centre_x, double centre_y, double z,
+                                       double radius, double turns, double pitch,
+                                       double segment_length) {
+  WireHelix h;
+  h.centre_x = centre_x;
+  h.centre_y = centre_y;
+  h.z = z;
+  h.radius = radius;
+  h.turns = turns;
+  h.pitch = pitch;
+  return wire_helix(h, segment_length);
+}
+
+std::vector<Eigen::Vector3d> wire_polyline(const std::vector<Eigen::Vector3d>& points,
+                                           double segment_length) {
+  require_positive("segment_length", segment_length);
+  if (points.size() < 2)
+    throw InvalidArgument("points", "a polyline needs at least 2 points, got " +
+                                        std::to_string(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite())
+      throw InvalidArgument("points", "polyline point " + std::to_string(i + 1) +
+                                          " is not a finite point");
+    if (i > 0 && (points[i] - points[i - 1]).squaredNorm() == 0.0)
+      throw InvalidArgument("points", "polyline points " + std::to_string(i) + " and " +
+                                          std::to_string(i + 1) +
+                                          " coincide (zero-length piece)");
+  }
+  const double l2 = segment_length * segment_length;
+  std::vector<Eigen::Vector3d> nodes{points[0]};
+  Eigen::Vector3d node = points[0];
+  std::size_t piece = 0;  // the polyline piece [points[piece], points[piece+1]] holding node
+  while (true) {
+    bool found = false;
+    for (std::size_t s = piece; s + 1 < points.size(); ++s) {
+      const Eigen::Vector3d& b = points[s + 1];
+      if ((b - node).squaredNorm() < l2) continue;
+      // The piece from a to b leaves the sphere |q − node| = l_w: q = a + u (b − a) with
+      // |a − node + u d|² = l_w², the larger root (the start is inside, so the roots
+      // have opposite signs or the smaller one is below the start).
+      const Eigen::Vector3d a = (s == piece) ? node : points[s];
+      const Eigen::Vector3d d = b - a, w = a - node;
+      const double qa = d.squaredNorm(), qb = w.dot(d), qc = w.squaredNorm() - l2;
+      const double root = std::sqrt(std::max(0.0, qb * qb - qa * qc));
+      // stable form of (−qb + root)/qa
+      double u = qb > 0.0 ? -qc / (qb + root) : (root - qb) / qa;
+      u = std::min(1.0, std::max(0.0, u));
+      node = a + u * d;
+      nodes.push_back(node);
+      piece = s;
+      found = true;
+      break;
+    }
+    if (!found) break;
+  }
+  if (nodes.size() < 2)
+    throw InvalidArgument("points", "the polyline never gets segment_length (" +
+                                        format_number(segment_length) +
+                                        ") away from its first point");
+  return nodes;
+}
+
+std::vector<Eigen::Vector3d> read_polyline(std::istream& in, const std::string& source_name) {
+  std::vector<Eigen::Vector3d> points;
+  std::string line;
+  long line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const std::string content = line.substr(0, line.find('#'));
+    std::istringstream words(content);
+    std::vector<std::string> tokens;
+    for (std::string t; words >> t;) tokens.push_back(t);
+    if (tokens.empty()) continue;
+    const auto fail = [&]() {
+      throw InvalidArgument("file", "line " + std::to_string(line_number) + " of '" +
+                                        source_name +
+                                        "': expected three finite numbers x y z, got '" +
+                                        line + "'");
+    };
+    if (tokens.size() != 3) fail();
+    Eigen::Vector3d p;
+    for (int c = 0; c < 3; ++c) {
+      const char* begin = tokens[c].c_str();
+      char* end = nullptr;
+      p[c] = std::strtod(begin, &end);
+      if (end == begin || *end != '\0' || !std::isfinite(p[c])) fail();
+    }
+    points.push_back(p);
+  }
+  if (in.bad())
+    throw InvalidArgument("file", "reading '" + source_name + "' failed");
+  return points;
+}
+
+std::vector<Eigen::Vector3d> read_polyline_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InvalidArgument("file", "cannot open polyline file '" + path + "'");
+  return read_polyline(in, path);
+}
+
+}  // namespace wiregrain

@@ -1,0 +1,194 @@
+#include "dump_polyhedron_vtk.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "domain.h"
+#include "error.h"
+#include "update.h"
+
+#include "core/geometry/shape_library.h"
+#include "plugin_args.h"
+#include "plugin_vtk.h"
+
+#ifdef LAMMPS_VTK
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#endif
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Columns of one grain in the dump buffer.
+enum Column { TAG, TYPE, SHAPE, X, Y, Z, QW, QI, QJ, QK, VX, VY, VZ, WX, WY, WZ, kColumns };
+
+const char *const kKind = "dump";
+const char *const kStyle = "polyhedron/vtk";
+
+}  // namespace
+
+DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
+    : DumpVtp(lmp, narg, arg, kStyle), sweep_(false), grains_(NULL), warned_shapeless_(false) {
+  wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
+#ifndef LAMMPS_VTK
+  args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
+#endif
+  grains_ = AtomVecPolyhedron::of(atom);
+  if (!grains_)
+    args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" +
+              std::string(atom->atom_style) + "'");
+
+  take_pattern(args);
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (key == "format") {
+      take_format(args);
+    } else if (key == "sweep") {
+      const std::string value = args.value_word(key);
+      if (value == "yes") sweep_ = true;
+      else if (value == "no") sweep_ = false;
+      else args.fail("value of 'sweep' must be 'yes' or 'no', got '" + value + "'");
+    } else {
+      args.unknown_keyword(key);
+    }
+  }
+
+  size_one = kColumns;
+}
+
+DumpPolyhedronVTK::~DumpPolyhedronVTK() {}
+
+void DumpPolyhedronVTK::init_style() {}
+
+void DumpPolyhedronVTK::pack(int *ids) {
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask, *tag = atom->tag, *type = atom->type, *shape = atom->shapetype;
+  double **x = atom->x, **v = atom->v, **omega = atom->omega, **quat = atom->quaternion;
+  const tagint *image = atom->image;
+
+  int m = 0, n = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *row = buf + m;
+    row[TAG] = tag[i];
+    row[TYPE] = type[i];
+    row[SHAPE] = shape[i];
+    double unwrapped[3];  // unwrapped as dump wire/vtk, so grains and wires stay together
+    domain->unmap(x[i], image[i], unwrapped);
+    for (int d = 0; d < 3; d++) {
+      row[X + d] = unwrapped[d];
+      row[VX + d] = v[i][d];
+      row[WX + d] = omega[i][d];
+    }
+    for (int d = 0; d < 4; d++) row[QW + d] = quat[i][d];
+    if (ids) ids[n] = tag[i];
+    m += size_one;
+    n++;
+  }
+}
+
+void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
+#ifdef LAMMPS_VTK
+  const wiregrain::ShapeLibrary &library = grains_->shapes();
+  const int nrows = static_cast<int>(gathered_.size() / size_one);
+  const auto value = [&](int r, int column) { return gathered_[static_cast<size_t>(r) * size_one + column]; };
+
+  // grains in id order (the same file whatever the decomposition); shapeless ones left out
+  std::vector<int> rows;
+  rows.reserve(nrows);
+  int shapeless = 0;
+  vtkIdType npoints = 0, ncells = 0;
+  for (int r = 0; r < nrows; r++) {
+    const int s = static_cast<int>(value(r, SHAPE));
+    if (s < 0) {
+      shapeless++;
+      continue;
+    }
+    if (s >= library.size())
+      error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): grain " +
+                         std::to_string(static_cast<long>(value(r, TAG))) + " has shape " + std::to_string(s) +
+                         ", the library has " + std::to_string(library.size()) + " shapes").c_str());
+    rows.push_back(r);
+    for (const auto &face : library[s].shape.faces()) {
+      npoints += static_cast<vtkIdType>(face.vertices.size());
+      ncells++;
+    }
+  }
+  std::stable_sort(rows.begin(), rows.end(), [&](int a, int b) { return value(a, TAG) < value(b, TAG); });
+  if (shapeless > 0 && !warned_shapeless_) {
+    warned_shapeless_ = true;
+    error->warning(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): " + std::to_string(shapeless) +
+                           " grains without a shape (shape -1) are not written").c_str());
+  }
+
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(npoints);
+  auto velocity = vtkSmartPointer<vtkDoubleArray>::New();
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(npoints);
+  auto angular_velocity = vtkSmartPointer<vtkDoubleArray>::New();
+  angular_velocity->SetName("angular_velocity");
+  angular_velocity->SetNumberOfComponents(3);
+  angular_velocity->SetNumberOfTuples(npoints);
+  vtkSmartPointer<vtkIntArray> cell_values[3];
+  const char *cell_names[3] = {"id", "type", "shape"};
+  for (int k = 0; k < 3; k++) {
+    cell_values[k] = vtkSmartPointer<vtkIntArray>::New();
+    cell_values[k]->SetName(cell_names[k]);
+    cell_values[k]->SetNumberOfTuples(ncells);
+  }
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->AllocateExact(ncells, npoints);
+
+  vtkIdType p = 0, c = 0;
+  for (int r : rows) {
+    const wiregrain::ConvexShape &shape = library[static_cast<int>(value(r, SHAPE))].shape;
+    const Eigen::Matrix3d rotation =
+        Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized().toRotationMatrix();
+    const Eigen::Vector3d centre(value(r, X), value(r, Y), value(r, Z));
+    const double offset = sweep_ ? shape.sweep_radius() : 0.0;
+    const int grain_values[3] = {static_cast<int>(value(r, TAG)), static_cast<int>(value(r, TYPE)),
+                                 static_cast<int>(value(r, SHAPE))};
+    for (const auto &face : shape.faces()) {
+      const Eigen::Vector3d shift = offset * face.normal;
+      polys->InsertNextCell(static_cast<vtkIdType>(face.vertices.size()));
+      for (int vertex : face.vertices) {
+        const Eigen::Vector3d q = centre + rotation * (shape.vertices()[vertex] + shift);
+        points->SetPoint(p, q.x(), q.y(), q.z());
+        velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
+        angular_velocity->SetTuple3(p, value(r, WX), value(r, WY), value(r, WZ));
+        polys->InsertCellPoint(p);
+        p++;
+      }
+      for (int k = 0; k < 3; k++) cell_values[k]->SetValue(c, grain_values[k]);
+      c++;
+    }
+  }
+
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  poly->GetPointData()->AddArray(velocity);
+  poly->GetPointData()->AddArray(angular_velocity);
+  for (int k = 0; k < 3; k++) poly->GetCellData()->AddArray(cell_values[k]);
+
+  if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
+    error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
+#else
+  (void)path;
+#endif
+}

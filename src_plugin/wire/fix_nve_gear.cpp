@@ -1,0 +1,177 @@
+#include "fix_nve_gear.h"
+
+#include <cstring>
+
+#include "atom.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "update.h"
+
+#include "core/wire/gear_integrator.h"
+#include "plugin_args.h"
+#include "plugin_comm.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr int kStartedFlag = wiregrain::kGearHistorySize;   // index of the flag
+constexpr int kPerAtom = wiregrain::kGearHistorySize + 1;    // values stored per atom
+}  // namespace
+
+FixNVEGear::FixNVEGear(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), scheme_(GEAR5), velocity_forces_(false), dt_(0.0), history_(NULL) {
+  wiregrain_lmp::StyleArgs args(error, "fix", "nve/gear", id, narg, arg, 3);
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (key == "scheme") {
+      const std::string v = args.value_word(key);
+      if (v == "gear5") scheme_ = GEAR5;
+      else if (v == "verlet") scheme_ = VERLET;
+      else args.fail("value of 'scheme' must be gear5 or verlet, got '" + v + "'");
+    } else if (key == "forces") {
+      const std::string v = args.value_word(key);
+      if (v == "position") velocity_forces_ = false;
+      else if (v == "velocity") velocity_forces_ = true;
+      else args.fail("value of 'forces' must be position or velocity, got '" + v + "'");
+    } else {
+      args.unknown_keyword(key);
+    }
+  }
+
+  time_integrate = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  atom->add_callback(1);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixNVEGear::~FixNVEGear() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(history_);
+}
+
+int FixNVEGear::setmask() {
+  int mask = 0;
+  mask |= INITIAL_INTEGRATE;
+  mask |= FINAL_INTEGRATE;
+  return mask;
+}
+
+void FixNVEGear::init() {
+  if (!atom->rmass_flag && !atom->mass_setflag)
+    wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                               "atoms need a mass (per-atom rmass or 'mass' per type)");
+  if (atom->rmass_flag == 0) {
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (!atom->mass_setflag[t])
+        wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                                   "mass of atom type " + std::to_string(t) + " is not set");
+  }
+  dt_ = update->dt;
+}
+
+void FixNVEGear::reset_dt() { dt_ = update->dt; }
+
+double FixNVEGear::mass_of(int i) const {
+  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+}
+
+void FixNVEGear::start_history(int i) {
+  const double inv_m = force->ftm2v / mass_of(i);
+  const double a[3] = {atom->f[i][0] * inv_m, atom->f[i][1] * inv_m, atom->f[i][2] * inv_m};
+  wiregrain::gear5_start(history_[i], a);
+  history_[i][kStartedFlag] = 1.0;
+}
+
+// The forces of the setup step give each new atom its first acceleration; atoms that
+// carry a history (restart, earlier run) keep it.
+void FixNVEGear::setup(int /*vflag*/) {
+  if (scheme_ != GEAR5) return;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if ((atom->mask[i] & groupbit) && history_[i][kStartedFlag] == 0.0) start_history(i);
+}
+
+void FixNVEGear::initial_integrate(int /*vflag*/) {
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  if (scheme_ == GEAR5) {
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) wiregrain::gear5_predict(x[i], v[i], history_[i], dt_);
+  } else {
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) {
+        const double inv_m = force->ftm2v / mass_of(i);
+        const double a[3] = {f[i][0] * inv_m, f[i][1] * inv_m, f[i][2] * inv_m};
+        wiregrain::verlet_kick_drift(x[i], v[i], a, dt_);
+      }
+  }
+}
+
+void FixNVEGear::final_integrate() {
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const wiregrain::GearCorrector corrector(velocity_forces_
+                                                ? wiregrain::GearCoefficients::velocity_forces()
+                                                : wiregrain::GearCoefficients::position_forces(),
+                                            dt_);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double inv_m = force->ftm2v / mass_of(i);
+    const double a[3] = {f[i][0] * inv_m, f[i][1] * inv_m, f[i][2] * inv_m};
+    if (scheme_ == VERLET) {
+      wiregrain::verlet_kick(v[i], a, dt_);
+    } else if (history_[i][kStartedFlag] == 0.0) {
+      // an atom created during the run (fix insert/...): its first step predicted with a
+      // zero history; start the history from the force it feels now.
+      wiregrain::gear5_start(history_[i], a);
+      history_[i][kStartedFlag] = 1.0;
+    } else {
+      wiregrain::gear5_correct(x[i], v[i], history_[i], a, corrector);
+    }
+  }
+}
+
+double FixNVEGear::memory_usage() { return double(atom->nmax) * kPerAtom * sizeof(double); }
+
+void FixNVEGear::grow_arrays(int nmax) { memory->grow(history_, nmax, kPerAtom, "nve/gear:history"); }
+
+void FixNVEGear::copy_arrays(int i, int j, int /*delflag*/) {
+  std::memcpy(history_[j], history_[i], kPerAtom * sizeof(double));
+}
+
+void FixNVEGear::set_arrays(int i) {
+  for (int k = 0; k < kPerAtom; k++) history_[i][k] = 0.0;
+}
+
+int FixNVEGear::pack_exchange(int i, double *buf) {
+  for (int k = 0; k < kPerAtom; k++) buf[k] = history_[i][k];
+  return kPerAtom;
+}
+
+int FixNVEGear::unpack_exchange(int nlocal, double *buf) {
+  for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = buf[k];
+  return kPerAtom;
+}
+
+int FixNVEGear::pack_restart(int i, double *buf) {
+  buf[0] = kPerAtom + 1;
+  for (int k = 0; k < kPerAtom; k++) buf[k + 1] = history_[i][k];
+  return kPerAtom + 1;
+}
+
+void FixNVEGear::unpack_restart(int nlocal, int nth) {
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth);
+  for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = record[k];
+}
+
+int FixNVEGear::size_restart(int /*nlocal*/) { return kPerAtom + 1; }
+
+int FixNVEGear::maxsize_restart() { return kPerAtom + 1; }

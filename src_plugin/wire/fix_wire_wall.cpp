@@ -1,0 +1,211 @@
+#include "fix_wire_wall.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "atom.h"
+#include "atom_vec_wire.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_wire_contact_history.h"
+#include "modify.h"
+#include "update.h"
+
+#include "core/contact/soft_contact.h"
+#include "plugin_args.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg),
+      youngs_modulus_(100.0),
+      poisson_ratio_(0.0),
+      static_friction_(0.5),
+      dynamic_friction_(0.5),
+      damping_ratio_(wiregrain::damping_ratio_from_restitution(0.5)),
+      limit_force_(false),
+      reference_step_(0),
+      reference_dt_(0.0),
+      wire_(NULL),
+      history_(NULL),
+      stats_step_(-1) {
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/wall", id, narg, arg, 3);
+  wire_ = AtomVecWire::of(atom);
+  if (!wire_)
+    args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
+  if (args.done() || args.next_keyword() != "plane") args.fail("expected 'plane px py pz nx ny nz'");
+  for (int d = 0; d < 3; d++) point_[d] = args.value_double("plane");
+  for (int d = 0; d < 3; d++) normal_[d] = args.value_double("plane");
+  const double length = std::sqrt(normal_[0] * normal_[0] + normal_[1] * normal_[1] + normal_[2] * normal_[2]);
+  if (!(length > 0.0)) args.fail("the plane normal (nx ny nz) must not be zero");
+  for (int d = 0; d < 3; d++) {
+    normal_[d] /= length;
+    velocity_[d] = 0.0;
+  }
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (key == "E") youngs_modulus_ = args.value_positive(key);
+    else if (key == "nu") {
+      poisson_ratio_ = args.value_nonnegative(key);
+      if (poisson_ratio_ >= 0.5) args.fail("value of 'nu' must be < 0.5");
+    } else if (key == "mu_s") static_friction_ = args.value_nonnegative(key);
+    else if (key == "mu_d") dynamic_friction_ = args.value_nonnegative(key);
+    else if (key == "restitution") {
+      const double e = args.value_nonnegative(key);
+      if (e > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
+      damping_ratio_ = wiregrain::damping_ratio_from_restitution(e);
+    } else if (key == "damping_ratio") damping_ratio_ = args.value_nonnegative(key);
+    else if (key == "limit_force") {
+      const std::string v = args.value_word(key);
+      if (v != "yes" && v != "no") args.fail("value of 'limit_force' must be yes or no");
+      limit_force_ = v == "yes";
+    } else if (key == "velocity") {
+      for (int d = 0; d < 3; d++) velocity_[d] = args.value_double(key);
+    } else {
+      args.unknown_keyword(key);
+    }
+  }
+  if (dynamic_friction_ > static_friction_)
+    args.fail("mu_d (" + std::to_string(dynamic_friction_) + ") must not exceed mu_s (" +
+              std::to_string(static_friction_) + ")");
+
+  reference_step_ = update->ntimestep;
+  reference_dt_ = update->dt;
+  restart_global = 1;
+  vector_flag = 1;
+  size_vector = 5;
+  global_freq = 1;
+  extvector = 0;
+  for (int k = 0; k < 5; k++) local_stats_[k] = global_stats_[k] = 0.0;
+
+  history_id_ = std::string("WIRE_WALL_HISTORY_") + id;
+}
+
+// after Modify::add_fix has finished with this fix, which a nested add_fix would upset
+void FixWireWall::post_create() {
+  if (modify->find_fix(history_id_.c_str()) < 0) {
+    std::string group = "all", style = "wire/contact/history";
+    char *history_args[3] = {&history_id_[0], &group[0], &style[0]};
+    modify->add_fix(3, history_args);
+  }
+}
+
+FixWireWall::~FixWireWall() {
+  if (modify->find_fix(history_id_.c_str()) >= 0) modify->delete_fix(history_id_.c_str());
+}
+
+int FixWireWall::setmask() { return POST_FORCE; }
+
+void FixWireWall::init() {
+  // re-reference at every run start, so a `timestep` command between runs is honoured
+  current_point(point_);
+  reference_step_ = update->ntimestep;
+  reference_dt_ = update->dt;
+  history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
+}
+
+void FixWireWall::setup(int vflag) { post_force(vflag); }
+
+void FixWireWall::current_point(double p[3]) const {
+  const double t = reference_dt_ * double(update->ntimestep - reference_step_);
+  for (int d = 0; d < 3; d++) p[d] = point_[d] + velocity_[d] * t;
+}
+
+// a changed time step: the wall continues from where it is
+void FixWireWall::reset_dt() {
+  current_point(point_);
+  reference_step_ = update->ntimestep;
+  reference_dt_ = update->dt;
+}
+
+void FixWireWall::post_force(int /*vflag*/) {
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *mask = atom->mask, *prev = wire_->wire_prev;
+  const double *radius = atom->radius, *rmass = atom->rmass, *rest = wire_->wire_rest;
+  const int nlocal = atom->nlocal;
+  double p[3];
+  current_point(p);
+  const Eigen::Vector3d n(normal_[0], normal_[1], normal_[2]);
+  const Eigen::Vector3d wall_velocity(velocity_[0], velocity_[1], velocity_[2]);
+  const double e_star = wiregrain::rigid_wall_modulus(youngs_modulus_, poisson_ratio_);
+
+  const bool setup = update->setupflag != 0;
+  history_->begin_step();
+  for (int k = 0; k < 5; k++) local_stats_[k] = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double gap = (x[i][0] - p[0]) * n.x() + (x[i][1] - p[1]) * n.y() + (x[i][2] - p[2]) * n.z() - radius[i];
+    if (gap >= 0.0) continue;
+    // the segment length the bead stands for: its own, or its previous bead's at the end
+    double length = rest[i];
+    if (length <= 0.0 && prev[i]) {
+      const int j = atom->map(prev[i]);
+      if (j >= 0) length = rest[j];
+    }
+    if (length <= 0.0) length = 2.0 * radius[i];  // a lone bead: a sphere
+    wiregrain::SoftContactLaw law;
+    law.normal_stiffness = e_star * length * kPi / 4.0;
+    law.tangential_stiffness = e_star * radius[i];
+    law.damping_ratio = damping_ratio_;
+    law.static_friction = static_friction_;
+    law.dynamic_friction = dynamic_friction_;
+    law.limit_force = limit_force_;
+    wiregrain::TangentialHistory h;
+    history_->lookup(i, 0, h);
+    const Eigen::Vector3d u = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]) - wall_velocity;
+    // the setup force call of a run does not advance the spring (see pair wire/contact)
+    wiregrain::TangentialHistory advanced = h;
+    const wiregrain::SoftContactForce fc =
+        wiregrain::soft_contact_force(law, -gap, n, u, setup ? 0.0 : update->dt, rmass[i], advanced);
+    history_->store(i, 0, setup ? h : advanced);
+    for (int d = 0; d < 3; d++) {
+      f[i][d] += fc.force[d];
+      local_stats_[2 + d] -= fc.force[d];
+    }
+    local_stats_[0] += 1.0;
+    local_stats_[1] = std::max(local_stats_[1], -gap);
+  }
+  history_->end_step();
+  stats_step_ = -1;
+}
+
+double FixWireWall::compute_vector(int k) {
+  if (stats_step_ != update->ntimestep) {
+    double sums[4] = {local_stats_[0], local_stats_[2], local_stats_[3], local_stats_[4]}, total[4];
+    MPI_Allreduce(sums, total, 4, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&local_stats_[1], &global_stats_[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    global_stats_[0] = total[0];
+    for (int d = 0; d < 3; d++) global_stats_[2 + d] = total[1 + d];
+    stats_step_ = update->ntimestep;
+  }
+  return global_stats_[k];
+}
+
+// The wall's current position, so a restarted run continues from it.
+void FixWireWall::write_restart(FILE *fp) {
+  double p[3];
+  current_point(p);
+  if (comm->me == 0) {
+    const int size = 3 * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(p, sizeof(double), 3, fp);
+  }
+}
+
+void FixWireWall::restart(char *buf) {
+  const double *p = reinterpret_cast<const double *>(buf);
+  for (int d = 0; d < 3; d++) point_[d] = p[d];
+  reference_step_ = update->ntimestep;
+  reference_dt_ = update->dt;
+}

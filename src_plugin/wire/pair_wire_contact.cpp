@@ -1,0 +1,403 @@
+#include "pair_wire_contact.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "atom.h"
+#include "atom_vec_wire.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_wire_contact_history.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "core/common/errors.h"
+#include "core/geometry/segment_distance.h"
+#include "core/contact/soft_contact.h"
+#include "plugin_args.h"
+#include "plugin_comm.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+// The bead-pair cutoff must reach the far ends of two segments: allow 25 % stretch.
+constexpr double kStretchAllowance = 1.25;
+const char kHistoryId[] = "WIRE_CONTACT_HISTORY";
+
+Eigen::Vector3d as_vector(const double *x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
+
+void add_force(double *f, double weight, const Eigen::Vector3d &g) {
+  f[0] += weight * g.x();
+  f[1] += weight * g.y();
+  f[2] += weight * g.z();
+}
+}  // namespace
+
+PairWireContact::PairWireContact(LAMMPS *lmp)
+    : Pair(lmp),
+      coefficients_(NULL),
+      wire_(NULL),
+      history_(NULL),
+      reach_(0.0),
+      stats_step_(-1),
+      segment_next_(NULL),
+      segment_end_(NULL),
+      segment_capacity_(0) {
+  defaults_.youngs_modulus = 100.0;
+  defaults_.poisson_ratio = 0.0;
+  defaults_.static_friction = 0.5;
+  defaults_.dynamic_friction = 0.5;
+  defaults_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
+  defaults_.limit_force = false;
+  comm_reverse = 3;
+  for (int k = 0; k < 3; k++) local_stats_[k] = global_stats_[k] = 0.0;
+}
+
+PairWireContact::~PairWireContact() {
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(coefficients_);
+  }
+  if (history_ && modify->find_fix(kHistoryId) >= 0) modify->delete_fix(kHistoryId);
+  memory->destroy(segment_next_);
+  memory->destroy(segment_end_);
+}
+
+void PairWireContact::allocate() {
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(coefficients_, n + 1, n + 1, "pair:coefficients");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+}
+
+void PairWireContact::parse(int narg, char **arg, int first, Coefficients &c, const char *kind) {
+  wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first);
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (key == "E") c.youngs_modulus = args.value_positive(key);
+    else if (key == "nu") {
+      c.poisson_ratio = args.value_nonnegative(key);
+      if (c.poisson_ratio >= 0.5) args.fail("value of 'nu' must be < 0.5");
+    } else if (key == "mu_s") c.static_friction = args.value_nonnegative(key);
+    else if (key == "mu_d") c.dynamic_friction = args.value_nonnegative(key);
+    else if (key == "restitution") {
+      const double e = args.value_nonnegative(key);
+      if (e > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
+      c.damping_ratio = wiregrain::damping_ratio_from_restitution(e);
+    } else if (key == "damping_ratio") {
+      c.damping_ratio = args.value_nonnegative(key);
+    } else if (key == "limit_force") {
+      const std::string v = args.value_word(key);
+      if (v != "yes" && v != "no") args.fail("value of 'limit_force' must be yes or no");
+      c.limit_force = v == "yes";
+    } else {
+      args.unknown_keyword(key);
+    }
+  }
+  if (c.dynamic_friction > c.static_friction)
+    args.fail("mu_d (" + std::to_string(c.dynamic_friction) + ") must not exceed mu_s (" +
+              std::to_string(c.static_friction) + ")");
+}
+
+void PairWireContact::settings(int narg, char **arg) {
+  parse(narg, arg, 0, defaults_, "pair_style");
+  if (allocated)  // a new pair_style command resets the coefficients
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = 0;
+}
+
+void PairWireContact::coeff(int narg, char **arg) {
+  if (narg < 2) error->all(FLERR, "pair_coeff wire/contact (id -): expected: pair_coeff I J [keywords]");
+  if (!allocated) allocate();
+  // atom types as LIGGGHTS writes them (N, *, N*, *N, M*N), checked here for a clear message
+  int ilo, ihi, jlo, jhi;
+  for (int k = 0; k < 2; k++) {
+    const std::string word = arg[k];
+    const bool star = word.find('*') != std::string::npos;
+    if (!star) {
+      char *end = NULL;
+      const long t = std::strtol(word.c_str(), &end, 10);
+      if (end == word.c_str() || *end != '\0' || t < 1 || t > atom->ntypes)
+        error->all(FLERR, ("pair_coeff wire/contact (id -): atom type '" + word + "' is not one of 1.." +
+                           std::to_string(atom->ntypes)).c_str());
+    }
+  }
+  force->bounds(arg[0], atom->ntypes, ilo, ihi);
+  force->bounds(arg[1], atom->ntypes, jlo, jhi);
+  Coefficients c = defaults_;
+  parse(narg, arg, 2, c, "pair_coeff");
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = std::max(jlo, i); j <= jhi; j++) {
+      coefficients_[i][j] = coefficients_[j][i] = c;
+      setflag[i][j] = 1;
+    }
+}
+
+void PairWireContact::init_style() {
+  wire_ = AtomVecWire::of(atom);
+  if (!wire_)
+    error->all(FLERR, ("pair wire/contact (id -): needs atom_style wire (or hybrid with wire), not '" +
+                       std::string(atom->atom_style) + "'").c_str());
+  // a half list built as with newton off: every owned–ghost pair is seen by both ranks,
+  // and the rank that owns the segment with the smaller tag computes it
+  const int irequest = neighbor->request(this);
+  neighbor->requests[irequest]->newton = 2;
+  // the damping needs the velocities of ghost beads
+  comm->ghost_velocity = 1;
+
+  double local[2] = {0.0, 0.0}, global[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    local[0] = std::max(local[0], wire_->wire_rest[i]);
+    local[1] = std::max(local[1], atom->radius[i]);
+  }
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  reach_ = 2.0 * global[1] + 2.0 * kStretchAllowance * global[0];
+  // the next bead of a ghost segment must be a ghost too
+  wiregrain_lmp::ensure_ghost_reach(lmp, reach_ + kStretchAllowance * global[0] + neighbor->skin);
+
+  const int ifix = modify->find_fix(kHistoryId);
+  if (ifix < 0) {
+    char id[] = "WIRE_CONTACT_HISTORY", group[] = "all", style[] = "wire/contact/history";
+    char *args[3] = {id, group, style};
+    modify->add_fix(3, args);
+    history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(kHistoryId)]);
+  } else {
+    history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[ifix]);
+  }
+  if (!history_) error->all(FLERR, "pair wire/contact (id -): fix WIRE_CONTACT_HISTORY has the wrong style");
+}
+
+double PairWireContact::init_one(int i, int j) {
+  if (setflag[i][j] == 0) {
+    coefficients_[i][j] = defaults_;
+    coefficients_[j][i] = defaults_;
+  }
+  return reach_;
+}
+
+// Each segment pair is computed once, by the rank that owns the first bead of the segment
+// with the smaller tag, which also keeps the pair's tangential spring. Forces go to all
+// four beads; those on ghosts are summed to their owners by reverse communication (by
+// LIGGGHTS when newton is on, here otherwise).
+void PairWireContact::compute(int eflag, int vflag) {
+  if (eflag || vflag) ev_setup(eflag, vflag);
+  else evflag = vflag_fdotr = 0;
+
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *tag = atom->tag, *type = atom->type;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *next = wire_->wire_next;
+  const double *rest = wire_->wire_rest;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const bool own_reverse_comm = !force->newton_pair;
+  if (own_reverse_comm)
+    for (int i = nlocal; i < nall; i++) f[i][0] = f[i][1] = f[i][2] = 0.0;
+
+  // each bead's next bead and that bead's image nearest to it, once per step
+  if (nall > segment_capacity_) {
+    segment_capacity_ = nall;
+    memory->destroy(segment_next_);
+    memory->destroy(segment_end_);
+    memory->create(segment_next_, segment_capacity_, "pair:segment_next");
+    memory->create(segment_end_, segment_capacity_, 3, "pair:segment_end");
+  }
+  for (int i = 0; i < nall; i++) {
+    segment_next_[i] = -1;
+    if (!next[i]) continue;
+    const int j = atom->map(next[i]);
+    if (j < 0) {
+      if (i < nlocal)
+        error->one(FLERR, ("pair wire/contact (id -): bead " + std::to_string(tag[i]) + " links to bead " +
+                           std::to_string(next[i]) + ", which is neither owned nor a ghost here").c_str());
+      segment_next_[i] = -2;  // a ghost at the edge of the ghost shell
+      continue;
+    }
+    double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    domain->minimum_image(d);
+    segment_next_[i] = j;
+    for (int k = 0; k < 3; k++) segment_end_[i][k] = x[i][k] + d[k];
+  }
+
+  history_->begin_step();
+  int contacts = 0;
+  double evaluations = 0.0;  // exact segment–segment distances computed
+  double largest_overlap = 0.0;
+  const double dt = update->dt;
+  const bool setup = update->setupflag != 0;
+
+  const int inum = list->inum;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    if (segment_next_[i] == -1) continue;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (segment_next_[j] == -1) continue;
+      const int a = tag[i] < tag[j] ? i : j;
+      const int b = a == i ? j : i;
+      if (a >= nlocal) continue;
+      if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
+      if (segment_next_[b] == -2)
+        error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
+                           " is missing (a segment stretched beyond 25 %?)").c_str());
+
+      // positions as the neighbour list has them (ghosts are the right periodic images)
+      const int a1 = segment_next_[a], b1 = segment_next_[b];
+      const Eigen::Vector3d xa0 = as_vector(x[a]), xa1 = as_vector(segment_end_[a]);
+      const Eigen::Vector3d xb0 = as_vector(x[b]), xb1 = as_vector(segment_end_[b]);
+      const double r_a = radius[a], r_b = radius[b];
+      // bounding spheres of the two spherocylinders first (most pairs of the list)
+      const double reach = 0.5 * ((xa1 - xa0).norm() + (xb1 - xb0).norm()) + r_a + r_b;
+      if ((0.5 * (xa0 + xa1 - xb0 - xb1)).squaredNorm() >= reach * reach) continue;
+      evaluations++;
+      const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
+      const double overlap = r_a + r_b - cp.distance;
+      if (overlap <= 0.0) continue;
+
+      Eigen::Vector3d normal = cp.q - cp.p;
+      if (cp.distance > 0.0) normal /= cp.distance;
+      else {  // axes intersect: push apart perpendicular to both
+        normal = (xa1 - xa0).cross(xb1 - xb0);
+        if (normal.norm() == 0.0) normal = Eigen::Vector3d::UnitZ();
+        normal.normalize();
+      }
+      const Eigen::Vector3d va = (1.0 - cp.s) * as_vector(v[a]) + cp.s * as_vector(v[a1]);
+      const Eigen::Vector3d vb = (1.0 - cp.t) * as_vector(v[b]) + cp.t * as_vector(v[b1]);
+      const double m_a = rmass[a] + rmass[a1], m_b = rmass[b] + rmass[b1];
+
+      const Coefficients &c = coefficients_[type[a]][type[b]];
+      const double e_ww = c.youngs_modulus / (2.0 * (1.0 - c.poisson_ratio * c.poisson_ratio));
+      wiregrain::SoftContactLaw law;
+      law.normal_stiffness = e_ww * 0.5 * (rest[a] + rest[b]) * kPi / 4.0;
+      law.tangential_stiffness = e_ww * 0.5 * (r_a + r_b);
+      law.damping_ratio = c.damping_ratio;
+      law.static_friction = c.static_friction;
+      law.dynamic_friction = c.dynamic_friction;
+      law.limit_force = c.limit_force;
+
+      wiregrain::TangentialHistory h;
+      history_->lookup(a, tag[b], h);
+      // the setup force call of a run must not advance the springs (a restart would
+      // otherwise count the step twice): evaluate on a copy, keep the history
+      wiregrain::TangentialHistory advanced = h;
+      const wiregrain::SoftContactForce fc = wiregrain::soft_contact_force(
+          law, overlap, normal, vb - va, setup ? 0.0 : dt, m_a * m_b / (m_a + m_b), advanced);
+      history_->store(a, tag[b], setup ? h : advanced);
+
+      add_force(f[b], 1.0 - cp.t, fc.force);
+      add_force(f[b1], cp.t, fc.force);
+      add_force(f[a], -(1.0 - cp.s), fc.force);
+      add_force(f[a1], -cp.s, fc.force);
+      if (eflag)
+        eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
+                    0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
+      contacts++;
+      largest_overlap = std::max(largest_overlap, overlap);
+    }
+  }
+  history_->end_step();
+  local_stats_[0] = contacts;
+  local_stats_[1] = largest_overlap;
+  local_stats_[2] = evaluations;
+  stats_step_ = -1;
+
+  if (own_reverse_comm) comm->reverse_comm_pair(this);
+}
+
+// Comm::reverse_comm_pair of this LIGGGHTS expects the values per atom, not the total.
+int PairWireContact::pack_reverse_comm(int n, int first, double *buf) {
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = atom->f[i][0];
+    buf[m++] = atom->f[i][1];
+    buf[m++] = atom->f[i][2];
+  }
+  return comm_reverse;
+}
+
+void PairWireContact::unpack_reverse_comm(int n, int *list, double *buf) {
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list[i];
+    atom->f[j][0] += buf[m++];
+    atom->f[j][1] += buf[m++];
+    atom->f[j][2] += buf[m++];
+  }
+}
+
+double PairWireContact::contact_count() {
+  if (stats_step_ != update->ntimestep) {
+    const double sums[2] = {local_stats_[0], local_stats_[2]};
+    double totals[2];
+    MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&local_stats_[1], &global_stats_[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    global_stats_[0] = totals[0];
+    global_stats_[2] = totals[1];
+    stats_step_ = update->ntimestep;
+  }
+  return global_stats_[0];
+}
+
+double PairWireContact::max_overlap() {
+  contact_count();
+  return global_stats_[1];
+}
+
+double PairWireContact::pair_evaluations() {
+  contact_count();
+  return global_stats_[2];
+}
+
+// Restart files keep pair_style and pair_coeff: a restarted run needs neither command.
+void PairWireContact::write_restart(FILE *fp) {
+  if (comm->me != 0) return;
+  fwrite(&defaults_, sizeof(Coefficients), 1, fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) fwrite(&coefficients_[i][j], sizeof(Coefficients), 1, fp);
+    }
+}
+
+void PairWireContact::read_restart(FILE *fp, const int /*major*/, const int /*minor*/) {
+  allocate();
+  const int me = comm->me;
+  if (me == 0 && fread(&defaults_, sizeof(Coefficients), 1, fp) != 1)
+    error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+  MPI_Bcast(&defaults_, sizeof(Coefficients), MPI_CHAR, 0, world);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0 && fread(&setflag[i][j], sizeof(int), 1, fp) != 1)
+        error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      if (me == 0 && fread(&coefficients_[i][j], sizeof(Coefficients), 1, fp) != 1)
+        error->one(FLERR, "pair wire/contact (id -): restart file is truncated");
+      MPI_Bcast(&coefficients_[i][j], sizeof(Coefficients), MPI_CHAR, 0, world);
+      coefficients_[j][i] = coefficients_[i][j];
+    }
+}
+
+double PairWireContact::memory_usage() {
+  const int n = atom->ntypes + 1;
+  return double(n) * n * (sizeof(int) + sizeof(double) + sizeof(Coefficients));
+}
