@@ -1,0 +1,63 @@
+// Soft contact of a wire segment with a grain (paper Sec. 2.3, Fig. 4; DESIGN.md §5).
+//
+// The segment [x0, x1] is a spherocylinder of radius r_w, the grain a spheropolyhedron
+// (convex core + sweep radius r_p). Geometry from segment_contact (core/geometry/
+// contact_geometry.h): signed core–axis distance d (exact segment–polytope distance
+// when disjoint, minus the penetration depth when the axis crosses the core, so a
+// crossing segment still has a defined normal and a finite overlap), unit normal n from
+// the grain to the wire and the closest-point parameter t ∈ [0, 1] on the segment.
+//   overlap ξ_n = r_p + r_w − d;
+//   contact point p = point on the core + (r_p − ξ_n/2) n (halfway through the overlap);
+//   relative velocity of the wire with respect to the grain at p:
+//       u = (1 − t) v_0 + t v_1 − (v_g + ω_g × (p − x_g));
+//   force on the wire F = soft_contact_force(law, ξ_n, n, u, dt, m_eff, history) with
+//       m_eff = m_w m_g / (m_w + m_g), m_w = m_0 + m_1 (as pair wire/contact does);
+//   bead 0 gets (1 − t) F, bead 1 gets t F (the closest-point weights, paper Sec. 2.2);
+//   the grain gets −F and the torque (p − x_g) × (−F); no torque on the wire (paper).
+// So the forces on wire and grain sum to zero exactly (momentum is conserved); the
+// torque on the grain is that of −F applied at p.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/contact/soft_contact.h"
+#include "core/geometry/contact_geometry.h"
+
+namespace wiregrain {
+
+struct WireSegmentState {
+  Eigen::Vector3d x0 = Eigen::Vector3d::Zero(), x1 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();
+  double m0 = 0.0, m1 = 0.0;  // bead masses
+  double radius = 0.0;        // r_w
+};
+
+struct GrainMotion {
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // v_g (of the centre of mass)
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // ω_g (world frame)
+  double mass = 0.0;
+};
+
+struct WireGrainContact {
+  bool touching = false;  // ξ_n > 0; when false only `geometry` and `overlap` are set
+  double overlap = 0.0;   // ξ_n (negative: the gap)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // from the grain to the wire
+  Eigen::Vector3d force_bead0 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_bead1 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_grain = Eigen::Vector3d::Zero();   // = −(force_bead0 + force_bead1)
+  Eigen::Vector3d torque_grain = Eigen::Vector3d::Zero();  // about the grain's centre of mass
+  double normal_force = 0.0;
+  bool sliding = false;
+  SegmentContact geometry;
+};
+
+// Geometry and force of one (segment, grain) pair. `grain` is posed at its centre of mass
+// (PosedShape::position()). history is the pair's tangential spring; it is advanced only
+// when the pair touches (the caller drops it when the pair separates). dt = 0 evaluates
+// the force without advancing the spring (a setup force call).
+WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
+                                    const GrainMotion& motion, const WireSegmentState& segment,
+                                    double dt, TangentialHistory& history);
+
+}  // namespace wiregrain

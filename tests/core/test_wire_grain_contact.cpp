@@ -1,0 +1,145 @@
+// Wire–grain soft contact (core/contact/wire_grain_contact.h) against forces worked out
+// by hand for a segment lying on the top face of a rounded cube.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/contact/wire_grain_contact.h"
+
+using namespace wiregrain;
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kEdge = 2.0, kSweep = 0.1, kWireRadius = 0.1;
+constexpr double kOverlap = 0.01;
+// top of the rounded cube at z = 1 + r_p; the wire axis r_w above it, less the overlap
+constexpr double kAxisHeight = 0.5 * kEdge + kSweep + kWireRadius - kOverlap;
+
+SoftContactLaw law(double damping = 0.0) {
+  SoftContactLaw l;
+  l.normal_stiffness = 15.7;
+  l.tangential_stiffness = 9.2;
+  l.damping_ratio = damping;
+  l.static_friction = 0.5;
+  l.dynamic_friction = 0.4;
+  return l;
+}
+
+WireSegmentState lying_segment() {
+  WireSegmentState s;
+  s.x0 = Vector3d(-0.3, 0.2, kAxisHeight);
+  s.x1 = Vector3d(0.5, 0.2, kAxisHeight);
+  s.m0 = s.m1 = 0.01;
+  s.radius = kWireRadius;
+  return s;
+}
+
+}  // namespace
+
+TEST(WireGrainContact, SegmentOnAFaceIsPushedOutWithKnTimesTheOverlapSharedByItsBeads) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, lying_segment(), 1e-4, history);
+  ASSERT_TRUE(c.touching);
+  EXPECT_NEAR(c.overlap, kOverlap, 1e-14);
+  EXPECT_NEAR((c.normal - Vector3d::UnitZ()).norm(), 0.0, 1e-14);
+  const double fn = 15.7 * kOverlap;
+  // parallel to the face: the closest points are the whole segment, t = 1/2
+  EXPECT_NEAR((c.force_bead0 - Vector3d(0, 0, 0.5 * fn)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.force_bead1 - Vector3d(0, 0, 0.5 * fn)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.force_grain - Vector3d(0, 0, -fn)).norm(), 0.0, 1e-14);
+  // p = (0.1, 0.2, 1 + r_p − ξ/2); torque = p × (0, 0, −f_n) = (−0.2 f_n, 0.1 f_n, 0)
+  EXPECT_NEAR((c.point - Vector3d(0.1, 0.2, 1.0 + kSweep - 0.5 * kOverlap)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.torque_grain - Vector3d(-0.2 * fn, 0.1 * fn, 0.0)).norm(), 0.0, 1e-14);
+  EXPECT_FALSE(c.sliding);
+}
+
+TEST(WireGrainContact, TangentialSpringGrowsWithTheSlipOfTheWireOverTheSpinningGrain) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  motion.angular_velocity = Vector3d(0.0, 0.0, 0.3);  // surface at p moves with ω × p
+  WireSegmentState s = lying_segment();
+  s.v0 = s.v1 = Vector3d(0.02, 0.0, 0.0);
+  const double dt = 1e-3;
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, s, dt, history);
+  ASSERT_TRUE(c.touching);
+  // ω × (0.1, 0.2, ·) = (−0.06, 0.03, 0); u_t = (0.02, 0, 0) − (−0.06, 0.03, 0) = (0.08, −0.03, 0)
+  const Vector3d slip(0.08, -0.03, 0.0);
+  EXPECT_NEAR((history.spring - slip * dt).norm(), 0.0, 1e-16);
+  const Vector3d total = c.force_bead0 + c.force_bead1;
+  EXPECT_NEAR((total - (Vector3d(0, 0, 15.7 * kOverlap) - 9.2 * dt * slip)).norm(), 0.0, 1e-14);
+  EXPECT_FALSE(c.sliding);
+}
+
+TEST(WireGrainContact, SlidesAtTheDynamicCoulombLimit) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  WireSegmentState s = lying_segment();
+  s.v0 = s.v1 = Vector3d(0.0, 30.0, 0.0);  // k_t |u| dt = 0.276 > μ_s f_n = 0.0785
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, s, 1e-3, history);
+  ASSERT_TRUE(c.sliding);
+  const double fn = 15.7 * kOverlap;
+  const Vector3d total = c.force_bead0 + c.force_bead1;
+  EXPECT_NEAR(total.z(), fn, 1e-14);
+  EXPECT_NEAR(total.y(), -0.4 * fn, 1e-14);  // μ_d f_n against the slip
+  EXPECT_NEAR(total.x(), 0.0, 1e-15);
+  EXPECT_NEAR(history.spring.y(), 0.4 * fn / 9.2, 1e-15);  // reset to the slip limit
+}
+
+TEST(WireGrainContact, NormalDampingUsesTheReducedMassOfSegmentAndGrain) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  motion.velocity = Vector3d(0.0, 0.0, 0.5);  // grain rising into the wire: ξ̇ = 0.5
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(0.3), grain, motion, lying_segment(), 1e-4, history);
+  const double m = 0.02 * 8.0 / 8.02;
+  const double gamma_n = 2.0 * 0.3 * std::sqrt(15.7 * m);
+  EXPECT_NEAR(c.normal_force, 15.7 * kOverlap + gamma_n * 0.5, 1e-13);
+}
+
+TEST(WireGrainContact, ApartPairsReportTheGapAndNoForce) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  WireSegmentState s = lying_segment();
+  s.x0.z() += 0.05;
+  s.x1.z() += 0.05;
+  TangentialHistory history;
+  history.spring = Vector3d(1e-3, 0, 0);
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, s, 1e-4, history);
+  EXPECT_FALSE(c.touching);
+  EXPECT_NEAR(c.overlap, kOverlap - 0.05, 1e-14);
+  EXPECT_EQ(c.force_grain, Vector3d::Zero());
+  EXPECT_EQ(history.spring, Vector3d(1e-3, 0, 0));  // untouched: the caller drops it
+}
+
+TEST(WireGrainContact, ASegmentThroughTheCoreGetsAFiniteForceAlongTheShortestWayOut) {
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  GrainMotion motion;
+  motion.mass = 8.0;
+  WireSegmentState s = lying_segment();
+  s.x0 = Vector3d(-2.0, 0.1, 0.8);  // axis 0.2 below the top face, crossing the core
+  s.x1 = Vector3d(2.0, 0.1, 0.8);
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, s, 1e-4, history);
+  ASSERT_TRUE(c.touching);
+  // penetration depth of the axis 0.2 (out through the top face), plus r_p + r_w
+  EXPECT_NEAR(c.overlap, 0.2 + kSweep + kWireRadius, 1e-12);
+  EXPECT_NEAR((c.normal - Vector3d::UnitZ()).norm(), 0.0, 1e-12);
+  EXPECT_TRUE(c.force_grain.allFinite());
+  EXPECT_NEAR(c.force_grain.z(), -15.7 * c.overlap, 1e-12);
+}
