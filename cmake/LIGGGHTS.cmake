@@ -121,8 +121,11 @@ endif()
 # Append the plugin style headers to the generated style_*.h. A header registers a style
 # when it holds the class macro block (e.g. "#ifdef FIX_CLASS") as LIGGGHTS' own do.
 # The style files live in src_plugin/<subsystem>/ (common, grains, wire, coupling, output);
-# core/ is the physics library, built on its own. Every subsystem folder is on the include
-# path, so style files include each other by file name as LIGGGHTS' own do.
+# core/ is the physics library, built on its own. The generated style_*.h include the style
+# headers by their path below src_plugin/ (which is on LIGGGHTS' include path), and style
+# headers include other plugin headers the same way ("common/plugin_atom_vec.h"), so
+# LIGGGHTS' own objects compile with unchanged flags (ccache hits across layouts). The
+# plugin's .cpp files also see every subsystem folder and include each other by file name.
 file(GLOB_RECURSE PLUGIN_STYLE_HEADERS CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.h")
 file(GLOB_RECURSE PLUGIN_STYLE_SOURCES CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/src_plugin/*.cpp")
 list(FILTER PLUGIN_STYLE_HEADERS EXCLUDE REGEX "/src_plugin/core/")
@@ -143,7 +146,7 @@ foreach(_entry IN LISTS _style_classes)
   foreach(_h IN LISTS PLUGIN_STYLE_HEADERS)
     file(STRINGS "${_h}" _hits REGEX "^#ifdef ${_macro}$")
     if(_hits)
-      get_filename_component(_name "${_h}" NAME)
+      file(RELATIVE_PATH _name "${CMAKE_SOURCE_DIR}/src_plugin" "${_h}")
       string(APPEND _text "#include \"${_name}\"  // wiregrain plugin\n")
       list(APPEND WIREGRAIN_REGISTERED_STYLES "${_kind}:${_name}")
     endif()
@@ -165,8 +168,7 @@ file(GLOB LIGGGHTS_UPSTREAM_SOURCES "${LIGGGHTS_STAGED_SRC}/*.cpp")
 
 # Upstream code is compiled as upstream compiles it, with its warnings silenced.
 add_library(liggghts_upstream OBJECT ${LIGGGHTS_UPSTREAM_SOURCES})
-target_include_directories(liggghts_upstream PUBLIC "${LIGGGHTS_STAGED_SRC}" "${CMAKE_SOURCE_DIR}/src_plugin"
-                           ${PLUGIN_STYLE_DIRS})
+target_include_directories(liggghts_upstream PUBLIC "${LIGGGHTS_STAGED_SRC}" "${CMAKE_SOURCE_DIR}/src_plugin")
 target_link_libraries(liggghts_upstream PUBLIC MPI::MPI_CXX)
 target_compile_options(liggghts_upstream PRIVATE -funroll-loops -fstrict-aliasing -w)
 set_target_properties(liggghts_upstream PROPERTIES CXX_EXTENSIONS ON)
@@ -190,5 +192,6 @@ endif()
 
 add_executable(liggghts ${PLUGIN_STYLE_SOURCES} $<TARGET_OBJECTS:liggghts_upstream>)
 target_link_libraries(liggghts PRIVATE liggghts_upstream wiregrain_core)
+target_include_directories(liggghts PRIVATE ${PLUGIN_STYLE_DIRS})
 target_compile_options(liggghts PRIVATE -Wall -Wextra -Wno-unused-parameter)
 set_target_properties(liggghts PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}")

@@ -28,7 +28,7 @@ AtomStyle(polyhedron,AtomVecPolyhedron)
 
 #include <memory>
 
-#include "plugin_atom_vec.h"
+#include "common/plugin_atom_vec.h"
 
 namespace wiregrain {
 class ShapeLibrary;

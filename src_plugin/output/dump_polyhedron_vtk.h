@@ -28,8 +28,8 @@ DumpStyle(polyhedron/vtk,DumpPolyhedronVTK)
 #include <string>
 #include <vector>
 
-#include "dump_vtp.h"
-#include "plugin_vtk.h"
+#include "output/dump_vtp.h"
+#include "output/plugin_vtk.h"
 
 namespace LAMMPS_NS {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "dump.h"
-#include "plugin_vtk.h"
+#include "output/plugin_vtk.h"
 
 namespace wiregrain_lmp {
 class StyleArgs;

@@ -26,8 +26,8 @@ DumpStyle(wire/vtk,DumpWireVTK)
 #include <utility>
 #include <vector>
 
-#include "dump_vtp.h"
-#include "plugin_vtk.h"
+#include "output/dump_vtp.h"
+#include "output/plugin_vtk.h"
 
 namespace LAMMPS_NS {
 

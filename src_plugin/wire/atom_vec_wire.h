@@ -21,7 +21,7 @@ AtomStyle(wire,AtomVecWire)
 #ifndef LMP_ATOM_VEC_WIRE_H
 #define LMP_ATOM_VEC_WIRE_H
 
-#include "plugin_atom_vec.h"
+#include "common/plugin_atom_vec.h"
 
 namespace LAMMPS_NS {
 
