@@ -46,61 +46,16 @@ double wrap_angle(double phi) {
   return phi <= -kPi ? phi + kTwoPi : phi;
 }
 
-// The slide equation g(φ) = v(φ) × t(φ) of coulomb_local.h, with its derivative.
-class SlideEquation {
- public:
-  struct Value {
-    double g;    // v × t
-    double dg;   // dg/dφ = v' × t + v·t
-    double a;    // (W c(φ))_n; r_n = −q_n / a
-    double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
-  };
-
-  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
-      : W_(W), q_(q), mu_(mu) {
-    const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
-    v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
-    a_floor_ = 1e-14 * w_size;
-  }
-
-  Value at(double phi) const {
-    const double c = std::cos(phi), s = std::sin(phi);
-    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
-    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
-    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
-    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
-    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
-    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
-    const double qn = q_[0];
-    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
-    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
-    Value value;
-    value.g = v1 * s - v2 * c;
-    value.dot = v1 * c + v2 * s;
-    value.dg = dv1 * s - dv2 * c + value.dot;
-    value.a = a;
-    return value;
-  }
-
-  // a > 0 (r_n > 0) and λ ≥ 0 (v·t ≤ 0, to round-off).
-  bool admissible(const Value& value) const {
-    return value.a > a_floor_ && value.dot <= 1e-12 * v_scale_;
-  }
-  // |g| small enough to be a root to round-off.
-  bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
-
- private:
-  const Eigen::Matrix3d& W_;
-  const Eigen::Vector3d& q_;
-  double mu_;
-  double v_scale_;
-  double a_floor_;
+struct Candidate {
+  double phi;
+  double distance;  // angular distance to the guess
 };
 
-// Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
-// Returns true on convergence (step below 1e-13 rad, or g = 0).
-bool newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
-                        int max_iterations) {
+}  // namespace
+
+// Newton from a guess, step limited to 0.5 rad (coulomb_local.h).
+bool slide_newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
+                              int max_iterations) {
   for (int it = 0; it < max_iterations; ++it) {
     const SlideEquation::Value value = eq.at(phi);
     if (value.g == 0.0) return true;
@@ -114,11 +69,9 @@ bool newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
   return false;
 }
 
-// Safeguarded Newton–bisection on the bracket [lo, hi], g(lo) g(hi) < 0 ("rtsafe",
-// Press et al., Numerical Recipes, Sec. 9.4): a Newton step when it stays inside the
-// bracket, else bisection; the bracket shrinks every iteration.
-double newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_lo,
-                        int& iterations) {
+// Safeguarded Newton–bisection ("rtsafe") on a bracket (coulomb_local.h).
+double slide_newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_lo,
+                              int& iterations) {
   double phi = 0.5 * (lo + hi);
   for (int it = 0; it < 200; ++it) {
     const SlideEquation::Value value = eq.at(phi);
@@ -138,13 +91,6 @@ double newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_
   }
   return phi;
 }
-
-struct Candidate {
-  double phi;
-  double distance;  // angular distance to the guess
-};
-
-}  // namespace
 
 LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Vector3d& q,
                                   double mu, const Eigen::Vector3d& guess) {
@@ -197,7 +143,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
   int iterations = 0;
   double phi = phi0;
   bool found = false;
-  if (newton_unbracketed(equation, phi, iterations, 30)) {
+  if (slide_newton_unbracketed(equation, phi, iterations, 30)) {
     phi = wrap_angle(phi);
     const SlideEquation::Value value = equation.at(phi);
     found = equation.is_root(value) && equation.admissible(value);
@@ -226,7 +172,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
       if (g[j] == 0.0) {
         consider(angle[j]);
       } else if ((g[j] < 0.0) != (g[j + 1] < 0.0) && g[j + 1] != 0.0) {
-        consider(newton_bracketed(equation, angle[j], angle[j + 1], g[j], iterations));
+        consider(slide_newton_bracketed(equation, angle[j], angle[j + 1], g[j], iterations));
       }
     }
     if (roots.empty()) {
@@ -236,7 +182,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
         const double left = std::abs(g[(j + kSamples - 1) % kSamples]);
         if (std::abs(g[j]) <= left && std::abs(g[j]) <= std::abs(g[j + 1])) {
           double candidate = angle[j];
-          newton_unbracketed(equation, candidate, iterations, 60);
+          slide_newton_unbracketed(equation, candidate, iterations, 60);
           consider(candidate);
         }
       }
