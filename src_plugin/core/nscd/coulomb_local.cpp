@@ -11,6 +11,9 @@
 #include "core/common/errors.h"
 #include "core/common/validation.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
 namespace wiregrain {
 
 const char* contact_state_name(ContactState state) {
@@ -69,26 +72,35 @@ bool slide_newton_unbracketed(const SlideEquation& eq, double& phi, int& iterati
   return false;
 }
 
-// Safeguarded Newton–bisection ("rtsafe") on a bracket (coulomb_local.h).
-double slide_newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_lo,
-                              int& iterations) {
+// Brent's method (GSL gsl_root_fsolver_brent: inverse quadratic interpolation, secant
+// and bisection; Brent, Algorithms for Minimization without Derivatives, 1973, ch. 4) on a
+// bracket of g (coulomb_local.h). GSL's default error handler aborts; it is switched off
+// around the call and restored, so a GSL error (none is expected: the bracket straddles a
+// root of a finite g) ends the iteration at the current estimate instead.
+double slide_root_in_bracket(const SlideEquation& equation, double lo, double hi,
+                             int& iterations) {
+  gsl_function function;
+  function.function = [](double phi, void* params) {
+    return static_cast<const SlideEquation*>(params)->at(phi).g;
+  };
+  function.params = const_cast<SlideEquation*>(&equation);
+  gsl_error_handler_t* const previous_handler = gsl_set_error_handler_off();
+  gsl_root_fsolver* const solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
   double phi = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    const SlideEquation::Value value = eq.at(phi);
-    ++iterations;
-    if (value.g == 0.0) return phi;
-    if ((value.g < 0.0) == (g_lo < 0.0)) {
-      lo = phi;
-      g_lo = value.g;
-    } else {
-      hi = phi;
+  if (solver != nullptr && gsl_root_fsolver_set(solver, &function, lo, hi) == GSL_SUCCESS) {
+    for (int it = 0; it < 100; ++it) {
+      const int status = gsl_root_fsolver_iterate(solver);
+      ++iterations;
+      if (status != GSL_SUCCESS) break;
+      phi = gsl_root_fsolver_root(solver);
+      if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver),
+                                 gsl_root_fsolver_x_upper(solver), 1e-14, 0.0) == GSL_SUCCESS) {
+        break;
+      }
     }
-    double next = phi - value.g / value.dg;
-    if (!(value.dg != 0.0 && next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const double step = next - phi;
-    phi = next;
-    if (std::abs(step) <= 1e-14 || hi - lo <= 1e-15) return phi;
   }
+  gsl_root_fsolver_free(solver);
+  gsl_set_error_handler(previous_handler);
   return phi;
 }
 
@@ -172,7 +184,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
       if (g[j] == 0.0) {
         consider(angle[j]);
       } else if ((g[j] < 0.0) != (g[j + 1] < 0.0) && g[j + 1] != 0.0) {
-        consider(slide_newton_bracketed(equation, angle[j], angle[j + 1], g[j], iterations));
+        consider(slide_root_in_bracket(equation, angle[j], angle[j + 1], iterations));
       }
     }
     if (roots.empty()) {

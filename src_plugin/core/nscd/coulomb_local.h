@@ -24,11 +24,12 @@
 //          g is a trigonometric polynomial of degree 2 in φ (at most 4 roots). It is
 //          solved by Newton's method in φ from a guess (the previous impulse direction,
 //          else the direction of the rejected stick impulse); if that fails or gives an
-//          inadmissible root, by a scan of g over [0, 2π) with a safeguarded
-//          Newton–bisection in every bracket, and if no bracket holds an admissible root
+//          inadmissible root, by a scan of g over [0, 2π) with Brent's method (GSL) in
+//          every bracket, and if no bracket holds an admissible root
 //          (a double root, or two roots closer than the sampling), by Newton from each
 //          local minimum of |g| among the samples. The paper solves this case
-//          with a Newton iteration from GSL; the 1-D reduction makes u_n = 0 and
+//          with a Newton iteration from GSL (our own Newton measured faster, see
+//          docs/core_nscd.md); the 1-D reduction makes u_n = 0 and
 //          ‖r_t‖ = μ r_n hold by construction, so only u_t ∥ −r_t is iterated.
 // μ = 0 (frictionless): r = (−q_n / W_nn, 0, 0) when q_n < 0, counted as slide.
 //
@@ -147,13 +148,13 @@ class SlideEquation {
 bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
                               int max_iterations);
 
-// Safeguarded Newton–bisection on the bracket [lo, hi], g(lo) g(hi) < 0 ("rtsafe",
-// Press et al., Numerical Recipes, Sec. 9.4): a Newton step when it stays inside the
-// bracket, else bisection; the bracket shrinks every iteration. Stops when a step is
-// below 1e-14 rad or the bracket below 1e-15 rad (at most 200 evaluations). `iterations`
-// is increased by the number of evaluations.
-double slide_newton_bracketed(const SlideEquation& equation, double lo, double hi, double g_lo,
-                              int& iterations);
+// A root of g in the bracket [lo, hi], g(lo) g(hi) < 0, by Brent's method (GSL's
+// gsl_root_fsolver_brent), stopping when the bracket is below 1e-14 rad (at most 100
+// iterations). `iterations` is increased by the number of Brent iterations (each one
+// evaluation of g, plus two at the start). Chosen over a safeguarded Newton–bisection by
+// bench/local_slide_gsl (docs/core_nscd.md, "GSL and the slide case").
+double slide_root_in_bracket(const SlideEquation& equation, double lo, double hi,
+                             int& iterations);
 
 // Euclidean projection onto the Coulomb cone K_μ = {r : ‖r_t‖ ≤ μ r_n}:
 //   r if r ∈ K_μ; 0 if μ‖r_t‖ ≤ −r_n (r in the polar cone); otherwise
