@@ -3,13 +3,14 @@
 //
 // The paper solves the slide case with GSL's Newton solver; our core reduces it to g(φ) = 0
 // and runs its own Newton iteration from a guess (slide_newton_unbracketed, step limited to
-// 0.5 rad) with a scan of g at 24 angles and a safeguarded Newton–bisection in every sign
-// change (slide_newton_bracketed) as fallback. This tool measures, on one set of slide
-// problems:
+// 0.5 rad) with a scan of g at 24 angles and a root search in every sign change as
+// fallback. This tool measures, on one set of slide problems:
 //   from a guess    ours (Newton, clamped) | GSL fdfsolver newton, secant, steffenson
 //                   (same start, same stop |Δφ| ≤ 1e-13 rad, at most 30 iterations);
-//   in a bracket    ours (rtsafe) | GSL fsolver brent, on every sign change of the
-//                   24-angle scan that our fallback would refine;
+//   in a bracket    safeguarded Newton–bisection (rtsafe, the core's fallback before this
+//                   tool, kept below) | the core's slide_root_in_bracket (GSL brent, since
+//                   this tool) | GSL brent with its solver allocated once, on every sign
+//                   change of the 24-angle scan that the fallback would refine;
 //   whole solve     solve_coulomb_local (stick test + Newton + fallback), for scale.
 // Two start sets: cold (the direction of the rejected stick impulse −W⁻¹q, what
 // solve_coulomb_local uses without a guess) and warm (our solution direction + a normal
@@ -260,11 +261,43 @@ RootResult gsl_brent_root(gsl_root_fsolver* solver, const Bracket& bracket,
   return result;
 }
 
-RootResult ours_bracket_root(const Bracket& bracket, const SlideEquation& equation) {
+// The core's fallback until bench/local_slide_gsl measured it (kept here for the record):
+// safeguarded Newton–bisection ("rtsafe", Press et al., Numerical Recipes, Sec. 9.4) on
+// [lo, hi] — a Newton step when it stays inside the bracket, else bisection — stopping
+// when a step is below 1e-14 rad or the bracket below 1e-15 rad, at most 200 evaluations.
+// Both stops lie at or below the round-off of φ ∈ [φ0, φ0 + 2π] (an ulp of 9 is 1.8e-15)
+// and of g's Newton step, so about a quarter of the brackets end by bisecting to 1e-15.
+RootResult rtsafe_root(const Bracket& bracket, const SlideEquation& equation) {
   RootResult result;
-  result.phi = wiregrain::slide_newton_bracketed(equation, bracket.lo, bracket.hi, bracket.g_lo,
-                                                 result.iterations);
-  result.converged = true;  // rtsafe always returns a point of the (shrunk) bracket
+  double lo = bracket.lo, hi = bracket.hi, g_lo = bracket.g_lo;
+  double phi = 0.5 * (lo + hi);
+  result.converged = true;  // returns a point of the (shrunk) bracket in every case
+  for (int it = 0; it < 200; ++it) {
+    const SlideEquation::Value value = equation.at(phi);
+    ++result.iterations;
+    if (value.g == 0.0) break;
+    if ((value.g < 0.0) == (g_lo < 0.0)) {
+      lo = phi;
+      g_lo = value.g;
+    } else {
+      hi = phi;
+    }
+    double next = phi - value.g / value.dg;
+    if (!(value.dg != 0.0 && next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const double step = next - phi;
+    phi = next;
+    if (std::abs(step) <= 1e-14 || hi - lo <= 1e-15) break;
+  }
+  result.phi = phi;
+  return result;
+}
+
+// The core's fallback (GSL Brent, a solver allocated per bracket).
+RootResult core_bracket_root(const Bracket& bracket, const SlideEquation& equation) {
+  RootResult result;
+  result.phi = wiregrain::slide_root_in_bracket(equation, bracket.lo, bracket.hi,
+                                                result.iterations);
+  result.converged = true;
   return result;
 }
 
@@ -486,9 +519,11 @@ int main(int argc, char** argv) {
     for (std::size_t i = first; i < rows.size(); ++i) rows[i].reference_ns = rows[first].ns_per_solve;
   }
   const std::size_t first_bracket = rows.size();
-  rows.push_back(measure_in_bracket("ours rtsafe (Newton-bisection)", brackets, repeat,
-                                    &ours_bracket_root));
-  rows.push_back(measure_in_bracket("GSL fsolver_brent", brackets, repeat,
+  rows.push_back(measure_in_bracket("rtsafe (former core fallback)", brackets, repeat,
+                                    &rtsafe_root));
+  rows.push_back(measure_in_bracket("core slide_root_in_bracket (brent)", brackets, repeat,
+                                    &core_bracket_root));
+  rows.push_back(measure_in_bracket("GSL fsolver_brent, allocated once", brackets, repeat,
                                     [&](const Bracket& bracket, const SlideEquation& eq) {
                                       return gsl_brent_root(gsl_brent, bracket, eq);
                                     }));
@@ -499,7 +534,7 @@ int main(int argc, char** argv) {
   print_table(rows);
   std::printf("solved: converged to an admissible slide root (bracket rows: to a root of g); "
               "same: root of our solve_coulomb_local; mean it: iterations (ours Newton: steps; "
-              "GSL: iterate calls; rtsafe: evaluations; whole: newton_iterations); "
+              "GSL: iterate calls; rtsafe: evaluations; brent: iterate calls; whole: newton_iterations); "
               "max resid: natural-map residual / (|r| + |q|) over solved; ns/ours: ratio to the "
               "first row of the group\n");
 
