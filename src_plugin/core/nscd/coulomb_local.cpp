@@ -11,6 +11,9 @@
 #include "core/common/errors.h"
 #include "core/common/validation.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
 namespace wiregrain {
 
 const char* contact_state_name(ContactState state) {
@@ -46,61 +49,16 @@ double wrap_angle(double phi) {
   return phi <= -kPi ? phi + kTwoPi : phi;
 }
 
-// The slide equation g(φ) = v(φ) × t(φ) of coulomb_local.h, with its derivative.
-class SlideEquation {
- public:
-  struct Value {
-    double g;    // v × t
-    double dg;   // dg/dφ = v' × t + v·t
-    double a;    // (W c(φ))_n; r_n = −q_n / a
-    double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
-  };
-
-  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
-      : W_(W), q_(q), mu_(mu) {
-    const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
-    v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
-    a_floor_ = 1e-14 * w_size;
-  }
-
-  Value at(double phi) const {
-    const double c = std::cos(phi), s = std::sin(phi);
-    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
-    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
-    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
-    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
-    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
-    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
-    const double qn = q_[0];
-    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
-    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
-    Value value;
-    value.g = v1 * s - v2 * c;
-    value.dot = v1 * c + v2 * s;
-    value.dg = dv1 * s - dv2 * c + value.dot;
-    value.a = a;
-    return value;
-  }
-
-  // a > 0 (r_n > 0) and λ ≥ 0 (v·t ≤ 0, to round-off).
-  bool admissible(const Value& value) const {
-    return value.a > a_floor_ && value.dot <= 1e-12 * v_scale_;
-  }
-  // |g| small enough to be a root to round-off.
-  bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
-
- private:
-  const Eigen::Matrix3d& W_;
-  const Eigen::Vector3d& q_;
-  double mu_;
-  double v_scale_;
-  double a_floor_;
+struct Candidate {
+  double phi;
+  double distance;  // angular distance to the guess
 };
 
-// Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
-// Returns true on convergence (step below 1e-13 rad, or g = 0).
-bool newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
-                        int max_iterations) {
+}  // namespace
+
+// Newton from a guess, step limited to 0.5 rad (coulomb_local.h).
+bool slide_newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
+                              int max_iterations) {
   for (int it = 0; it < max_iterations; ++it) {
     const SlideEquation::Value value = eq.at(phi);
     if (value.g == 0.0) return true;
@@ -114,37 +72,37 @@ bool newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
   return false;
 }
 
-// Safeguarded Newton–bisection on the bracket [lo, hi], g(lo) g(hi) < 0 ("rtsafe",
-// Press et al., Numerical Recipes, Sec. 9.4): a Newton step when it stays inside the
-// bracket, else bisection; the bracket shrinks every iteration.
-double newton_bracketed(const SlideEquation& eq, double lo, double hi, double g_lo,
-                        int& iterations) {
+// Brent's method (GSL gsl_root_fsolver_brent: inverse quadratic interpolation, secant
+// and bisection; Brent, Algorithms for Minimization without Derivatives, 1973, ch. 4) on a
+// bracket of g (coulomb_local.h). GSL's default error handler aborts; it is switched off
+// around the call and restored, so a GSL error (none is expected: the bracket straddles a
+// root of a finite g) ends the iteration at the current estimate instead.
+double slide_root_in_bracket(const SlideEquation& equation, double lo, double hi,
+                             int& iterations) {
+  gsl_function function;
+  function.function = [](double phi, void* params) {
+    return static_cast<const SlideEquation*>(params)->at(phi).g;
+  };
+  function.params = const_cast<SlideEquation*>(&equation);
+  gsl_error_handler_t* const previous_handler = gsl_set_error_handler_off();
+  gsl_root_fsolver* const solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
   double phi = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    const SlideEquation::Value value = eq.at(phi);
-    ++iterations;
-    if (value.g == 0.0) return phi;
-    if ((value.g < 0.0) == (g_lo < 0.0)) {
-      lo = phi;
-      g_lo = value.g;
-    } else {
-      hi = phi;
+  if (solver != nullptr && gsl_root_fsolver_set(solver, &function, lo, hi) == GSL_SUCCESS) {
+    for (int it = 0; it < 100; ++it) {
+      const int status = gsl_root_fsolver_iterate(solver);
+      ++iterations;
+      if (status != GSL_SUCCESS) break;
+      phi = gsl_root_fsolver_root(solver);
+      if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver),
+                                 gsl_root_fsolver_x_upper(solver), 1e-14, 0.0) == GSL_SUCCESS) {
+        break;
+      }
     }
-    double next = phi - value.g / value.dg;
-    if (!(value.dg != 0.0 && next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const double step = next - phi;
-    phi = next;
-    if (std::abs(step) <= 1e-14 || hi - lo <= 1e-15) return phi;
   }
+  gsl_root_fsolver_free(solver);
+  gsl_set_error_handler(previous_handler);
   return phi;
 }
-
-struct Candidate {
-  double phi;
-  double distance;  // angular distance to the guess
-};
-
-}  // namespace
 
 LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Vector3d& q,
                                   double mu, const Eigen::Vector3d& guess) {
@@ -197,7 +155,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
   int iterations = 0;
   double phi = phi0;
   bool found = false;
-  if (newton_unbracketed(equation, phi, iterations, 30)) {
+  if (slide_newton_unbracketed(equation, phi, iterations, 30)) {
     phi = wrap_angle(phi);
     const SlideEquation::Value value = equation.at(phi);
     found = equation.is_root(value) && equation.admissible(value);
@@ -226,7 +184,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
       if (g[j] == 0.0) {
         consider(angle[j]);
       } else if ((g[j] < 0.0) != (g[j + 1] < 0.0) && g[j + 1] != 0.0) {
-        consider(newton_bracketed(equation, angle[j], angle[j + 1], g[j], iterations));
+        consider(slide_root_in_bracket(equation, angle[j], angle[j + 1], iterations));
       }
     }
     if (roots.empty()) {
@@ -236,7 +194,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
         const double left = std::abs(g[(j + kSamples - 1) % kSamples]);
         if (std::abs(g[j]) <= left && std::abs(g[j]) <= std::abs(g[j + 1])) {
           double candidate = angle[j];
-          newton_unbracketed(equation, candidate, iterations, 60);
+          slide_newton_unbracketed(equation, candidate, iterations, 60);
           consider(candidate);
         }
       }

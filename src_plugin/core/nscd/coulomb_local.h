@@ -24,11 +24,12 @@
 //          g is a trigonometric polynomial of degree 2 in φ (at most 4 roots). It is
 //          solved by Newton's method in φ from a guess (the previous impulse direction,
 //          else the direction of the rejected stick impulse); if that fails or gives an
-//          inadmissible root, by a scan of g over [0, 2π) with a safeguarded
-//          Newton–bisection in every bracket, and if no bracket holds an admissible root
+//          inadmissible root, by a scan of g over [0, 2π) with Brent's method (GSL) in
+//          every bracket, and if no bracket holds an admissible root
 //          (a double root, or two roots closer than the sampling), by Newton from each
 //          local minimum of |g| among the samples. The paper solves this case
-//          with a Newton iteration from GSL; the 1-D reduction makes u_n = 0 and
+//          with a Newton iteration from GSL (our own Newton measured faster, see
+//          docs/core_nscd.md); the 1-D reduction makes u_n = 0 and
 //          ‖r_t‖ = μ r_n hold by construction, so only u_t ∥ −r_t is iterated.
 // μ = 0 (frictionless): r = (−q_n / W_nn, 0, 0) when q_n < 0, counted as slide.
 //
@@ -37,6 +38,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
 
 namespace wiregrain {
 
@@ -83,6 +85,76 @@ LocalSolution solve_coulomb_local(const LocalDelassus& W, const Eigen::Vector3d&
                                   const Eigen::Vector3d& guess = Eigen::Vector3d::Zero());
 LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3d& q,
                                   double mu);
+
+// The slide equation g(φ) = v(φ) × t(φ) of the slide case above, with its derivative, and
+// the two root finders solve_coulomb_local applies to it. Public so that other root
+// finders can be run on the same g (bench/local_slide_gsl compares GSL's); the core's only
+// user is solve_coulomb_local.
+class SlideEquation {
+ public:
+  struct Value {
+    double g;    // v × t
+    double dg;   // dg/dφ = v' × t + v·t
+    double a;    // (W c(φ))_n; r_n = −q_n / a
+    double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
+  };
+
+  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
+      : W_(W), q_(q), mu_(mu) {
+    const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
+    v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
+    a_floor_ = 1e-14 * w_size;
+  }
+
+  // With c = cos φ, s = sin φ: a = W_nn + μ (W_n1 c + W_n2 s), b_i = W_i0 + μ (W_i1 c + W_i2 s)
+  // (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c.
+  Value at(double phi) const {
+    const double c = std::cos(phi), s = std::sin(phi);
+    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
+    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
+    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
+    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
+    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
+    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
+    const double qn = q_[0];
+    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
+    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
+    Value value;
+    value.g = v1 * s - v2 * c;
+    value.dot = v1 * c + v2 * s;
+    value.dg = dv1 * s - dv2 * c + value.dot;
+    value.a = a;
+    return value;
+  }
+
+  // a > 0 (r_n > 0) and λ ≥ 0 (v·t ≤ 0, to round-off).
+  bool admissible(const Value& value) const {
+    return value.a > a_floor_ && value.dot <= 1e-12 * v_scale_;
+  }
+  // |g| small enough to be a root to round-off.
+  bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
+
+ private:
+  Eigen::Matrix3d W_;
+  Eigen::Vector3d q_;
+  double mu_;
+  double v_scale_;
+  double a_floor_;
+};
+
+// Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
+// Returns true on convergence (step below 1e-13 rad, or g = 0); phi is not wrapped.
+// `iterations` is increased by the number of steps.
+bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
+                              int max_iterations);
+
+// A root of g in the bracket [lo, hi], g(lo) g(hi) < 0, by Brent's method (GSL's
+// gsl_root_fsolver_brent), stopping when the bracket is below 1e-14 rad (at most 100
+// iterations). `iterations` is increased by the number of Brent iterations (each one
+// evaluation of g, plus two at the start). Chosen over a safeguarded Newton–bisection by
+// bench/local_slide_gsl (docs/core_nscd.md, "GSL and the slide case").
+double slide_root_in_bracket(const SlideEquation& equation, double lo, double hi,
+                             int& iterations);
 
 // Euclidean projection onto the Coulomb cone K_μ = {r : ‖r_t‖ ≤ μ r_n}:
 //   r if r ∈ K_μ; 0 if μ‖r_t‖ ≤ −r_n (r in the polar cone); otherwise
