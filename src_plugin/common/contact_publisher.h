@@ -1,14 +1,21 @@
 /* The one way outputs read contacts: a style that computes contacts derives from
    ContactPublisher and fills its core ContactList (core/contact/contact_list.h) on every
    force call or solve; computes find all publishers with contact_publishers() and combine
-   their summaries over the ranks. Each contact is published by one rank only. */
+   their summaries over the ranks. Each contact is published by one rank only.
+   Style headers are compiled into LIGGGHTS' own objects (style_*.h), which do not see
+   Eigen: so this header only declares the core types; include
+   core/contact/contact_list.h where they are used. */
 
 #ifndef WIREGRAIN_CONTACT_PUBLISHER_H
 #define WIREGRAIN_CONTACT_PUBLISHER_H
 
 #include <vector>
 
-#include "core/contact/contact_list.h"
+namespace wiregrain {
+class ContactList;
+struct ContactSummary;
+enum class ContactKind;
+}
 
 namespace LAMMPS_NS {
 class LAMMPS;

@@ -47,4 +47,16 @@ const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nt
   return record + 1;
 }
 
+std::vector<double> all_gather_records(MPI_Comm comm, const std::vector<double> &mine) {
+  int nprocs = 1;
+  MPI_Comm_size(comm, &nprocs);
+  const int my_count = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), offsets(nprocs, 0);
+  MPI_Allgather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int p = 1; p < nprocs; p++) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<double> all(offsets[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(mine.data(), my_count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm);
+  return all;
+}
+
 }  // namespace wiregrain_lmp

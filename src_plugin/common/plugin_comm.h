@@ -1,6 +1,11 @@
-// Ghost-shell size for the plugin's styles.
+// Communication helpers for the plugin's styles: ghost-shell size, periodic image shifts,
+// restart records, all-gathers of per-atom records.
 #ifndef WIREGRAIN_PLUGIN_COMM_H
 #define WIREGRAIN_PLUGIN_COMM_H
+
+#include <mpi.h>
+
+#include <vector>
 
 namespace LAMMPS_NS {
 class LAMMPS;
@@ -28,6 +33,11 @@ void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, c
 // A fix's per-atom restart record of atom nlocal (Fix::unpack_restart(nlocal, nth)): the
 // values after its length word, skipping the records of the nth fixes stored before it.
 const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth);
+
+// Every rank's `mine` (fixed-size records of doubles, any number per rank) concatenated in
+// rank order, returned on every rank: MPI_Allgather of the lengths, then MPI_Allgatherv.
+// Collective over `comm`.
+std::vector<double> all_gather_records(MPI_Comm comm, const std::vector<double> &mine);
 
 }  // namespace wiregrain_lmp
 

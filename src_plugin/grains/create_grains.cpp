@@ -27,12 +27,14 @@
 #include "modify.h"
 #include "region.h"
 
+#include "core/geometry/broad_phase.h"
 #include "core/geometry/contact_geometry.h"
 #include "core/geometry/convex_shape.h"
 #include "core/common/errors.h"
 #include "core/geometry/shape_library.h"
 #include "core/common/validation.h"
 #include "plugin_args.h"
+#include "plugin_comm.h"
 #include "plugin_create.h"
 
 using namespace LAMMPS_NS;
@@ -66,24 +68,22 @@ struct Body {
   std::unique_ptr<wiregrain::PosedShape> posed;
 };
 
-// Bodies binned on a uniform grid with cells at least as large as the largest bounding
-// diameter, so a candidate only meets the bodies of its own and the adjacent cells.
-// Periodic dimensions wrap (cells and minimum-image displacements).
+// Bodies binned on the broad-phase grid over the box (core/geometry/broad_phase.h) with
+// cells at least as large as the largest bounding diameter, so a candidate only meets the
+// bodies of its own and the adjacent cells. Periodic dimensions wrap (cells and
+// minimum-image displacements, as Domain::minimum_image).
 class Placer {
  public:
   Placer(Domain *domain, const wiregrain::ShapeLibrary &library, double max_bound)
-      : domain_(domain), library_(library) {
-    for (int d = 0; d < 3; d++) {
-      lo_[d] = domain->boxlo[d];
-      const double length = domain->boxhi[d] - domain->boxlo[d];
-      n_[d] = std::max(1L, std::min(100000L, static_cast<long>(std::floor(length / (2.0 * max_bound)))));
-      cell_[d] = length / n_[d];
-      periodic_[d] = domain->periodicity[d] != 0;
-    }
-  }
+      : library_(library),
+        grid_(wiregrain::BroadPhaseGrid::box(
+            Eigen::Vector3d(domain->boxlo[0], domain->boxlo[1], domain->boxlo[2]),
+            Eigen::Vector3d(domain->boxhi[0], domain->boxhi[1], domain->boxhi[2]),
+            {domain->periodicity[0] != 0, domain->periodicity[1] != 0, domain->periodicity[2] != 0},
+            2.0 * max_bound)) {}
 
   void add(Body body) {
-    cells_[key(cell_of(body.x))].push_back(static_cast<int>(bodies_.size()));
+    grid_.insert(body.x);
     bodies_.push_back(std::move(body));
   }
 
@@ -94,71 +94,40 @@ class Placer {
   bool overlaps(const wiregrain::PosedShape &c, double bound, double &min_gap, long &pairs) const {
     min_gap = std::numeric_limits<double>::infinity();
     pairs = 0;
-    const std::array<long, 3> home = cell_of(c.position());
-    std::vector<long> keys;
-    for (int i = -1; i <= 1; i++)
-      for (int j = -1; j <= 1; j++)
-        for (int k = -1; k <= 1; k++) {
-          std::array<long, 3> n = {home[0] + i, home[1] + j, home[2] + k};
-          bool valid = true;
-          for (int d = 0; d < 3; d++) {
-            if (n[d] >= 0 && n[d] < n_[d]) continue;
-            if (periodic_[d]) n[d] = ((n[d] % n_[d]) + n_[d]) % n_[d];
-            else valid = false;
-          }
-          if (valid) keys.push_back(key(n));
-        }
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    for (long k : keys) {
-      const auto it = cells_.find(k);
-      if (it == cells_.end()) continue;
-      for (int b : it->second) {
-        const Body &body = bodies_[b];
-        double d[3] = {body.x[0] - c.position()[0], body.x[1] - c.position()[1], body.x[2] - c.position()[2]};
-        const double d0[3] = {d[0], d[1], d[2]};
-        domain_->minimum_image(d);
-        const bool shifted_image = d[0] != d0[0] || d[1] != d0[1] || d[2] != d0[2];
-        const Eigen::Vector3d image = c.position() + Eigen::Vector3d(d[0], d[1], d[2]);
-        const double reach = bound + body.bound;
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > reach * reach) continue;
-        double gap;
-        if (body.shape == kSegment) {
-          gap = wiregrain::segment_contact(c, image - body.half, image + body.half, body.sweep).gap;
-        } else if (body.shape < 0) {
-          gap = wiregrain::segment_contact(c, image, image, body.sweep).gap;
-        } else if (!shifted_image) {
-          gap = wiregrain::core_distance(c, *body.posed).distance - c.sweep_radius() - body.sweep;
-        } else {
-          const wiregrain::PosedShape shifted(library_[body.shape].shape, image, body.posed->orientation());
-          gap = wiregrain::core_distance(c, shifted).distance - c.sweep_radius() - body.sweep;
-        }
-        if (gap <= 0.0) return true;
-        min_gap = std::min(min_gap, gap);
-        pairs++;
+    bool overlapping = false;
+    grid_.for_each_near(c.position(), [&](int b, const Eigen::Vector3d &shift) {
+      if (overlapping) return;
+      const Body &body = bodies_[b];
+      const Eigen::Vector3d d = (body.x - c.position()) + shift;  // minimum image
+      const bool shifted_image = shift != Eigen::Vector3d::Zero();
+      const Eigen::Vector3d image = c.position() + d;
+      const double reach = bound + body.bound;
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > reach * reach) return;
+      double gap;
+      if (body.shape == kSegment) {
+        gap = wiregrain::segment_contact(c, image - body.half, image + body.half, body.sweep).gap;
+      } else if (body.shape < 0) {
+        gap = wiregrain::segment_contact(c, image, image, body.sweep).gap;
+      } else if (!shifted_image) {
+        gap = wiregrain::core_distance(c, *body.posed).distance - c.sweep_radius() - body.sweep;
+      } else {
+        const wiregrain::PosedShape shifted(library_[body.shape].shape, image, body.posed->orientation());
+        gap = wiregrain::core_distance(c, shifted).distance - c.sweep_radius() - body.sweep;
       }
-    }
-    return false;
+      if (gap <= 0.0) {
+        overlapping = true;
+        return;
+      }
+      min_gap = std::min(min_gap, gap);
+      pairs++;
+    });
+    return overlapping;
   }
 
  private:
-  Domain *domain_;
   const wiregrain::ShapeLibrary &library_;
-  double lo_[3], cell_[3];
-  long n_[3];
-  bool periodic_[3];
+  wiregrain::BroadPhaseGrid grid_;
   std::vector<Body> bodies_;
-  std::unordered_map<long, std::vector<int>> cells_;
-
-  std::array<long, 3> cell_of(const Eigen::Vector3d &x) const {
-    std::array<long, 3> c;
-    for (int d = 0; d < 3; d++) {
-      const double f = std::floor((x[d] - lo_[d]) / cell_[d]);
-      c[d] = f < 0.0 ? 0 : (f >= n_[d] ? n_[d] - 1 : static_cast<long>(f));
-    }
-    return c;
-  }
-  long key(const std::array<long, 3> &c) const { return (c[2] * n_[1] + c[1]) * n_[0] + c[0]; }
 };
 
 struct ShapeChoice {
@@ -368,12 +337,7 @@ void CreateGrains::command(int narg, char **arg) {
     mine.push_back(atom->tag[i]);
     mine.push_back(wire ? wire->wire_next[i] : 0);
   }
-  int count = static_cast<int>(mine.size());
-  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < comm->nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> existing(displs.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, existing.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  const std::vector<double> existing = wiregrain_lmp::all_gather_records(world, mine);
   const int n_existing = static_cast<int>(existing.size()) / kValues;
 
   // wire segments: a bead and its next bead (ends placed by minimum image)

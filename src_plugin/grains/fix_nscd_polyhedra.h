@@ -6,7 +6,8 @@
        [order forward|alternating|random] [seed 1] [warm_start yes|no] [restitution 0]
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
-       [margin 0] [write_problems N file_*.txt] [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
+       [margin 0] [write_problems N file_*.txt] [every 1]
+       [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
    Each step: at the end of step n, with the forces and torques of step n (gravity
    and every other style's), the free velocities v + h F/m, L + h T are corrected by the
@@ -16,7 +17,12 @@
    x += h((1 − θ) v_n + θ v_{n+1}), the orientation by the exact torque-free rotation with
    (1 − θ) L_n + θ L_{n+1} (θ = 1 by default). v_n and L_n of each grain are kept per atom
    (they migrate and restart), so velocities set between runs are honoured. Walls are planes of
-   infinite mass, each with its own friction and velocity.
+   infinite mass, each with its own friction and velocity. The step itself is the core's
+   (core/nscd/grain_step.h); this fix gathers, schedules, scatters and reports.
+
+   every N: the solve runs with h = N dt at the end of the steps whose number is a
+   multiple of N, the grains move once at the start of the following step and are held
+   in between (LIGGGHTS step = wire sub-step, grains every N).
 
    MPI: every rank gathers all grains of the group, detects and solves the same contact
    problem in the same order and keeps its own grains' results (replicated solve), so 1
@@ -40,21 +46,22 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #define LMP_FIX_NSCD_POLYHEDRA_H
 
 #include <cstdio>
-#include <map>
+#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "contact_publisher.h"
 #include "fix.h"
 
 namespace wiregrain {
+struct GrainState;
+struct GrainStepResult;
 struct NscdStep;
-struct NscdOptions;
 }
 
 namespace LAMMPS_NS {
 
-class FixNSCDPolyhedra : public Fix {
+class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
  public:
   FixNSCDPolyhedra(class LAMMPS *, int, char **);
   int setmask();
@@ -78,37 +85,34 @@ class FixNSCDPolyhedra : public Fix {
   int maxsize_restart();
   double memory_usage();
 
-  struct Wall {
-    double point[3], normal[3], velocity[3];
-    double friction;
-  };
-  // one impulse of the last step, kept for the warm start: world-frame position and
-  // impulse of a contact point of the pair (tag_a, tag_b); tag_a < 0 for wall −tag_a−1
-  struct StoredImpulse {
-    double position[3];
-    double impulse[3];
-  };
+  // the contacts of the last solve whose grain b this rank owns
+  const wiregrain::ContactList &published_contacts() const;
 
  private:
-  double friction_, tolerance_, restitution_, margin_, theta_, overlap_recovery_, overlap_speed_, damping_;
-  int max_iterations_, order_, convergence_;
-  long seed_;
-  bool warm_start_;
-  std::vector<Wall> walls_;         // current positions, moved by velocity·h every step
+  // the core step's options, the walls (current positions, moved by velocity·h every
+  // solve), last solve's impulses (warm start, restart) and the published contacts;
+  // defined in the .cpp (style headers are compiled without Eigen)
+  struct CoreState;
+  std::unique_ptr<CoreState> core_;
+  int every_ = 1;                           // solve every N steps with h = N dt
   class AtomVecPolyhedron *grains_;
-  bool solved_once_;                // a contact solve happened (setup of the first run)
-  std::map<std::pair<int, int>, std::vector<StoredImpulse> > impulses_;
+  bool solved_once_;                        // a contact solve happened (setup of the first run)
   double stats_[6];
-  double largest_overlap_ = 0.0;         // over all steps since the fix was made
-  double timings_[2];                     // wall-clock seconds of the last step: gather+detection, solve
-  std::vector<double> wall_forces_;       // 3 per wall
-  double **contact_force_;                // per grain: force, torque
-  double **step_start_velocity_;          // per grain: v_n, L_n of the last solve (θ-method)
+  double largest_overlap_ = 0.0;            // over all steps since the fix was made
+  double timings_[2];                       // wall-clock seconds of the last solve: gather+detection, solve
+  std::vector<double> wall_forces_;         // 3 per wall
+  double **contact_force_;                  // per grain: force, torque
+  double **step_start_velocity_;            // per grain: v_n, L_n of the last solve (θ-method)
+  int problem_every_ = 0;                   // write the reduced problem every N steps (0: never)
+  std::string problem_file_;                // its file name, '*' replaced by the step
 
   void solve_step();
-  int problem_every_ = 0;      // write the reduced problem every N steps (0: never)
-  std::string problem_file_;  // its file name, '*' replaced by the step
-  void write_problem(const wiregrain::NscdStep &, const wiregrain::NscdOptions &);
+  std::vector<wiregrain::GrainState> gather_grains();
+  void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
+  void record_stats(const wiregrain::GrainStepResult &);
+  void publish_contacts(const wiregrain::GrainStepResult &);
+  [[noreturn]] void solve_failed(const std::exception &);
+  void write_problem(const wiregrain::NscdStep &);
 };
 
 }  // namespace LAMMPS_NS

@@ -427,6 +427,62 @@ run             50
         self.assertEqual(counted, 51)                 # the setup solve and 50 steps
 
 
+class Every(DeckTestCase):
+    # every N: one solve with h = N dt every N steps, the grains move once per solve and are
+    # held in between. 50 steps of dt with every 5 are 10 steps of 5 dt.
+    def fall(self, every, dt, steps, thermo):
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 10.0, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra every {every} wall 0 0 0 0 0 1
+velocity        all set 0.3 -0.2 0.5
+timestep        {dt}
+variable        x1 equal x[1]
+variable        y1 equal y[1]
+variable        z1 equal z[1]
+thermo_style    custom step v_x1 v_y1 v_z1
+thermo_modify   format float %.17g
+thermo          {thermo}
+run             {steps}
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        return r.thermo()
+
+    def test_free_fall_every_5(self):
+        every = self.fall(5, 1e-3, 50, 1)
+        once = self.fall(1, 5e-3, 10, 1)
+        end = np.array([every[k][-1] for k in ("x1", "y1", "z1")])
+        expected = np.array([once[k][-1] for k in ("x1", "y1", "z1")])
+        difference = np.max(np.abs(end - expected))
+        # held between solves: the position changes only at the step after a solve (1, 6, 11, ...)
+        moved = np.flatnonzero(np.diff(every["z1"]) != 0.0) + 1
+        print(f"every 5 at dt vs every 1 at 5 dt: largest position difference {difference:.1e}; "
+              f"moved at steps {every['Step'][moved][:4]}")
+        self.assertLess(difference, 1e-12)
+        np.testing.assert_array_equal(every["Step"][moved], np.arange(1, 50, 5))
+
+    def test_resting_cube_every_5(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra every 5 tolerance 1e-12 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        z1 equal z[1]
+thermo_style    custom step f_nscd[9] v_z1
+thermo_modify   format float %.15g
+thermo          5
+run             50
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        print(f"every 5, resting cube (m g = 1): floor force {-t['nscd[9]'][-1]:.15f}, "
+              f"z drift {np.max(np.abs(t['z1'] - 0.5)):.1e}")
+        self.assertLess(np.max(np.abs(t["nscd[9]"] + 1.0)), 1e-9)
+        self.assertLess(np.max(np.abs(t["z1"] - 0.5)), 1e-12)
+
+
 class BadInput(DeckTestCase):
     def check(self, options, message):
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
@@ -462,6 +518,7 @@ class BadInput(DeckTestCase):
                    "fix nscd/polyhedra (id nscd): cannot open 'no_such_directory/p_0.txt' for writing")
         self.check("write_problems 0 p_*.txt",
                    "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be >= 1, got 0")
+        self.check("every 0", "fix nscd/polyhedra (id nscd): value of 'every' must be >= 1, got 0")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")

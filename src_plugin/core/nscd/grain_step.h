@@ -1,0 +1,161 @@
+// One Moreau–Jean step of rigid spheropolyhedral grains against each other and against
+// plane walls (the paper's Sec. 2.1; DESIGN.md §3): what fix nscd/polyhedra does each
+// step, without LIGGGHTS.
+//
+//  1. free velocities with implicit viscous damping at rate γ (not in the paper; for
+//     relaxing a deposit): m (v_{k+1} − v_k) = h F − h γ m v_{k+1} + Hᵀ r, i.e.
+//         v_free = (v_k + h F/m) / (1 + hγ),  the impulses see the mass (1 + hγ) m,
+//     and for the rotation, with I_w = R diag(I) Rᵀ the world inertia,
+//         ω_free = I_w⁻¹ (I_w ω_k + h T) / (1 + hγ)
+//     (so a grain at rest still presses with its full weight);
+//  2. contact points (core/geometry/contact_geometry.h) of every grain pair and every
+//     grain–wall pair whose gap may close within the step: activation distance
+//         d_act = margin + 2h (2 max_i(|v_free,i| + |ω_free,i| R_i) + max wall speed),
+//     pairs from a broad-phase grid (core/geometry/broad_phase.h) of cell 2 R_max + d_act;
+//  3. the points listed from the top down (descending z of the point, ties in detection
+//     order: grain pairs by grain index, then walls): a forward Gauss–Seidel sweep then
+//     carries the weight of a pile under gravity along −z to the floor in one pass (the
+//     order changes the sweeps needed, not the solution);
+//  4. warm start: each point starts from last step's impulse of the nearest stored point
+//     of the same pair within R_max / 4 (GrainImpulseMemory);
+//  5. solve_nscd_step (core/nscd/nscd_solver.h), then per grain the contact force and
+//     torque Hᵀ r / h, the force of the grains on each wall, and the contact list.
+// The position update that follows the step is advance_grain_pose.
+//
+// Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "core/contact/contact_list.h"
+#include "core/geometry/shape_library.h"
+#include "core/nscd/nscd_solver.h"
+
+namespace wiregrain {
+
+struct GrainState {
+  long tag = 0;
+  int shape = 0;                                                      // ShapeLibrary index
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();                 // centre of mass
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();    // body → world, unit
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();         // world frame
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();                    // external, this step
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();                   // external, about the centre
+  double mass = 1.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Ones();                  // principal moments (body axes)
+};
+
+// A plane of infinite mass through `point`, unit `normal` into the grains, moving at
+// `velocity` (the caller moves `point`).
+struct PlaneWall {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  double friction = 0.5;
+};
+
+// The defaults are fix nscd/polyhedra's (README): forward sweeps, Siconos' natural-map
+// residual, push-out speed 0.1; the tolerance and the cap are NscdOptions'.
+NscdOptions grain_solver_defaults();
+
+struct GrainStepOptions {
+  NscdOptions solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
+  double friction = 0.5;   // μ between grains
+  double damping = 0.0;    // γ ≥ 0
+  double margin = 0.0;     // extra activation distance ≥ 0
+  bool warm_start = true;
+  // solver options of a step: seed = solver.seed + step_number (a new random order per step)
+  NscdOptions solver_for_step(std::uint64_t step_number) const;
+  // InvalidArgument("friction" | "damping" | "margin" | solver keywords, ...)
+  void validate() const;
+};
+
+// Last step's impulses (world frame) at their contact points, by pair (a, b): a = tag of
+// grain a or −(wall + 1), b = tag of grain b.
+class GrainImpulseMemory {
+ public:
+  using PairKey = std::pair<long, long>;
+  struct Impulse {
+    Eigen::Vector3d position, impulse;
+  };
+  // the pair's stored point nearest to `position` if its squared distance is below
+  // `radius2`, else nullptr
+  const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2) const;
+  void clear() { pairs_.clear(); }
+  void add(const PairKey& pair, const Impulse& impulse) { pairs_[pair].push_back(impulse); }
+  const std::map<PairKey, std::vector<Impulse>>& pairs() const { return pairs_; }
+
+ private:
+  std::map<PairKey, std::vector<Impulse>> pairs_;
+};
+
+// A contact point of the step: the solver's row and where it came from.
+struct GrainContactPoint {
+  NscdContact constraint;             // body indices into the grain list, Jacobians, μ, gap
+  GrainImpulseMemory::PairKey pair;   // (tag a or −(wall + 1), tag b)
+  Eigen::Vector3d position;           // world frame
+  Eigen::Matrix3d frame;              // columns (n, t1, t2); n from a to b
+};
+
+// Steps 1–4: the problem to solve.
+struct GrainStepProblem {
+  NscdStep step;                              // bodies = grains (same order), contacts top-down
+  std::vector<GrainContactPoint> points;      // parallel to step.contacts
+  std::vector<Eigen::Vector3d> warm_start;    // local frames; empty without warm start
+  int wall_count = 0;
+};
+
+struct GrainStepStats {
+  int sweeps = 0;
+  double residual = 0.0;
+  int contact_points = 0;
+  double max_overlap = 0.0;                // at the step start
+  double max_predicted_penetration = 0.0;
+  bool hit_iteration_cap = false;
+};
+
+struct GrainStepResult {
+  std::vector<Eigen::Vector3d> velocities, angular_velocities;   // v_{k+1}, ω_{k+1} per grain
+  std::vector<Eigen::Vector3d> contact_forces, contact_torques;  // Hᵀ r / h per grain
+  std::vector<Eigen::Vector3d> wall_forces;                      // of the grains on each wall
+  GrainStepStats stats;
+  ContactList contacts;  // every point (open ones too), force = impulse / h on b
+};
+
+// InvalidArgument("time_step" | "grains" | "walls" | options keywords, ...) on bad input
+// (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data).
+GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                                     const std::vector<PlaneWall>& walls, double time_step,
+                                     const GrainStepOptions& options, const GrainImpulseMemory& memory);
+// Step 5; replaces `memory` by this step's impulses. NumericalFailure or InvalidArgument
+// from the solver.
+GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                                 const GrainStepOptions& options, std::uint64_t step_number,
+                                 GrainImpulseMemory& memory);
+// Both.
+GrainStepResult grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                           const std::vector<PlaneWall>& walls, double time_step,
+                           const GrainStepOptions& options, std::uint64_t step_number,
+                           GrainImpulseMemory& memory);
+
+// θ-method pose update after a step (nscd_solver.h):
+//     x += h ((1 − θ) v_k + θ v_{k+1})   (theta_method_displacement),
+// the orientation by the torque-free rotation (RigidRotation::rotate_free) over h with the
+// angular momentum (1 − θ) L_k + θ L_{k+1} (world frame).
+struct GrainPose {
+  Eigen::Vector3d position;
+  Eigen::Quaterniond orientation;
+};
+GrainPose advance_grain_pose(const GrainPose& pose, const Eigen::Vector3d& inertia,
+                             const Eigen::Vector3d& velocity_begin, const Eigen::Vector3d& velocity_end,
+                             const Eigen::Vector3d& momentum_begin, const Eigen::Vector3d& momentum_end,
+                             double time_step, double theta);
+
+}  // namespace wiregrain
