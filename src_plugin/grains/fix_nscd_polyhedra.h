@@ -50,7 +50,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #include <string>
 #include <vector>
 
-#include "contact_publisher.h"
+#include "common/contact_publisher.h"
 #include "fix.h"
 
 namespace wiregrain {
