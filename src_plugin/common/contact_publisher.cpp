@@ -1,5 +1,7 @@
 #include "contact_publisher.h"
 
+#include "core/contact/contact_list.h"
+
 #include <mpi.h>
 
 #include "force.h"

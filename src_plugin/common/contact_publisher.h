@@ -8,7 +8,13 @@
 
 #include <vector>
 
-#include "core/contact/contact_list.h"
+// declared in core/contact/contact_list.h; not included here, so that style headers, which
+// LIGGGHTS' own sources include, need no Eigen
+namespace wiregrain {
+class ContactList;
+struct ContactSummary;
+enum class ContactKind;
+}
 
 namespace LAMMPS_NS {
 class LAMMPS;

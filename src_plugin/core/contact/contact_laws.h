@@ -11,26 +11,10 @@
 //     k_n = E* l_w π/4,   k_t = E* r_w.
 #pragma once
 
+#include "core/contact/contact_materials.h"
 #include "core/contact/soft_contact.h"
 
 namespace wiregrain {
-
-// Elastic constants of one side of a contact.
-struct ElasticMaterial {
-  double youngs_modulus = 100.0;  // E (Table 1: E_w = 100)
-  double poisson_ratio = 0.0;     // ν (Table 1: ν_w = 0)
-
-  // Throws InvalidArgument: E finite and > 0 (name "E"), ν finite in [0, 0.5) (name "nu").
-  void validate() const;
-};
-
-// Damping and friction of a contact (not derived from the elastic constants).
-struct ContactFriction {
-  double damping_ratio = 0.0;     // ζ
-  double static_friction = 0.0;   // μ_s
-  double dynamic_friction = 0.0;  // μ_d ≤ μ_s
-  bool limit_force = false;       // no attractive normal force when true
-};
 
 // Effective moduli E* of the pairings above.
 double wire_wire_modulus(const ElasticMaterial& a, const ElasticMaterial& b);
