@@ -10,12 +10,13 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
-#include "fix_wire_elastic.h"
 #include "modify.h"
 #include "update.h"
 
+#include "core/wire/wire_elasticity.h"
 #include "plugin_args.h"
 #include "plugin_vtk.h"
+#include "wire_energy_source.h"
 
 #ifdef LAMMPS_VTK
 #include <vtkCellArray.h>
@@ -82,7 +83,7 @@ int DumpWireVTK::find_energy_fix(bool at_init) {
     wiregrain_lmp::style_error(error, kKind, kStyle, id,
                                "energy fix '" + energy_fix_id_ + "' does not exist" +
                                    (at_init ? " (was it unfixed?)" : " (define it before the dump)"));
-  if (!dynamic_cast<FixWireElastic *>(modify->fix[ifix]))
+  if (!dynamic_cast<wiregrain_lmp::WireEnergySource *>(modify->fix[ifix]))
     wiregrain_lmp::style_error(error, kKind, kStyle, id,
                                "energy fix '" + energy_fix_id_ + "' is a fix " +
                                    modify->fix[ifix]->style + ", not a fix wire/elastic");
@@ -98,7 +99,8 @@ void DumpWireVTK::pack(int *ids) {
   const int *mask = atom->mask, *tag = atom->tag, *type = atom->type;
   double **x = atom->x, **v = atom->v;
   const tagint *image = atom->image;
-  double **energy = energy_fix_ >= 0 ? modify->fix[energy_fix_]->array_atom : NULL;
+  const wiregrain_lmp::WireEnergySource *energy =
+      energy_fix_ >= 0 ? dynamic_cast<const wiregrain_lmp::WireEnergySource *>(modify->fix[energy_fix_]) : NULL;
 
   int m = 0, n = 0;
   for (int i = 0; i < nlocal; i++) {
@@ -117,8 +119,9 @@ void DumpWireVTK::pack(int *ids) {
     row[VY] = v[i][1];
     row[VZ] = v[i][2];
     if (energy) {
-      row[E_STRETCH] = energy[i][0];
-      row[E_BEND] = energy[i][1];
+      const wiregrain::BeadElasticEnergy e = energy->bead_energy(i);
+      row[E_STRETCH] = e.stretching;
+      row[E_BEND] = e.bending;
     }
     if (ids) ids[n] = tag[i];
     m += size_one;

@@ -1,5 +1,5 @@
 /* compute wire/contacts: statistics of the wire–wire contacts of pair wire/contact in
-   the current step.
+   the current step, read from the published contact lists (common/contact_publisher.h).
 
    compute ID all wire/contacts
 
@@ -27,7 +27,6 @@ class ComputeWireContacts : public Compute {
   void compute_vector();
 
  private:
-  class PairWireContact *pair_;
   double smallest_radius_;
 };
 

@@ -7,17 +7,18 @@
 
 #include "atom.h"
 #include "error.h"
-#include "fix_wire_elastic.h"
+#include "fix.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
 
+#include "core/wire/wire_elasticity.h"
 #include "plugin_args.h"
 
 using namespace LAMMPS_NS;
 
 ComputeWireEnergy::ComputeWireEnergy(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), fix_id_(NULL), fix_(NULL), bead_values_(NULL), nmax_(0) {
+    : Compute(lmp, iarg, narg, arg), fix_id_(NULL), source_(NULL), bead_values_(NULL), nmax_(0) {
   wiregrain_lmp::StyleArgs args(error, "compute", "wire/energy", id, narg, arg, iarg);
   iarg = narg;
   while (!args.done()) {
@@ -45,46 +46,50 @@ ComputeWireEnergy::~ComputeWireEnergy() {
 }
 
 void ComputeWireEnergy::init() {
-  fix_ = NULL;
+  source_ = NULL;
   int found = 0;
   for (int k = 0; k < modify->nfix; k++) {
-    FixWireElastic *f = dynamic_cast<FixWireElastic *>(modify->fix[k]);
-    if (!f) continue;
+    Fix *f = modify->fix[k];
+    if (strcmp(f->style, "wire/elastic") != 0) continue;
     if (fix_id_ && strcmp(fix_id_, f->id) != 0) continue;
-    fix_ = f;
+    source_ = dynamic_cast<const wiregrain_lmp::WireEnergySource *>(f);
     found++;
   }
-  if (fix_id_ && !fix_)
+  if (fix_id_ && !source_)
     wiregrain_lmp::style_error(error, "compute", "wire/energy", id,
                                "fix ID '" + std::string(fix_id_) + "' is not a fix wire/elastic");
-  if (!fix_)
+  if (!source_)
     wiregrain_lmp::style_error(error, "compute", "wire/energy", id, "needs a fix wire/elastic");
   if (found > 1)
     wiregrain_lmp::style_error(error, "compute", "wire/energy", id,
                                "several fix wire/elastic are defined: name one with 'fix ID'");
 }
 
-double **ComputeWireEnergy::current_fix_values() {
-  if (update->ntimestep != fix_->forces_step())
+void ComputeWireEnergy::check_current() {
+  if (update->ntimestep != source_->energies_step())
     wiregrain_lmp::style_error(error, "compute", "wire/energy", id,
                                "fix wire/elastic has not computed this step (use the compute "
                                "only on steps of a run, e.g. in thermo output)");
-  return fix_->array_atom;
 }
 
 void ComputeWireEnergy::compute_vector() {
   invoked_vector = update->ntimestep;
-  double **values = current_fix_values();
-  double local[3] = {0.0, 0.0, 0.0}, sums[3];
+  check_current();
+  wiregrain::WireEnergyTotals local;
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit)
-      for (int k = 0; k < 3; k++) local[k] += values[i][k];
-  MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
-  vector[0] = sums[0];
-  vector[1] = sums[1];
-  vector[2] = sums[0] + sums[1];
-  vector[3] = sums[2];
-  vector[4] = sums[2] > 0.0 ? vector[2] / sums[2] : 0.0;
+    if (atom->mask[i] & groupbit) local.add(source_->bead_energy(i));
+  const double local_sums[3] = {local.stretching_energy, local.bending_energy, local.length};
+  double sums[3];
+  MPI_Allreduce(local_sums, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  wiregrain::WireEnergyTotals totals;
+  totals.stretching_energy = sums[0];
+  totals.bending_energy = sums[1];
+  totals.length = sums[2];
+  vector[0] = totals.stretching_energy;
+  vector[1] = totals.bending_energy;
+  vector[2] = totals.total_energy();
+  vector[3] = totals.length;
+  vector[4] = totals.energy_per_length();
 }
 
 void ComputeWireEnergy::compute_peratom() {
@@ -95,9 +100,14 @@ void ComputeWireEnergy::compute_peratom() {
     memory->create(bead_values_, nmax_, 3, "wire/energy:bead_values");
     array_atom = bead_values_;
   }
-  double **values = current_fix_values();
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int k = 0; k < 3; k++) bead_values_[i][k] = (atom->mask[i] & groupbit) ? values[i][k] : 0.0;
+  check_current();
+  for (int i = 0; i < atom->nlocal; i++) {
+    const wiregrain::BeadElasticEnergy e =
+        (atom->mask[i] & groupbit) ? source_->bead_energy(i) : wiregrain::BeadElasticEnergy();
+    bead_values_[i][0] = e.stretching;
+    bead_values_[i][1] = e.bending;
+    bead_values_[i][2] = e.segment_length;
+  }
 }
 
 double ComputeWireEnergy::memory_usage() { return double(nmax_) * 3 * sizeof(double); }

@@ -6,7 +6,9 @@
    fix: the fix wire/elastic to read (default: the only one defined).
    vector = [stretching energy, bending energy, elastic energy U_s, wire length L, U_s/L]
    summed over the beads of the group (the length counts each segment once, with its
-   first bead); per-atom array = [stretching energy, bending energy, segment length]. */
+   first bead); per-atom array = [stretching energy, bending energy, segment length].
+   Reads the fix through the WireEnergySource interface; the sums are core's
+   WireEnergyTotals. */
 
 #ifdef COMPUTE_CLASS
 
@@ -18,6 +20,7 @@ ComputeStyle(wire/energy,ComputeWireEnergy)
 #define LMP_COMPUTE_WIRE_ENERGY_H
 
 #include "compute.h"
+#include "common/wire_energy_source.h"
 
 namespace LAMMPS_NS {
 
@@ -32,10 +35,10 @@ class ComputeWireEnergy : public Compute {
 
  private:
   char *fix_id_;
-  class FixWireElastic *fix_;
+  const wiregrain_lmp::WireEnergySource *source_;  // the fix wire/elastic read
   double **bead_values_;
   int nmax_;
-  double **current_fix_values();
+  void check_current();
 };
 
 }  // namespace LAMMPS_NS

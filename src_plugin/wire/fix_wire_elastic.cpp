@@ -47,7 +47,6 @@ void add_force(double *f, const Eigen::Vector3d &g) {
 
 FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg),
-      youngs_modulus_(100.0),
       m_elo_(1.0),
       m_rot_(0.1),
       wire_(NULL),
@@ -61,7 +60,10 @@ FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
     args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "E") youngs_modulus_ = args.value_positive(key);
+    if (key == "E") {
+      material_keywords_.youngs_modulus = args.value_positive(key);
+      material_keywords_.has_youngs_modulus = true;
+    }
     else if (key == "m_elo") m_elo_ = args.value_nonnegative(key);
     else if (key == "m_rot") m_rot_ = args.value_nonnegative(key);
     else args.unknown_keyword(key);
@@ -97,6 +99,11 @@ int FixWireElastic::setmask() {
 }
 
 void FixWireElastic::init() {
+  // E_w of each atom type (plugin_material.h)
+  youngs_modulus_of_type_.assign(atom->ntypes + 1, 0.0);
+  for (int type = 1; type <= atom->ntypes; type++)
+    youngs_modulus_of_type_[type] =
+        wiregrain_lmp::wire_material_of_type(lmp, type, material_keywords_, "fix", "wire/elastic", id).youngs_modulus;
   // the longest rest length decides how far ghost beads must reach
   double longest_local = 0.0, longest = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
@@ -117,19 +124,22 @@ void FixWireElastic::init() {
 }
 
 double FixWireElastic::critical_time_step() {
-  // the stiffest segment (shortest rest length, thickest bead) and the lightest bead
-  double local[3] = {1e300, 0.0, 1e300}, global[3];
+  // the stiffest segment (shortest rest length, thickest bead, stiffest material) and the
+  // lightest bead
+  double local[4] = {1e300, 0.0, 1e300, 0.0}, global[4];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     if (wire_->wire_next[i] != 0) local[0] = std::min(local[0], wire_->wire_rest[i]);
     local[1] = std::max(local[1], atom->radius[i]);
     local[2] = std::min(local[2], atom->rmass[i]);
+    local[3] = std::max(local[3], youngs_modulus_of_type_[atom->type[i]]);
   }
   local[1] = -local[1];
-  MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_MIN, world);
+  local[3] = -local[3];
+  MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_MIN, world);
   if (global[0] >= 1e300) return 1e300;  // no segment in the group
   wiregrain::WireMaterial m;
-  m.youngs_modulus = youngs_modulus_;
+  m.youngs_modulus = -global[3];
   m.elongation_multiplier = m_elo_;
   m.rotation_multiplier = m_rot_;
   m.segment_length = global[0];
@@ -193,6 +203,7 @@ void FixWireElastic::post_force(int /*vflag*/) {
   const int *tag = atom->tag, *mask = atom->mask;
   const int *prev = wire_->wire_prev, *next = wire_->wire_next;
   const double *rest = wire_->wire_rest, *radius = atom->radius;
+  const int *type = atom->type;
   const int nlocal = atom->nlocal;
 
   for (int i = 0; i < nlocal; i++) bead_energy_[i][0] = bead_energy_[i][1] = bead_energy_[i][2] = 0.0;
@@ -203,13 +214,20 @@ void FixWireElastic::post_force(int /*vflag*/) {
     domain->minimum_image(d);
     return Eigen::Vector3d(ref.x() + d[0], ref.y() + d[1], ref.z() + d[2]);
   };
-  const auto axial = [&](int i) {  // k_s = m_elo E A / l0 of the segment from bead i to next
-    return m_elo_ * youngs_modulus_ * kPi * radius[i] * radius[i] / rest[i];
+  // the material of the segment from bead i to the next (of bead i's type and radius)
+  const auto material_of = [&](int i, double segment_length) {
+    wiregrain::WireMaterial m;
+    m.youngs_modulus = youngs_modulus_of_type_[type[i]];
+    m.radius = radius[i];
+    m.segment_length = segment_length;
+    m.elongation_multiplier = m_elo_;
+    m.rotation_multiplier = m_rot_;
+    return m;
   };
-  const auto bending = [&](int c, int p) {  // κ = m_rot E I / l at inner node c
-    const double r = radius[c];
-    return m_rot_ * youngs_modulus_ * kPi * r * r * r * r / 4.0 / (0.5 * (rest[p] + rest[c]));
-  };
+  // k_s = m_elo E A / l0 of the segment from bead i to the next
+  const auto axial = [&](int i) { return material_of(i, rest[i]).axial_stiffness(); };
+  // κ = m_rot E I / l at inner node c, l the mean rest length of its two segments (p to c, c on)
+  const auto bending = [&](int c, int p) { return material_of(c, 0.5 * (rest[p] + rest[c])).bending_stiffness(); };
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -279,14 +297,25 @@ double FixWireElastic::compute_scalar() {
 
 double FixWireElastic::compute_vector(int n) {
   reduce_sums();
-  const double energy = global_sums_[0] + global_sums_[1];
+  wiregrain::WireEnergyTotals totals;
+  totals.stretching_energy = global_sums_[0];
+  totals.bending_energy = global_sums_[1];
+  totals.length = global_sums_[2];
   switch (n) {
-    case 0: return global_sums_[0];
-    case 1: return global_sums_[1];
-    case 2: return energy;
-    case 3: return global_sums_[2];
-    default: return global_sums_[2] > 0.0 ? energy / global_sums_[2] : 0.0;
+    case 0: return totals.stretching_energy;
+    case 1: return totals.bending_energy;
+    case 2: return totals.total_energy();
+    case 3: return totals.length;
+    default: return totals.energy_per_length();
   }
+}
+
+wiregrain::BeadElasticEnergy FixWireElastic::bead_energy(int i) const {
+  wiregrain::BeadElasticEnergy e;
+  e.stretching = bead_energy_[i][0];
+  e.bending = bead_energy_[i][1];
+  e.segment_length = bead_energy_[i][2];
+  return e;
 }
 
 void FixWireElastic::grow_arrays(int nmax) {

@@ -17,29 +17,26 @@
 #include "modify.h"
 #include "update.h"
 
+#include "core/contact/contact_laws.h"
+#include "core/contact/contact_list.h"
 #include "core/contact/soft_contact.h"
 #include "plugin_args.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg),
-      youngs_modulus_(100.0),
-      poisson_ratio_(0.0),
-      static_friction_(0.5),
-      dynamic_friction_(0.5),
-      damping_ratio_(wiregrain::damping_ratio_from_restitution(0.5)),
-      limit_force_(false),
       reference_step_(0),
       reference_dt_(0.0),
       wire_(NULL),
       history_(NULL),
+      contacts_(new wiregrain::ContactList),
       stats_step_(-1) {
+  friction_.static_friction = 0.5;
+  friction_.dynamic_friction = 0.5;
+  friction_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
+  friction_.limit_force = false;
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/wall", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
   if (!wire_)
@@ -55,30 +52,33 @@ FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
   }
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "E") youngs_modulus_ = args.value_positive(key);
-    else if (key == "nu") {
-      poisson_ratio_ = args.value_nonnegative(key);
-      if (poisson_ratio_ >= 0.5) args.fail("value of 'nu' must be < 0.5");
-    } else if (key == "mu_s") static_friction_ = args.value_nonnegative(key);
-    else if (key == "mu_d") dynamic_friction_ = args.value_nonnegative(key);
+    if (key == "E") {
+      material_keywords_.youngs_modulus = args.value_positive(key);
+      material_keywords_.has_youngs_modulus = true;
+    } else if (key == "nu") {
+      material_keywords_.poisson_ratio = args.value_nonnegative(key);
+      if (material_keywords_.poisson_ratio >= 0.5) args.fail("value of 'nu' must be < 0.5");
+      material_keywords_.has_poisson_ratio = true;
+    } else if (key == "mu_s") friction_.static_friction = args.value_nonnegative(key);
+    else if (key == "mu_d") friction_.dynamic_friction = args.value_nonnegative(key);
     else if (key == "restitution") {
       const double e = args.value_nonnegative(key);
       if (e > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
-      damping_ratio_ = wiregrain::damping_ratio_from_restitution(e);
-    } else if (key == "damping_ratio") damping_ratio_ = args.value_nonnegative(key);
+      friction_.damping_ratio = wiregrain::damping_ratio_from_restitution(e);
+    } else if (key == "damping_ratio") friction_.damping_ratio = args.value_nonnegative(key);
     else if (key == "limit_force") {
       const std::string v = args.value_word(key);
       if (v != "yes" && v != "no") args.fail("value of 'limit_force' must be yes or no");
-      limit_force_ = v == "yes";
+      friction_.limit_force = v == "yes";
     } else if (key == "velocity") {
       for (int d = 0; d < 3; d++) velocity_[d] = args.value_double(key);
     } else {
       args.unknown_keyword(key);
     }
   }
-  if (dynamic_friction_ > static_friction_)
-    args.fail("mu_d (" + std::to_string(dynamic_friction_) + ") must not exceed mu_s (" +
-              std::to_string(static_friction_) + ")");
+  if (friction_.dynamic_friction > friction_.static_friction)
+    args.fail("mu_d (" + std::to_string(friction_.dynamic_friction) + ") must not exceed mu_s (" +
+              std::to_string(friction_.static_friction) + ")");
 
   reference_step_ = update->ntimestep;
   reference_dt_ = update->dt;
@@ -103,7 +103,10 @@ void FixWireWall::post_create() {
 
 FixWireWall::~FixWireWall() {
   if (modify->find_fix(history_id_.c_str()) >= 0) modify->delete_fix(history_id_.c_str());
+  delete contacts_;
 }
+
+const wiregrain::ContactList &FixWireWall::published_contacts() const { return *contacts_; }
 
 int FixWireWall::setmask() { return POST_FORCE; }
 
@@ -113,6 +116,11 @@ void FixWireWall::init() {
   reference_step_ = update->ntimestep;
   reference_dt_ = update->dt;
   history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
+  // the rigid-wall modulus of each atom type's wire material (plugin_material.h)
+  wall_modulus_of_type_.assign(atom->ntypes + 1, 0.0);
+  for (int type = 1; type <= atom->ntypes; type++)
+    wall_modulus_of_type_[type] = wiregrain::wire_wall_modulus(
+        wiregrain_lmp::wire_material_of_type(lmp, type, material_keywords_, "fix", "wire/wall", id));
 }
 
 void FixWireWall::setup(int vflag) { post_force(vflag); }
@@ -131,36 +139,31 @@ void FixWireWall::reset_dt() {
 
 void FixWireWall::post_force(int /*vflag*/) {
   double **x = atom->x, **v = atom->v, **f = atom->f;
-  const int *mask = atom->mask, *prev = wire_->wire_prev;
+  const int *mask = atom->mask, *prev = wire_->wire_prev, *type = atom->type, *tag = atom->tag;
   const double *radius = atom->radius, *rmass = atom->rmass, *rest = wire_->wire_rest;
   const int nlocal = atom->nlocal;
   double p[3];
   current_point(p);
   const Eigen::Vector3d n(normal_[0], normal_[1], normal_[2]);
   const Eigen::Vector3d wall_velocity(velocity_[0], velocity_[1], velocity_[2]);
-  const double e_star = wiregrain::rigid_wall_modulus(youngs_modulus_, poisson_ratio_);
 
   const bool setup = update->setupflag != 0;
   history_->begin_step();
   for (int k = 0; k < 5; k++) local_stats_[k] = 0.0;
+  contacts_->clear();
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double gap = (x[i][0] - p[0]) * n.x() + (x[i][1] - p[1]) * n.y() + (x[i][2] - p[2]) * n.z() - radius[i];
     if (gap >= 0.0) continue;
-    // the segment length the bead stands for: its own, or its previous bead's at the end
-    double length = rest[i];
-    if (length <= 0.0 && prev[i]) {
+    // the segment length the bead stands for: its own, its previous bead's, or 2 r
+    double previous_rest = 0.0;
+    if (rest[i] <= 0.0 && prev[i]) {
       const int j = atom->map(prev[i]);
-      if (j >= 0) length = rest[j];
+      if (j >= 0) previous_rest = rest[j];
     }
-    if (length <= 0.0) length = 2.0 * radius[i];  // a lone bead: a sphere
-    wiregrain::SoftContactLaw law;
-    law.normal_stiffness = e_star * length * kPi / 4.0;
-    law.tangential_stiffness = e_star * radius[i];
-    law.damping_ratio = damping_ratio_;
-    law.static_friction = static_friction_;
-    law.dynamic_friction = dynamic_friction_;
-    law.limit_force = limit_force_;
+    const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
+        wall_modulus_of_type_[type[i]], wiregrain::bead_segment_length(rest[i], previous_rest, radius[i]), radius[i],
+        friction_);
     wiregrain::TangentialHistory h;
     history_->lookup(i, 0, h);
     const Eigen::Vector3d u = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]) - wall_velocity;
@@ -175,6 +178,16 @@ void FixWireWall::post_force(int /*vflag*/) {
     }
     local_stats_[0] += 1.0;
     local_stats_[1] = std::max(local_stats_[1], -gap);
+    wiregrain::ContactRecord record;
+    record.kind = wiregrain::ContactKind::wire_wall;
+    record.a = -1;  // the one wall of this fix
+    record.b = tag[i];
+    record.point = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]) - (radius[i] + 0.5 * gap) * n;  // middle of the overlap
+    record.normal = n;
+    record.force = fc.force;
+    record.overlap = -gap;
+    record.status = advanced.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+    contacts_->add(record);
   }
   history_->end_step();
   stats_step_ = -1;

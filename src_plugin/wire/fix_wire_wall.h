@@ -7,10 +7,14 @@
    space of the beads, moving at the given velocity. A bead (sphere of its radius: the
    end of its spherocylinder segments) touching it feels the soft contact of
    core/soft_contact.h with a rigid wall, E* = E/(1−ν²), k_n = E* l π/4, k_t = E* r, where
-   l is the bead's segment rest length; tangential springs persist (fix
+   l is the bead's segment rest length (core/contact/contact_laws.h); E and ν: the
+   keywords, else fix property/global youngsModulus / poissonsRatio of the bead's atom
+   type, else Table 1 (common/plugin_material.h); tangential springs persist (fix
    WIRE_WALL_HISTORY_<ID>). Several walls: several fixes.
 
-   Outputs: vector = [contacts, largest overlap, force on the wall x, y, z] (all ranks). */
+   Outputs: vector = [contacts, largest overlap, force on the wall x, y, z] (all ranks).
+   Publishes its contacts (kind wire_wall, a = −1, b = the bead's tag) as a
+   ContactPublisher. */
 
 #ifdef FIX_CLASS
 
@@ -22,12 +26,16 @@ FixStyle(wire/wall,FixWireWall)
 #define LMP_FIX_WIRE_WALL_H
 
 #include <string>
+#include <vector>
 
+#include "common/contact_publisher.h"
+#include "core/contact/contact_materials.h"
 #include "fix.h"
+#include "common/plugin_material.h"
 
 namespace LAMMPS_NS {
 
-class FixWireWall : public Fix {
+class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
  public:
   FixWireWall(class LAMMPS *, int, char **);
   ~FixWireWall();
@@ -40,17 +48,21 @@ class FixWireWall : public Fix {
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
+  // this rank's bead–wall contacts of the last force call
+  const wiregrain::ContactList &published_contacts() const;
 
  private:
   double point_[3], normal_[3], velocity_[3];
-  double youngs_modulus_, poisson_ratio_, static_friction_, dynamic_friction_, damping_ratio_;
-  bool limit_force_;
+  wiregrain_lmp::MaterialKeywords material_keywords_;  // E, nu when given
+  wiregrain::ContactFriction friction_;
+  std::vector<double> wall_modulus_of_type_;            // E* = E/(1−ν²) per atom type, from init()
   // the wall passes through point_ + velocity_ reference_dt_ (step − reference_step_)
   bigint reference_step_;
   double reference_dt_;
   class AtomVecWire *wire_;
   class FixWireContactHistory *history_;
   std::string history_id_;
+  wiregrain::ContactList *contacts_;
   double local_stats_[5], global_stats_[5];
   bigint stats_step_;
   void current_point(double p[3]) const;

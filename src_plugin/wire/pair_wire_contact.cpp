@@ -26,14 +26,16 @@
 
 #include "core/common/errors.h"
 #include "core/geometry/segment_distance.h"
+#include "core/contact/contact_laws.h"
+#include "core/contact/contact_list.h"
 #include "core/contact/soft_contact.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
+#include "plugin_material.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // The bead-pair cutoff must reach the far ends of two segments: allow 25 % stretch.
 constexpr double kStretchAllowance = 1.25;
 const char kHistoryId[] = "WIRE_CONTACT_HISTORY";
@@ -50,10 +52,12 @@ void add_force(double *f, double weight, const Eigen::Vector3d &g) {
 PairWireContact::PairWireContact(LAMMPS *lmp)
     : Pair(lmp),
       coefficients_(NULL),
+      effective_modulus_(NULL),
+      friction_(NULL),
+      contacts_(new wiregrain::ContactList),
       wire_(NULL),
       history_(NULL),
       reach_(0.0),
-      stats_step_(-1),
       segment_next_(NULL),
       segment_end_(NULL),
       segment_capacity_(0) {
@@ -63,8 +67,9 @@ PairWireContact::PairWireContact(LAMMPS *lmp)
   defaults_.dynamic_friction = 0.5;
   defaults_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
   defaults_.limit_force = false;
+  defaults_.has_youngs_modulus = false;
+  defaults_.has_poisson_ratio = false;
   comm_reverse = 3;
-  for (int k = 0; k < 3; k++) local_stats_[k] = global_stats_[k] = 0.0;
 }
 
 PairWireContact::~PairWireContact() {
@@ -72,11 +77,16 @@ PairWireContact::~PairWireContact() {
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(coefficients_);
+    memory->destroy(effective_modulus_);
+    memory->destroy(friction_);
   }
   if (history_ && modify->find_fix(kHistoryId) >= 0) modify->delete_fix(kHistoryId);
   memory->destroy(segment_next_);
   memory->destroy(segment_end_);
+  delete contacts_;
 }
+
+const wiregrain::ContactList &PairWireContact::published_contacts() const { return *contacts_; }
 
 void PairWireContact::allocate() {
   allocated = 1;
@@ -84,6 +94,8 @@ void PairWireContact::allocate() {
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(coefficients_, n + 1, n + 1, "pair:coefficients");
+  memory->create(effective_modulus_, n + 1, n + 1, "pair:effective_modulus");
+  memory->create(friction_, n + 1, n + 1, "pair:friction");
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) setflag[i][j] = 0;
 }
@@ -92,10 +104,13 @@ void PairWireContact::parse(int narg, char **arg, int first, Coefficients &c, co
   wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first);
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "E") c.youngs_modulus = args.value_positive(key);
-    else if (key == "nu") {
+    if (key == "E") {
+      c.youngs_modulus = args.value_positive(key);
+      c.has_youngs_modulus = true;
+    } else if (key == "nu") {
       c.poisson_ratio = args.value_nonnegative(key);
       if (c.poisson_ratio >= 0.5) args.fail("value of 'nu' must be < 0.5");
+      c.has_poisson_ratio = true;
     } else if (key == "mu_s") c.static_friction = args.value_nonnegative(key);
     else if (key == "mu_d") c.dynamic_friction = args.value_nonnegative(key);
     else if (key == "restitution") {
@@ -190,6 +205,22 @@ double PairWireContact::init_one(int i, int j) {
     coefficients_[i][j] = defaults_;
     coefficients_[j][i] = defaults_;
   }
+  // each side's material: the pair's keywords, else its atom type's (plugin_material.h)
+  const Coefficients &c = coefficients_[i][j];
+  wiregrain_lmp::MaterialKeywords given;
+  given.has_youngs_modulus = c.has_youngs_modulus;
+  given.youngs_modulus = c.youngs_modulus;
+  given.has_poisson_ratio = c.has_poisson_ratio;
+  given.poisson_ratio = c.poisson_ratio;
+  const wiregrain::ElasticMaterial side_i = wiregrain_lmp::wire_material_of_type(lmp, i, given, "pair", "wire/contact", "-");
+  const wiregrain::ElasticMaterial side_j = wiregrain_lmp::wire_material_of_type(lmp, j, given, "pair", "wire/contact", "-");
+  effective_modulus_[i][j] = effective_modulus_[j][i] = wiregrain::wire_wire_modulus(side_i, side_j);
+  wiregrain::ContactFriction friction;
+  friction.damping_ratio = c.damping_ratio;
+  friction.static_friction = c.static_friction;
+  friction.dynamic_friction = c.dynamic_friction;
+  friction.limit_force = c.limit_force;
+  friction_[i][j] = friction_[j][i] = friction;
   return reach_;
 }
 
@@ -237,9 +268,8 @@ void PairWireContact::compute(int eflag, int vflag) {
   }
 
   history_->begin_step();
-  int contacts = 0;
-  double evaluations = 0.0;  // exact segment–segment distances computed
-  double largest_overlap = 0.0;
+  contacts_->clear();
+  long evaluations = 0;  // exact segment–segment distances computed
   const double dt = update->dt;
   const bool setup = update->setupflag != 0;
 
@@ -284,15 +314,10 @@ void PairWireContact::compute(int eflag, int vflag) {
       const Eigen::Vector3d vb = (1.0 - cp.t) * as_vector(v[b]) + cp.t * as_vector(v[b1]);
       const double m_a = rmass[a] + rmass[a1], m_b = rmass[b] + rmass[b1];
 
-      const Coefficients &c = coefficients_[type[a]][type[b]];
-      const double e_ww = c.youngs_modulus / (2.0 * (1.0 - c.poisson_ratio * c.poisson_ratio));
-      wiregrain::SoftContactLaw law;
-      law.normal_stiffness = e_ww * 0.5 * (rest[a] + rest[b]) * kPi / 4.0;
-      law.tangential_stiffness = e_ww * 0.5 * (r_a + r_b);
-      law.damping_ratio = c.damping_ratio;
-      law.static_friction = c.static_friction;
-      law.dynamic_friction = c.dynamic_friction;
-      law.limit_force = c.limit_force;
+      // l_w and r_w: the means of the two segments'
+      const wiregrain::SoftContactLaw law =
+          wiregrain::segment_contact_law(effective_modulus_[type[a]][type[b]], 0.5 * (rest[a] + rest[b]),
+                                         0.5 * (r_a + r_b), friction_[type[a]][type[b]]);
 
       wiregrain::TangentialHistory h;
       history_->lookup(a, tag[b], h);
@@ -310,15 +335,20 @@ void PairWireContact::compute(int eflag, int vflag) {
       if (eflag)
         eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
                     0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
-      contacts++;
-      largest_overlap = std::max(largest_overlap, overlap);
+      wiregrain::ContactRecord record;
+      record.kind = wiregrain::ContactKind::wire_wire;
+      record.a = tag[a];
+      record.b = tag[b];
+      record.point = cp.p + (r_a - 0.5 * overlap) * normal;  // the middle of the overlap
+      record.normal = normal;
+      record.force = fc.force;
+      record.overlap = overlap;
+      record.status = advanced.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+      contacts_->add(record);
     }
   }
   history_->end_step();
-  local_stats_[0] = contacts;
-  local_stats_[1] = largest_overlap;
-  local_stats_[2] = evaluations;
-  stats_step_ = -1;
+  contacts_->count_evaluations(evaluations);
 
   if (own_reverse_comm) comm->reverse_comm_pair(this);
 }
@@ -342,29 +372,6 @@ void PairWireContact::unpack_reverse_comm(int n, int *list, double *buf) {
     atom->f[j][1] += buf[m++];
     atom->f[j][2] += buf[m++];
   }
-}
-
-double PairWireContact::contact_count() {
-  if (stats_step_ != update->ntimestep) {
-    const double sums[2] = {local_stats_[0], local_stats_[2]};
-    double totals[2];
-    MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);
-    MPI_Allreduce(&local_stats_[1], &global_stats_[1], 1, MPI_DOUBLE, MPI_MAX, world);
-    global_stats_[0] = totals[0];
-    global_stats_[2] = totals[1];
-    stats_step_ = update->ntimestep;
-  }
-  return global_stats_[0];
-}
-
-double PairWireContact::max_overlap() {
-  contact_count();
-  return global_stats_[1];
-}
-
-double PairWireContact::pair_evaluations() {
-  contact_count();
-  return global_stats_[2];
 }
 
 // Restart files keep pair_style and pair_coeff: a restarted run needs neither command.
@@ -399,5 +406,6 @@ void PairWireContact::read_restart(FILE *fp, const int /*major*/, const int /*mi
 
 double PairWireContact::memory_usage() {
   const int n = atom->ntypes + 1;
-  return double(n) * n * (sizeof(int) + sizeof(double) + sizeof(Coefficients));
+  return double(n) * n * (sizeof(int) + 2 * sizeof(double) + sizeof(Coefficients) + sizeof(wiregrain::ContactFriction)) +
+         double(contacts_->size()) * sizeof(wiregrain::ContactRecord);
 }

@@ -8,11 +8,15 @@
    Each segment (bead i to its next bead) is a spherocylinder of the bead radius; the
    closest points of two segments (Sunday's algorithm) give the overlap ξ, the normal and
    the weights that share the force among the four beads. Segments sharing a bead do not
-   interact. k_n = E_ww l_w π/4, k_t = E_ww r_w with E_ww = E/(2(1−ν²)), l_w and r_w the
-   means of the two segments; damping γ = 2ζ√(k m) with m = m_A m_B/(m_A + m_B) and m_A the
+   interact. k_n = E_ww l_w π/4, k_t = E_ww r_w with E_ww = E/(2(1−ν²)) (the mixing rule
+   1/E* = (1−ν_a²)/E_a + (1−ν_b²)/E_b for two atom types of different materials), l_w and
+   r_w the means of the two segments (core/contact/contact_laws.h); E and ν: the keywords,
+   else fix property/global youngsModulus / poissonsRatio per atom type, else Table 1
+   (common/plugin_material.h); damping γ = 2ζ√(k m) with m = m_A m_B/(m_A + m_B) and m_A the
    mass of segment A's two beads. The tangential springs live in the fix
    WIRE_CONTACT_HISTORY, so they survive neighbour rebuilds, migration and restarts;
-   restart files also keep the pair_style and pair_coeff settings. */
+   restart files also keep the pair_style and pair_coeff settings. Publishes its contacts
+   (kind wire_wire, a and b the tags of the segments' first beads) as a ContactPublisher. */
 
 #ifdef PAIR_CLASS
 
@@ -25,9 +29,12 @@ PairStyle(wire/contact,PairWireContact)
 
 #include "pair.h"
 
+#include "common/contact_publisher.h"
+#include "core/contact/contact_materials.h"
+
 namespace LAMMPS_NS {
 
-class PairWireContact : public Pair {
+class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
  public:
   PairWireContact(class LAMMPS *);
   ~PairWireContact();
@@ -42,27 +49,26 @@ class PairWireContact : public Pair {
   void read_restart(FILE *, const int, const int);
   double memory_usage();
 
-  // this step's wire–wire contacts and the largest overlap (all ranks)
-  double contact_count();
-  double max_overlap();
-  // exact segment–segment distance evaluations of this step (pairs past the
-  // bounding-sphere test)
-  double pair_evaluations();
+  // this rank's wire–wire contacts of the last force call; its evaluations are the exact
+  // segment–segment distances computed (pairs past the bounding-sphere test)
+  const wiregrain::ContactList &published_contacts() const;
 
+  // the settings of pair_style / pair_coeff; E and ν only where given (has_*)
   struct Coefficients {
     double youngs_modulus, poisson_ratio, static_friction, dynamic_friction, damping_ratio;
-    bool limit_force;
+    bool limit_force, has_youngs_modulus, has_poisson_ratio;
   };
 
  private:
   Coefficients defaults_;
   Coefficients **coefficients_;
+  // per type pair, from init_one: the effective modulus E* and the friction settings
+  double **effective_modulus_;
+  wiregrain::ContactFriction **friction_;
+  wiregrain::ContactList *contacts_;
   class AtomVecWire *wire_;
   class FixWireContactHistory *history_;
   double reach_;                     // largest segment extent + 2 radii: the pair cutoff
-  double local_stats_[3];            // contacts, largest overlap, evaluations on this rank
-  double global_stats_[3];
-  bigint stats_step_;
   // per bead (owned and ghost), rebuilt every step: index of the next bead (−1: none,
   // −2: not in the ghost shell) and the position of its image nearest to the bead
   int *segment_next_;

@@ -560,3 +560,50 @@ TEST(WireTimeStep, GearNeedsASmallerFraction) {
   EXPECT_LT(stable, 1.01);
   EXPECT_GT(unstable, 1e3);
 }
+
+// Sums of the per-bead output: a two-segment wire, bead energies by hand.
+// Beads: (stretching, bending, segment length) = (0.5, 0, 0.2), (1.5, 2, 0.3), (1, 0, 0):
+// U_str = 3, U_bend = 2, U_s = 5, L = 0.5, U_s/L = 10.
+TEST(WireEnergyTotals, SumsOfBeadEnergies) {
+  const std::vector<BeadElasticEnergy> beads = {{0.5, 0.0, 0.2}, {1.5, 2.0, 0.3}, {1.0, 0.0, 0.0}};
+  const WireEnergyTotals t = wire_energy_totals(beads);
+  EXPECT_EQ(t.stretching_energy, 3.0);
+  EXPECT_EQ(t.bending_energy, 2.0);
+  EXPECT_EQ(t.total_energy(), 5.0);
+  EXPECT_DOUBLE_EQ(t.length, 0.5);
+  EXPECT_DOUBLE_EQ(t.energy_per_length(), 10.0);
+  // the parts of two ranks merged give the same totals
+  WireEnergyTotals first = wire_energy_totals({beads[0]}), second = wire_energy_totals({beads[1], beads[2]});
+  first.merge(second);
+  EXPECT_EQ(first.stretching_energy, 3.0);
+  EXPECT_EQ(first.bending_energy, 2.0);
+  EXPECT_DOUBLE_EQ(first.length, 0.5);
+  // no length: no energy per length
+  EXPECT_EQ(wire_energy_totals({}).energy_per_length(), 0.0);
+  EXPECT_EQ(wire_energy_totals({{1.0, 0.0, 0.0}}).energy_per_length(), 0.0);
+}
+
+// The chain's energies, written per bead as fix wire/elastic does (half of each segment's
+// stretching energy to each end), add up to wire_chain_elasticity's totals.
+TEST(WireEnergyTotals, AgreeWithChainElasticity) {
+  WireMaterial m;
+  const std::vector<Vector3d> nodes = {Vector3d(0, 0, 0), Vector3d(0.21, 0, 0), Vector3d(0.4, 0.05, 0),
+                                       Vector3d(0.55, 0.2, 0.03)};
+  const WireChainElasticity c = wire_chain_elasticity(nodes, m);
+  std::vector<BeadElasticEnergy> beads(nodes.size());
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double u = wire_stretch(nodes[k], nodes[k + 1], m.axial_stiffness(), m.segment_length).energy;
+    beads[k].stretching += 0.5 * u;
+    beads[k + 1].stretching += 0.5 * u;
+    beads[k].segment_length = (nodes[k + 1] - nodes[k]).norm();
+  }
+  for (std::size_t k = 1; k + 1 < nodes.size(); ++k)
+    beads[k].bending = wire_bend(nodes[k - 1], nodes[k], nodes[k + 1], m.bending_stiffness()).energy;
+  const WireEnergyTotals t = wire_energy_totals(beads);
+  EXPECT_NEAR(t.stretching_energy, c.stretching_energy, 1e-15);
+  EXPECT_NEAR(t.bending_energy, c.bending_energy, 1e-15);
+  EXPECT_NEAR(t.total_energy(), c.total_energy(), 1e-15);
+  const double length = (nodes[1] - nodes[0]).norm() + (nodes[2] - nodes[1]).norm() + (nodes[3] - nodes[2]).norm();
+  EXPECT_NEAR(t.length, length, 1e-15);
+  EXPECT_NEAR(t.energy_per_length(), c.total_energy() / length, 1e-13);
+}

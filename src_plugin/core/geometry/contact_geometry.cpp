@@ -2,6 +2,7 @@
 // signed-volumes sub-simplex solver, separating-axis penetration depth, closest-feature
 // contact manifolds. See contact_geometry.h and docs/core_contact.md.
 #include "core/geometry/contact_geometry.h"
+#include "core/geometry/segment_distance.h"
 
 #include <algorithm>
 #include <array>
@@ -555,37 +556,14 @@ struct ContactFrame {
   }
 };
 
-// Closest points of segments [p0, p1] and [q0, q1]: parameters s, t in [0, 1]
-// (Ericson, Real-Time Collision Detection, 2005, §5.1.9).
+// Closest points of segments [p0, p1] and [q0, q1]: parameters s, t in [0, 1], from the
+// one segment–segment routine of the core (segment_distance.h: Sunday's algorithm on
+// normalised directions; its accuracy and its parallel and degenerate choices are there).
 void closest_segment_segment(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0,
                              const Vector3d& q1, double& s, double& t) {
-  const Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  if (a <= 0.0 && e <= 0.0) {
-    s = t = 0.0;
-    return;
-  }
-  if (a <= 0.0) {
-    s = 0.0;
-    t = std::clamp(f / e, 0.0, 1.0);
-    return;
-  }
-  const double c = d1.dot(r);
-  if (e <= 0.0) {
-    t = 0.0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-    return;
-  }
-  const double b = d1.dot(d2), denom = a * e - b * b;
-  s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  t = (b * s + f) / e;
-  if (t < 0.0) {
-    t = 0.0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-  } else if (t > 1.0) {
-    t = 1.0;
-    s = std::clamp((b - c) / a, 0.0, 1.0);
-  }
+  const SegmentClosestPoints closest = segment_closest_points(p0, p1, q0, q1);
+  s = closest.s;
+  t = closest.t;
 }
 
 // The parameter s ∈ [0, 1] of the point of segment [b0, b1] nearest to the line through x

@@ -117,6 +117,24 @@ WireChainElasticity wire_chain_elasticity(const std::vector<Eigen::Vector3d>& no
   return out;
 }
 
+void WireEnergyTotals::add(const BeadElasticEnergy& bead) {
+  stretching_energy += bead.stretching;
+  bending_energy += bead.bending;
+  length += bead.segment_length;
+}
+
+void WireEnergyTotals::merge(const WireEnergyTotals& other) {
+  stretching_energy += other.stretching_energy;
+  bending_energy += other.bending_energy;
+  length += other.length;
+}
+
+WireEnergyTotals wire_energy_totals(const std::vector<BeadElasticEnergy>& beads) {
+  WireEnergyTotals totals;
+  for (const BeadElasticEnergy& bead : beads) totals.add(bead);
+  return totals;
+}
+
 double wire_axial_frequency_max(const WireMaterial& material) {
   return 2.0 * std::sqrt(material.axial_stiffness() / material.node_mass());
 }

@@ -84,6 +84,29 @@ struct WireChainElasticity {
 WireChainElasticity wire_chain_elasticity(const std::vector<Eigen::Vector3d>& nodes,
                                           const WireMaterial& material);
 
+// What one bead carries for output: half of the stretching energy of each of its (one or
+// two) segments, the bending energy at the bead, and the length of its segment to the next
+// bead (0 at a wire's last bead), so that sums over beads count each segment once.
+struct BeadElasticEnergy {
+  double stretching = 0.0;
+  double bending = 0.0;
+  double segment_length = 0.0;
+};
+
+// Sums over the beads of a wire or a group: stretching energy U_str, bending energy U_bend,
+// elastic energy U_s = U_str + U_bend, wire length L, and the energy per length U_s/L
+// (0 when L = 0). Sums from several ranks combine with merge().
+struct WireEnergyTotals {
+  double stretching_energy = 0.0;
+  double bending_energy = 0.0;
+  double length = 0.0;
+  void add(const BeadElasticEnergy& bead);
+  void merge(const WireEnergyTotals& other);
+  double total_energy() const { return stretching_energy + bending_energy; }
+  double energy_per_length() const { return length > 0.0 ? total_energy() / length : 0.0; }
+};
+WireEnergyTotals wire_energy_totals(const std::vector<BeadElasticEnergy>& beads);
+
 // Highest angular frequencies of the linearised free chain of node masses m:
 //   axial:   ω_ax² = 4 k_s / m             (the zone-boundary mode of a mass–spring chain);
 //   bending: ω_b²  = 16 κ / (m l_w²)       (U = κ/(2 l_w²) Σ (w_{j+1} − 2 w_j + w_{j−1})²,
