@@ -4,13 +4,10 @@
 #include <cmath>
 
 #include "core/common/errors.h"
+#include "core/common/constants.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
 
 void ElasticMaterial::validate() const {
   require_positive("E", youngs_modulus);

@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "core/common/errors.h"
+#include "core/common/constants.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
@@ -26,7 +27,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Two input points closer than this times the size of the cloud are duplicates; a cloud
 // whose points all lie this close (relative) to one plane is flat.

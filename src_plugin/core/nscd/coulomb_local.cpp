@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/common/errors.h"
+#include "core/common/constants.h"
 #include "core/common/validation.h"
 
 #include <gsl/gsl_errno.h>
@@ -40,7 +41,6 @@ LocalDelassus::LocalDelassus(const Eigen::Matrix3d& W) : matrix_(W) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 
 // Wraps an angle to (−π, π].

@@ -8,13 +8,13 @@
 #include <Eigen/Geometry>
 
 #include "core/common/errors.h"
+#include "core/common/constants.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

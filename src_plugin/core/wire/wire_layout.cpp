@@ -7,13 +7,13 @@
 #include <sstream>
 
 #include "core/common/errors.h"
+#include "core/common/constants.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A length ratio this close to an integer counts as that integer, so that e.g.
 // length 1 with l_w 0.2 (1/0.2 = 4.999... in floating point) gives 5 segments.
 constexpr double kCountTolerance = 1e-9;
