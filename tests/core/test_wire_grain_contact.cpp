@@ -35,13 +35,18 @@ WireSegmentState lying_segment() {
   return s;
 }
 
+// A rounded cube (edge 2, sweep radius r_p) of mass 8 at rest at the origin.
+class WireOnRoundedCube : public ::testing::Test {
+ protected:
+  WireOnRoundedCube() { motion.mass = 8.0; }
+  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
+  const PosedShape grain{cube, Vector3d::Zero(), Eigen::Quaterniond::Identity()};
+  GrainMotion motion;
+};
+
 }  // namespace
 
-TEST(WireGrainContact, SegmentOnAFaceIsPushedOutWithKnTimesTheOverlapSharedByItsBeads) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, SegmentOnAFaceIsPushedOutWithKnTimesTheOverlapSharedByItsBeads) {
   TangentialHistory history;
   const WireGrainContact c = wire_grain_contact(law(), grain, motion, lying_segment(), 1e-4, history);
   ASSERT_TRUE(c.touching);
@@ -58,11 +63,7 @@ TEST(WireGrainContact, SegmentOnAFaceIsPushedOutWithKnTimesTheOverlapSharedByIts
   EXPECT_FALSE(c.sliding);
 }
 
-TEST(WireGrainContact, TangentialSpringGrowsWithTheSlipOfTheWireOverTheSpinningGrain) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, TangentialSpringGrowsWithTheSlipOfTheWireOverTheSpinningGrain) {
   motion.angular_velocity = Vector3d(0.0, 0.0, 0.3);  // surface at p moves with ω × p
   WireSegmentState s = lying_segment();
   s.v0 = s.v1 = Vector3d(0.02, 0.0, 0.0);
@@ -78,11 +79,7 @@ TEST(WireGrainContact, TangentialSpringGrowsWithTheSlipOfTheWireOverTheSpinningG
   EXPECT_FALSE(c.sliding);
 }
 
-TEST(WireGrainContact, SlidesAtTheDynamicCoulombLimit) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, SlidesAtTheDynamicCoulombLimit) {
   WireSegmentState s = lying_segment();
   s.v0 = s.v1 = Vector3d(0.0, 30.0, 0.0);  // k_t |u| dt = 0.276 > μ_s f_n = 0.0785
   TangentialHistory history;
@@ -96,11 +93,7 @@ TEST(WireGrainContact, SlidesAtTheDynamicCoulombLimit) {
   EXPECT_NEAR(history.spring.y(), 0.4 * fn / 9.2, 1e-15);  // reset to the slip limit
 }
 
-TEST(WireGrainContact, NormalDampingUsesTheReducedMassOfSegmentAndGrain) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, NormalDampingUsesTheReducedMassOfSegmentAndGrain) {
   motion.velocity = Vector3d(0.0, 0.0, 0.5);  // grain rising into the wire: ξ̇ = 0.5
   TangentialHistory history;
   const WireGrainContact c = wire_grain_contact(law(0.3), grain, motion, lying_segment(), 1e-4, history);
@@ -109,11 +102,7 @@ TEST(WireGrainContact, NormalDampingUsesTheReducedMassOfSegmentAndGrain) {
   EXPECT_NEAR(c.normal_force, 15.7 * kOverlap + gamma_n * 0.5, 1e-13);
 }
 
-TEST(WireGrainContact, ApartPairsReportTheGapAndNoForce) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, ApartPairsReportTheGapAndNoForce) {
   WireSegmentState s = lying_segment();
   s.x0.z() += 0.05;
   s.x1.z() += 0.05;
@@ -126,11 +115,7 @@ TEST(WireGrainContact, ApartPairsReportTheGapAndNoForce) {
   EXPECT_EQ(history.spring, Vector3d(1e-3, 0, 0));  // untouched: the caller drops it
 }
 
-TEST(WireGrainContact, ASegmentThroughTheCoreGetsAFiniteForceAlongTheShortestWayOut) {
-  const ConvexShape cube = ConvexShape::cube(kEdge, kSweep);
-  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
-  GrainMotion motion;
-  motion.mass = 8.0;
+TEST_F(WireOnRoundedCube, ASegmentThroughTheCoreGetsAFiniteForceAlongTheShortestWayOut) {
   WireSegmentState s = lying_segment();
   s.x0 = Vector3d(-2.0, 0.1, 0.8);  // axis 0.2 below the top face, crossing the core
   s.x1 = Vector3d(2.0, 0.1, 0.8);
