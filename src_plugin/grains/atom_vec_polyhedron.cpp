@@ -456,9 +456,19 @@ void AtomVecPolyhedron::data_atom(double *coord, tagint imagetmp, char **values)
   atom->nlocal++;
 }
 
+// shape −1: an atom that is not a grain (a wire bead in atom_style hybrid polyhedron wire,
+// as write_data writes it); its polyhedron values are those of create_atom.
 int AtomVecPolyhedron::data_atom_hybrid(int nlocal, char **values) {
   char *end = NULL;
   const long s = std::strtol(values[0], &end, 10);
+  if (end != values[0] && *end == '\0' && s == -1 && atom->avec != this) {
+    shape[nlocal] = -1;
+    density[nlocal] = 1.0;
+    quat[nlocal][0] = 1.0;
+    quat[nlocal][1] = quat[nlocal][2] = quat[nlocal][3] = 0.0;
+    for (int d = 0; d < 3; d++) inertia[nlocal][d] = 1.0;
+    return 6;
+  }
   if (end == values[0] || *end != '\0' || s < 0 || s >= library_->size())
     data_error(error, std::string("shape '") + values[0] + "' is not in the shape library (" +
                           std::to_string(library_->size()) + " shapes; a library comes from create_grains or a restart file)");

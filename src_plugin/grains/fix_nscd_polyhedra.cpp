@@ -16,6 +16,7 @@
 #include "memory.h"
 #include "update.h"
 
+#include "core/common/validation.h"
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
 #include "core/nscd/grain_step.h"
@@ -47,7 +48,13 @@ struct FixNSCDPolyhedra::CoreState {
 const wiregrain::ContactList &FixNSCDPolyhedra::published_contacts() const { return core_->published; }
 
 FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), core_(new CoreState), grains_(NULL), solved_once_(false), contact_force_(NULL), step_start_velocity_(NULL) {
+    : Fix(lmp, narg, arg),
+      core_(new CoreState),
+      grains_(NULL),
+      solved_once_(false),
+      contact_force_(NULL),
+      step_start_velocity_(NULL),
+      force_sum_(NULL) {
   wiregrain_lmp::StyleArgs args(error, "fix", "nscd/polyhedra", id, narg, arg, 3);
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
@@ -103,6 +110,9 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       const long every = args.value_int(key);
       if (every < 1) args.fail("value of 'every' must be >= 1, got " + std::to_string(every));
       every_ = (int)every;
+      every_given_ = true;
+    } else if (key == "timestep") {
+      nscd_timestep_ = args.value_positive(key);
     } else if (key == "wall") {
       wiregrain::PlaneWall w;
       for (int d = 0; d < 3; d++) w.point[d] = args.value_double("wall");
@@ -122,6 +132,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       args.unknown_keyword(key);
     }
   }
+  if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
@@ -147,11 +158,13 @@ FixNSCDPolyhedra::~FixNSCDPolyhedra() {
   atom->delete_callback(id, 1);
   memory->destroy(contact_force_);
   memory->destroy(step_start_velocity_);
+  memory->destroy(force_sum_);
 }
 
 void FixNSCDPolyhedra::grow_arrays(int nmax) {
   memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
   memory->grow(step_start_velocity_, nmax, 6, "nscd/polyhedra:step_start_velocity");
+  memory->grow(force_sum_, nmax, 6, "nscd/polyhedra:force_sum");
   array_atom = contact_force_;
 }
 
@@ -159,6 +172,7 @@ void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
   for (int k = 0; k < 6; k++) {
     contact_force_[j][k] = contact_force_[i][k];
     step_start_velocity_[j][k] = step_start_velocity_[i][k];
+    force_sum_[j][k] = force_sum_[i][k];
   }
 }
 
@@ -166,60 +180,80 @@ void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
 void FixNSCDPolyhedra::set_arrays(int i) {
   for (int d = 0; d < 3; d++) {
     contact_force_[i][d] = contact_force_[i][3 + d] = 0.0;
+    force_sum_[i][d] = force_sum_[i][3 + d] = 0.0;
     step_start_velocity_[i][d] = atom->v[i][d];
     step_start_velocity_[i][3 + d] = atom->angmom[i][d];
   }
 }
 
+// per grain: v_n, L_n (6) and the force and torque summed over this step's sub-steps (6)
 int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
   for (int k = 0; k < 6; k++) buf[k] = step_start_velocity_[i][k];
-  return 6;
+  for (int k = 0; k < 6; k++) buf[6 + k] = force_sum_[i][k];
+  return 12;
 }
 
 int FixNSCDPolyhedra::unpack_exchange(int nlocal, double *buf) {
   for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = buf[k];
+  for (int k = 0; k < 6; k++) force_sum_[nlocal][k] = buf[6 + k];
   for (int k = 0; k < 6; k++) contact_force_[nlocal][k] = 0.0;
-  return 6;
+  return 12;
 }
 
 int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
-  buf[0] = 7;
-  for (int k = 0; k < 6; k++) buf[k + 1] = step_start_velocity_[i][k];
-  return 7;
+  buf[0] = 13;
+  pack_exchange(i, buf + 1);
+  return 13;
 }
 
 void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
-  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth);
-  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = record[k];
+  unpack_exchange(nlocal, const_cast<double *>(wiregrain_lmp::fix_restart_record(atom, nlocal, nth)));
 }
 
-int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 7; }
+int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 13; }
 
-int FixNSCDPolyhedra::maxsize_restart() { return 7; }
+int FixNSCDPolyhedra::maxsize_restart() { return 13; }
 
-double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 12 * sizeof(double); }
+double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 18 * sizeof(double); }
 
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNSCDPolyhedra::init() {
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nscd/polyhedra", "grains");
+  if (nscd_timestep_ > 0.0) {
+    const double ratio = nscd_timestep_ / update->dt;
+    if (std::round(ratio) < 1.0 || std::abs(ratio - std::round(ratio)) > 1e-9 * ratio)
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 "value of 'timestep' (" + wiregrain::format_number(nscd_timestep_) +
+                                     ") must be an integer multiple of the LIGGGHTS timestep (" +
+                                     wiregrain::format_number(update->dt) + ")");
+  }
   const int missing = grains_->count_without_shape(groupbit);
   if (missing)
     wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                std::to_string(missing) + " grains have no shape (made by create_atoms? use create_grains)");
 }
 
-// The first run starts with a contact solve on the setup forces, so that the first
-// position update already uses constrained velocities; later runs continue.
+int FixNSCDPolyhedra::solve_interval() const {
+  return nscd_timestep_ > 0.0 ? std::max(1, (int)std::lround(nscd_timestep_ / update->dt)) : every_;
+}
+
+bool FixNSCDPolyhedra::solves_at_end_of_step(bigint step) const { return step % solve_interval() == 0; }
+
+// The first run starts with a contact solve on the setup forces (h = N dt), so that the
+// first position update already uses constrained velocities; later runs continue.
 void FixNSCDPolyhedra::setup(int /*vflag*/) {
-  if (!solved_once_ && update->ntimestep % every_ == 0) solve_step();
+  if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
+  pose_version_++;
 }
 
 // The grains move once per solve, at the start of the step after it; they are held
 // in between (every N > 1). The pose update is the core's θ-method (grain_step.h).
 void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
-  if (!solved_once_ || (update->ntimestep - 1) % every_ != 0) return;
-  const double h = every_ * update->dt;
+  if (!move_pending_) return;
+  move_pending_ = false;
+  pose_version_++;
+  const double h = last_h_;
   double **x = atom->x, **quat = atom->quaternion;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -236,15 +270,26 @@ void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
   }
 }
 
+// Every step adds its forces and torques to the sums; the solve sees their average over
+// the steps since the last solve (paper Fig. 5: the wire's sub-steps).
 void FixNSCDPolyhedra::final_integrate() {
-  if (update->ntimestep % every_ == 0) solve_step();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    for (int d = 0; d < 3; d++) {
+      force_sum_[i][d] += atom->f[i][d];
+      force_sum_[i][3 + d] += atom->torque[i][d];
+    }
+  }
+  summed_steps_++;
+  if (solves_at_end_of_step(update->ntimestep)) solve_step();
 }
 
-// One grain step with h = N dt on every rank (replicated solve), then the own grains'
-// results written back.
+// One grain step on every rank (replicated solve), then the own grains' results written
+// back. h = (steps summed) dt; the setup solve, with no steps summed, uses the setup
+// forces and h = N dt.
 void FixNSCDPolyhedra::solve_step() {
   solved_once_ = true;
-  const double h = every_ * update->dt;
+  const double h = (summed_steps_ > 0 ? summed_steps_ : solve_interval()) * update->dt;
   const double start = MPI_Wtime();
   const std::vector<wiregrain::GrainState> grains = gather_grains();
   wiregrain::GrainStepProblem problem;
@@ -268,6 +313,11 @@ void FixNSCDPolyhedra::solve_step() {
   publish_contacts(result);
   // the wall positions for the next detection
   for (wiregrain::PlaneWall &w : core_->walls) w.point += w.velocity * h;
+  last_h_ = h;
+  move_pending_ = true;
+  summed_steps_ = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 6; k++) force_sum_[i][k] = 0.0;
 }
 
 void FixNSCDPolyhedra::solve_failed(const std::exception &e) {
@@ -276,18 +326,24 @@ void FixNSCDPolyhedra::solve_failed(const std::exception &e) {
   throw;  // not reached: style_error stops the run
 }
 
-// Every rank gathers every grain of the group, in tag order (forces in velocity units:
-// F ftm2v, T ftm2v). A non-finite state stops with an ERROR naming the grain.
+// Every rank gathers every grain of the group, in tag order, with the force and torque
+// averaged over the summed steps (the setup solve: the current ones), in velocity units
+// (F ftm2v, T ftm2v). A non-finite state stops with an ERROR naming the grain.
 std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
   const double ftm2v = force->ftm2v;
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
+    double load[6];
+    for (int d = 0; d < 3; d++) {
+      load[d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
+      load[3 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
+    }
     const double record[kGrainRecord] = {
         double(atom->tag[i]), double(atom->shapetype[i]), atom->x[i][0], atom->x[i][1], atom->x[i][2],
         atom->quaternion[i][0], atom->quaternion[i][1], atom->quaternion[i][2], atom->quaternion[i][3],
         atom->v[i][0], atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1], atom->omega[i][2],
-        atom->f[i][0], atom->f[i][1], atom->f[i][2], atom->torque[i][0], atom->torque[i][1], atom->torque[i][2],
+        load[0], load[1], load[2], load[3], load[4], load[5],
         atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2]};
     mine.insert(mine.end(), record, record + kGrainRecord);
   }
@@ -418,10 +474,12 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   return largest_overlap_;
 }
 
-// restart: whether a solve happened, the wall positions and the warm-start impulses
+// restart: whether a solve happened, the sub-cycle state (steps summed, a pending move
+// and its h), the wall positions and the warm-start impulses
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   if (comm->me != 0) return;
-  std::vector<double> data = {solved_once_ ? 1.0 : 0.0, double(core_->walls.size())};
+  std::vector<double> data = {solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
+                              double(core_->walls.size())};
   for (const wiregrain::PlaneWall &w : core_->walls) data.insert(data.end(), w.point.data(), w.point.data() + 3);
   data.push_back(double(core_->impulses.pairs().size()));
   for (const auto &entry : core_->impulses.pairs()) {
@@ -442,6 +500,9 @@ void FixNSCDPolyhedra::restart(char *buf) {
   const double *d = reinterpret_cast<const double *>(buf);
   size_t k = 0;
   solved_once_ = d[k++] != 0.0;
+  summed_steps_ = (int)d[k++];
+  move_pending_ = d[k++] != 0.0;
+  last_h_ = d[k++];
   const size_t nwalls = (size_t)d[k++];
   for (size_t w = 0; w < nwalls; w++, k += 3)
     if (w < core_->walls.size()) core_->walls[w].point = vec(d + k);

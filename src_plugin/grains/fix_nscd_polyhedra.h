@@ -6,7 +6,7 @@
        [order forward|alternating|random] [seed 1] [warm_start yes|no] [restitution 0]
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
-       [margin 0] [write_problems N file_*.txt] [every 1]
+       [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
 
    Each step: at the end of step n, with the forces and torques of step n (gravity
@@ -20,9 +20,13 @@
    infinite mass, each with its own friction and velocity. The step itself is the core's
    (core/nscd/grain_step.h); this fix gathers, schedules, scatters and reports.
 
-   every N: the solve runs with h = N dt at the end of the steps whose number is a
-   multiple of N, the grains move once at the start of the following step and are held
-   in between (LIGGGHTS step = wire sub-step, grains every N).
+   every N (or timestep h = N dt, an integer multiple of the LIGGGHTS timestep): the solve
+   runs with h = N dt at the end of the steps whose number is a multiple of N, with the
+   forces and torques averaged over the N steps since the last solve; the grains move
+   once at the start of the following step and are held in between (paper Fig. 5:
+   LIGGGHTS step = wire sub-step, grains every N). A force that acts in one sub-step only
+   (fix wire/grain adds the sum of its sub-steps at the last one) thus gives the grain the
+   impulse dt·ΣF.
 
    MPI: every rank gathers all grains of the group, detects and solves the same contact
    problem in the same order and keeps its own grains' results (replicated solve), so 1
@@ -87,6 +91,11 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
 
   // the contacts of the last solve whose grain b this rank owns
   const wiregrain::ContactList &published_contacts() const;
+  // steps per solve (N), and whether the solve comes at the end of `step`
+  int solve_interval() const;
+  bool solves_at_end_of_step(bigint step) const;
+  // changes whenever the grains have moved (or a run was set up): held poses are stale
+  long pose_version() const { return pose_version_; }
 
  private:
   // the core step's options, the walls (current positions, moved by velocity·h every
@@ -95,6 +104,12 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   struct CoreState;
   std::unique_ptr<CoreState> core_;
   int every_ = 1;                           // solve every N steps with h = N dt
+  bool every_given_ = false;
+  double nscd_timestep_ = 0.0;              // keyword timestep (0: use every_)
+  int summed_steps_ = 0;                    // steps whose forces are in force_sum_
+  bool move_pending_ = false;               // a solve happened: move at the next step start
+  double last_h_ = 0.0;                     // h of that solve
+  long pose_version_ = 0;
   class AtomVecPolyhedron *grains_;
   bool solved_once_;                        // a contact solve happened (setup of the first run)
   double stats_[6];
@@ -103,6 +118,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::vector<double> wall_forces_;         // 3 per wall
   double **contact_force_;                  // per grain: force, torque
   double **step_start_velocity_;            // per grain: v_n, L_n of the last solve (θ-method)
+  double **force_sum_;                      // per grain: Σ f, Σ torque since the last solve
   int problem_every_ = 0;                   // write the reduced problem every N steps (0: never)
   std::string problem_file_;                // its file name, '*' replaced by the step
 

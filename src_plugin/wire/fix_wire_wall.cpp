@@ -21,6 +21,7 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/soft_contact.h"
 #include "plugin_args.h"
+#include "plugin_material.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -33,10 +34,7 @@ FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
       history_(NULL),
       contacts_(new wiregrain::ContactList),
       stats_step_(-1) {
-  friction_.static_friction = 0.5;
-  friction_.dynamic_friction = 0.5;
-  friction_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
-  friction_.limit_force = false;
+  friction_ = wiregrain_lmp::table1_friction();
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/wall", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
   if (!wire_)
@@ -52,33 +50,15 @@ FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
   }
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "E") {
-      material_keywords_.youngs_modulus = args.value_positive(key);
-      material_keywords_.has_youngs_modulus = true;
-    } else if (key == "nu") {
-      material_keywords_.poisson_ratio = args.value_nonnegative(key);
-      if (material_keywords_.poisson_ratio >= 0.5) args.fail("value of 'nu' must be < 0.5");
-      material_keywords_.has_poisson_ratio = true;
-    } else if (key == "mu_s") friction_.static_friction = args.value_nonnegative(key);
-    else if (key == "mu_d") friction_.dynamic_friction = args.value_nonnegative(key);
-    else if (key == "restitution") {
-      const double e = args.value_nonnegative(key);
-      if (e > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
-      friction_.damping_ratio = wiregrain::damping_ratio_from_restitution(e);
-    } else if (key == "damping_ratio") friction_.damping_ratio = args.value_nonnegative(key);
-    else if (key == "limit_force") {
-      const std::string v = args.value_word(key);
-      if (v != "yes" && v != "no") args.fail("value of 'limit_force' must be yes or no");
-      friction_.limit_force = v == "yes";
-    } else if (key == "velocity") {
+    if (wiregrain_lmp::parse_material_keyword(args, key, "E", "nu", material_keywords_)) continue;
+    if (wiregrain_lmp::parse_friction_keyword(args, key, friction_)) continue;
+    if (key == "velocity") {
       for (int d = 0; d < 3; d++) velocity_[d] = args.value_double(key);
     } else {
       args.unknown_keyword(key);
     }
   }
-  if (friction_.dynamic_friction > friction_.static_friction)
-    args.fail("mu_d (" + std::to_string(friction_.dynamic_friction) + ") must not exceed mu_s (" +
-              std::to_string(friction_.static_friction) + ")");
+  wiregrain_lmp::check_friction(args, friction_);
 
   reference_step_ = update->ntimestep;
   reference_dt_ = update->dt;

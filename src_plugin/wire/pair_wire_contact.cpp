@@ -61,14 +61,7 @@ PairWireContact::PairWireContact(LAMMPS *lmp)
       segment_next_(NULL),
       segment_end_(NULL),
       segment_capacity_(0) {
-  defaults_.youngs_modulus = 100.0;
-  defaults_.poisson_ratio = 0.0;
-  defaults_.static_friction = 0.5;
-  defaults_.dynamic_friction = 0.5;
-  defaults_.damping_ratio = wiregrain::damping_ratio_from_restitution(0.5);
-  defaults_.limit_force = false;
-  defaults_.has_youngs_modulus = false;
-  defaults_.has_poisson_ratio = false;
+  defaults_.friction = wiregrain_lmp::table1_friction();  // E, ν: per atom type unless given
   comm_reverse = 3;
 }
 
@@ -104,32 +97,11 @@ void PairWireContact::parse(int narg, char **arg, int first, Coefficients &c, co
   wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first);
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "E") {
-      c.youngs_modulus = args.value_positive(key);
-      c.has_youngs_modulus = true;
-    } else if (key == "nu") {
-      c.poisson_ratio = args.value_nonnegative(key);
-      if (c.poisson_ratio >= 0.5) args.fail("value of 'nu' must be < 0.5");
-      c.has_poisson_ratio = true;
-    } else if (key == "mu_s") c.static_friction = args.value_nonnegative(key);
-    else if (key == "mu_d") c.dynamic_friction = args.value_nonnegative(key);
-    else if (key == "restitution") {
-      const double e = args.value_nonnegative(key);
-      if (e > 1.0) args.fail("value of 'restitution' must be in [0, 1]");
-      c.damping_ratio = wiregrain::damping_ratio_from_restitution(e);
-    } else if (key == "damping_ratio") {
-      c.damping_ratio = args.value_nonnegative(key);
-    } else if (key == "limit_force") {
-      const std::string v = args.value_word(key);
-      if (v != "yes" && v != "no") args.fail("value of 'limit_force' must be yes or no");
-      c.limit_force = v == "yes";
-    } else {
+    if (!wiregrain_lmp::parse_material_keyword(args, key, "E", "nu", c.material) &&
+        !wiregrain_lmp::parse_friction_keyword(args, key, c.friction))
       args.unknown_keyword(key);
-    }
   }
-  if (c.dynamic_friction > c.static_friction)
-    args.fail("mu_d (" + std::to_string(c.dynamic_friction) + ") must not exceed mu_s (" +
-              std::to_string(c.static_friction) + ")");
+  wiregrain_lmp::check_friction(args, c.friction);
 }
 
 void PairWireContact::settings(int narg, char **arg) {
@@ -207,20 +179,10 @@ double PairWireContact::init_one(int i, int j) {
   }
   // each side's material: the pair's keywords, else its atom type's (plugin_material.h)
   const Coefficients &c = coefficients_[i][j];
-  wiregrain_lmp::MaterialKeywords given;
-  given.has_youngs_modulus = c.has_youngs_modulus;
-  given.youngs_modulus = c.youngs_modulus;
-  given.has_poisson_ratio = c.has_poisson_ratio;
-  given.poisson_ratio = c.poisson_ratio;
-  const wiregrain::ElasticMaterial side_i = wiregrain_lmp::wire_material_of_type(lmp, i, given, "pair", "wire/contact", "-");
-  const wiregrain::ElasticMaterial side_j = wiregrain_lmp::wire_material_of_type(lmp, j, given, "pair", "wire/contact", "-");
+  const wiregrain::ElasticMaterial side_i = wiregrain_lmp::wire_material_of_type(lmp, i, c.material, "pair", "wire/contact", "-");
+  const wiregrain::ElasticMaterial side_j = wiregrain_lmp::wire_material_of_type(lmp, j, c.material, "pair", "wire/contact", "-");
   effective_modulus_[i][j] = effective_modulus_[j][i] = wiregrain::wire_wire_modulus(side_i, side_j);
-  wiregrain::ContactFriction friction;
-  friction.damping_ratio = c.damping_ratio;
-  friction.static_friction = c.static_friction;
-  friction.dynamic_friction = c.dynamic_friction;
-  friction.limit_force = c.limit_force;
-  friction_[i][j] = friction_[j][i] = friction;
+  friction_[i][j] = friction_[j][i] = c.friction;
   return reach_;
 }
 

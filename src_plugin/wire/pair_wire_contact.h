@@ -30,6 +30,7 @@ PairStyle(wire/contact,PairWireContact)
 #include "pair.h"
 
 #include "common/contact_publisher.h"
+#include "common/plugin_material.h"
 #include "core/contact/contact_materials.h"
 
 namespace LAMMPS_NS {
@@ -54,9 +55,10 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
   const wiregrain::ContactList &published_contacts() const;
 
   // the settings of pair_style / pair_coeff; E and ν only where given (has_*)
+  // one pair_style / pair_coeff setting (written as is to restart files)
   struct Coefficients {
-    double youngs_modulus, poisson_ratio, static_friction, dynamic_friction, damping_ratio;
-    bool limit_force, has_youngs_modulus, has_poisson_ratio;
+    wiregrain_lmp::MaterialKeywords material;
+    wiregrain::ContactFriction friction;
   };
 
  private:

@@ -1,0 +1,97 @@
+#include "core/contact/held_grains.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+
+namespace wiregrain {
+
+HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
+                       double segment_reach)
+    : grains_(std::move(grains)), segment_reach_(segment_reach), grid_(BroadPhaseGrid::unbounded(1.0)) {
+  if (!(segment_reach > 0.0) || !std::isfinite(segment_reach))
+    throw InvalidArgument("segment_reach", "segment_reach must be finite and > 0, got " + format_number(segment_reach));
+  double largest = 0.0;
+  posed_.reserve(grains_.size());
+  bounding_radius_.reserve(grains_.size());
+  for (std::size_t k = 0; k < grains_.size(); ++k) {
+    const HeldGrain& g = grains_[k];
+    if (g.shape < 0 || g.shape >= library.size())
+      throw InvalidArgument("shape", "grain " + std::to_string(g.tag) + " has shape " + std::to_string(g.shape) +
+                                         ", not one of the " + std::to_string(library.size()) + " library shapes");
+    if (!(g.position.allFinite() && g.orientation.coeffs().allFinite() && g.motion.velocity.allFinite() &&
+          g.motion.angular_velocity.allFinite() && std::isfinite(g.motion.mass)))
+      throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a non-finite pose or velocity");
+    posed_.emplace_back(library[g.shape].shape, g.position, g.orientation);
+    bounding_radius_.push_back(library[g.shape].bounding_radius);
+    largest = std::max(largest, library[g.shape].bounding_radius);
+    index_of_tag_[g.tag] = static_cast<int>(k);
+  }
+  const double cell = largest + segment_reach;
+  for (int d = 0; d < 3; ++d)
+    if (box.periodic[d] && 2.0 * cell > box.hi[d] - box.lo[d])
+      throw InvalidArgument("box", "periodic box length " + format_number(box.hi[d] - box.lo[d]) + " in dimension " +
+                                       std::to_string(d) + " is below twice the wire–grain reach " +
+                                       format_number(cell));
+  grid_ = box.periodic[0] || box.periodic[1] || box.periodic[2]
+              ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell)
+              : BroadPhaseGrid::unbounded(cell);
+  for (const HeldGrain& g : grains_) grid_.insert(g.position);
+}
+
+int HeldGrains::index_of(long tag) const {
+  const auto it = index_of_tag_.find(tag);
+  return it == index_of_tag_.end() ? -1 : it->second;
+}
+
+void HeldGrains::check_reach(double reach) const {
+  if (!(reach <= segment_reach_))
+    throw InvalidArgument("segment", "a segment reaches " + format_number(reach) +
+                                         " (half its length + its radius), beyond the allowed " +
+                                         format_number(segment_reach_));
+}
+
+WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
+                                     const WireSegmentState& segment, double dt, TangentialHistory& history) const {
+  WireSegmentState moved = segment;
+  moved.x0 -= shift;
+  moved.x1 -= shift;
+  WireGrainContact c = wire_grain_contact(law, posed_[k], grains_[k].motion, moved, dt, history);
+  c.point += shift;
+  return c;
+}
+
+void GrainLoadSums::add(long tag, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+  Load& load = sums_[tag];
+  load.force += force;
+  load.torque += torque;
+}
+
+std::vector<double> GrainLoadSums::flatten() const {
+  std::vector<long> tags;
+  tags.reserve(sums_.size());
+  for (const auto& entry : sums_) tags.push_back(entry.first);
+  std::sort(tags.begin(), tags.end());
+  std::vector<double> flat;
+  flat.reserve(7 * tags.size());
+  for (long tag : tags) {
+    const Load& load = sums_.at(tag);
+    flat.push_back(double(tag));
+    flat.insert(flat.end(), load.force.data(), load.force.data() + 3);
+    flat.insert(flat.end(), load.torque.data(), load.torque.data() + 3);
+  }
+  return flat;
+}
+
+void GrainLoadSums::add_flat(const std::vector<double>& flat) {
+  if (flat.size() % 7 != 0)
+    throw InvalidArgument("flat", "grain load records come in sevens, got " + std::to_string(flat.size()) + " values");
+  for (std::size_t k = 0; k < flat.size(); k += 7)
+    add(static_cast<long>(flat[k]), Eigen::Vector3d(flat[k + 1], flat[k + 2], flat[k + 3]),
+        Eigen::Vector3d(flat[k + 4], flat[k + 5], flat[k + 6]));
+}
+
+}  // namespace wiregrain

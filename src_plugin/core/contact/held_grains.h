@@ -1,0 +1,109 @@
+// The grains as the wire sees them during one NSCD step (paper Sec. 2.4, Fig. 5): posed
+// once, held in place for the N wire sub-steps, with the velocity of the last NSCD step.
+// A broad-phase grid over their centres finds the grains within reach of a wire segment;
+// wire_grain_contact (wire_grain_contact.h) then gives the exact contact.
+//
+// Reach: a segment of half-length ℓ/2 and radius r_w centred at m can touch grain g only
+// if |m − x_g| < R_g + ℓ/2 + r_w, with R_g the grain's bounding radius (core + sweep). The
+// grid cells are at least R_max + s wide, s the largest ℓ/2 + r_w a segment may have
+// (given at construction), so every such grain is among the 27 cells around m
+// (broad_phase.h); a segment longer than allowed is an error, never a missed contact.
+// Periodic dimensions: the grain's image nearest to m, as LIGGGHTS' minimum image.
+#pragma once
+
+#include <array>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/contact/wire_grain_contact.h"
+#include "core/geometry/broad_phase.h"
+#include "core/geometry/contact_geometry.h"
+#include "core/geometry/shape_library.h"
+
+namespace wiregrain {
+
+struct HeldGrain {
+  long tag = 0;
+  int shape = 0;  // index in the shape library
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  GrainMotion motion;
+};
+
+// The simulation box the grains live in (periodic dimensions wrap).
+struct GrainBox {
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Ones();
+  std::array<bool, 3> periodic = {false, false, false};
+};
+
+class HeldGrains {
+ public:
+  // segment_reach: the largest ℓ/2 + r_w of a segment that will be queried (> 0).
+  // Throws InvalidArgument: a grain's shape not in the library ("shape"), a non-finite
+  // pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
+  // shorter than twice the interaction distance ("box").
+  HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
+             double segment_reach);
+
+  int size() const { return static_cast<int>(grains_.size()); }
+  const HeldGrain& grain(int k) const { return grains_[k]; }
+  const PosedShape& posed(int k) const { return posed_[k]; }
+  // index of the grain with this tag, −1 if none
+  int index_of(long tag) const;
+  double segment_reach() const { return segment_reach_; }
+
+  // Calls visit(k, shift) for every grain k whose bounding sphere, moved by the periodic
+  // image shift, meets the segment's bounding sphere (centre (x0+x1)/2, radius ℓ/2 + r_w).
+  // Throws InvalidArgument("segment", ...) when ℓ/2 + r_w exceeds segment_reach().
+  template <class Visit>
+  void for_each_candidate(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double wire_radius,
+                          Visit visit) const {
+    const Eigen::Vector3d middle = 0.5 * (x0 + x1);
+    const double reach = 0.5 * (x1 - x0).norm() + wire_radius;
+    check_reach(reach);
+    grid_.for_each_near(middle, [&](int k, const Eigen::Vector3d& shift) {
+      const double limit = bounding_radius_[k] + reach;
+      if ((grains_[k].position + shift - middle).squaredNorm() < limit * limit) visit(k, shift);
+    });
+  }
+
+  // The contact of segment `segment` with grain k seen at its image position + shift:
+  // evaluated with the segment moved by −shift, the contact point moved back by +shift
+  // (forces and torque arms do not depend on the image).
+  WireGrainContact contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
+                           const WireSegmentState& segment, double dt,
+                           TangentialHistory& history) const;
+
+ private:
+  std::vector<HeldGrain> grains_;
+  std::vector<PosedShape> posed_;
+  std::vector<double> bounding_radius_;
+  std::unordered_map<long, int> index_of_tag_;
+  double segment_reach_;
+  BroadPhaseGrid grid_;
+  void check_reach(double reach) const;
+};
+
+// Per-grain sums of the wire's forces and torques over the sub-steps of one NSCD step,
+// kept by grain tag so that they survive a rebuilt HeldGrains (a new run, restart).
+class GrainLoadSums {
+ public:
+  void add(long tag, const Eigen::Vector3d& force, const Eigen::Vector3d& torque);
+  void clear() { sums_.clear(); }
+  bool empty() const { return sums_.empty(); }
+  // flat image [tag, Fx, Fy, Fz, Tx, Ty, Tz]... in tag order, for MPI and restart files
+  std::vector<double> flatten() const;
+  void add_flat(const std::vector<double>& flat);
+  struct Load {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  };
+  const std::unordered_map<long, Load>& loads() const { return sums_; }
+
+ private:
+  std::unordered_map<long, Load> sums_;
+};
+
+}  // namespace wiregrain

