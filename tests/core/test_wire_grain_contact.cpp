@@ -2,6 +2,7 @@
 // by hand for a segment lying on the top face of a rounded cube.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/contact/wire_grain_contact.h"
@@ -127,4 +128,50 @@ TEST_F(WireOnRoundedCube, ASegmentThroughTheCoreGetsAFiniteForceAlongTheShortest
   EXPECT_NEAR((c.normal - Vector3d::UnitZ()).norm(), 0.0, 1e-12);
   EXPECT_TRUE(c.force_grain.allFinite());
   EXPECT_NEAR(c.force_grain.z(), -15.7 * c.overlap, 1e-12);
+}
+
+// A segment of length 1 on the top face, tilted by θ about its end 0 (overlap ξ_0 there):
+// end 1 overlaps by ξ_1 = ξ_0 − sin θ. While both ends overlap, the load point is their
+// overlap-weighted centroid, so bead 0 carries ξ_0/(ξ_0 + ξ_1) of k_n ξ_0.
+WireSegmentState tilted_segment(double overlap0, double angle) {
+  WireSegmentState s;
+  const double z0 = 0.5 * kEdge + kSweep + kWireRadius - overlap0;
+  s.x0 = Vector3d(-0.5, 0.2, z0);
+  s.x1 = s.x0 + Vector3d(std::cos(angle), 0.0, std::sin(angle));
+  s.m0 = s.m1 = 0.01;
+  s.radius = kWireRadius;
+  return s;
+}
+
+TEST_F(WireOnRoundedCube, ATiltedSegmentSharesItsLoadInProportionToTheOverlapsOfItsEnds) {
+  const double overlap0 = 0.01, angle = 0.005;  // below the 1e-2 rad parallel tolerance
+  const double overlap1 = overlap0 - std::sin(angle);
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, tilted_segment(overlap0, angle), 0.0, history);
+  ASSERT_TRUE(c.touching);
+  EXPECT_NEAR(c.overlap, overlap0, 1e-15);
+  const double total = law().normal_stiffness * overlap0;
+  EXPECT_NEAR(c.force_bead0.z(), total * overlap0 / (overlap0 + overlap1), 1e-14);
+  EXPECT_NEAR(c.force_bead1.z(), total * overlap1 / (overlap0 + overlap1), 1e-14);
+}
+
+TEST_F(WireOnRoundedCube, TheBeadsShareChangesContinuouslyAsTheSegmentTiltsPastTheParallelTolerance) {
+  // ξ_0 = 0.004: end 1 leaves the face at θ = 0.004, before the 0.01 tolerance, where
+  // the single closest point (end 0) takes over; a share that jumped there (from the
+  // middle of the interval to the end) made resting wires chatter
+  const double overlap0 = 0.004;
+  double previous = -1.0, largest_jump = 0.0;
+  for (int k = 0; k <= 300; ++k) {
+    const double angle = 1e-4 * k;
+    TangentialHistory history;
+    const WireGrainContact c =
+        wire_grain_contact(law(), grain, motion, tilted_segment(overlap0, angle), 0.0, history);
+    ASSERT_TRUE(c.touching);
+    const double share0 = c.force_bead0.z() / (c.force_bead0.z() + c.force_bead1.z());
+    const double expected = std::sin(angle) >= overlap0 ? 1.0 : overlap0 / (2.0 * overlap0 - std::sin(angle));
+    EXPECT_NEAR(share0, expected, 1e-9) << "angle " << angle;
+    if (previous >= 0.0) largest_jump = std::max(largest_jump, std::abs(share0 - previous));
+    previous = share0;
+  }
+  EXPECT_LT(largest_jump, 0.05);  // steps of 1e-4 rad; the old rule jumped by 0.5
 }

@@ -121,8 +121,8 @@ timestep        1e-3
 thermo_style    custom step f_wg[1] f_wg[6]
 thermo_modify   format float %.15g
 thermo          1000
-dump            d all custom 8000 dump.w id mass x f_wg[3]
-run             8000
+dump            d all custom 16000 dump.w id mass x f_wg[3]
+run             16000
 """), "d"), workdir=made.workdir)
         self.assertRanCleanly(r)
         d = read_dump(r.path("dump.w"))

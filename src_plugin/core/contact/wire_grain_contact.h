@@ -7,7 +7,16 @@
 // crossing segment still has a defined normal and a finite overlap), unit normal n from
 // the grain to the wire and the closest-point parameter t ∈ [0, 1] on the segment.
 //   overlap ξ_n = r_p + r_w − d;
-//   contact point p = point on the core + (r_p − ξ_n/2) n (halfway through the overlap);
+//   load point: the closest point x(t) of the axis; when the segment lies parallel (within
+//   the angle tolerance) to a face or edge over [t_b, t_e], the centroid of the overlaps
+//   of the interval's ends against that face, measured along n,
+//       t = (t_b ξ_b⁺ + t_e ξ_e⁺) / (ξ_b⁺ + ξ_e⁺)
+//   (the middle when the segment is exactly parallel; the deeper end once the other end
+//   has left the face, as for a tilted segment beyond the tolerance), so the share of
+//   the two beads changes continuously as a resting wire tilts: a rule that jumped from
+//   the middle to the end at the tolerance angle made a wire lying on faces chatter
+//   between the two shares and never come to rest;
+//   contact point p = x(t) − (r_w − ξ_n/2) n (halfway through the overlap);
 //   relative velocity of the wire with respect to the grain at p:
 //       u = (1 − t) v_0 + t v_1 − (v_g + ω_g × (p − x_g));
 //   force on the wire F = soft_contact_force(law, ξ_n, n, u, dt, m_eff, history) with
@@ -48,9 +57,13 @@ struct WireGrainContact {
   Eigen::Vector3d force_grain = Eigen::Vector3d::Zero();   // = −(force_bead0 + force_bead1)
   Eigen::Vector3d torque_grain = Eigen::Vector3d::Zero();  // about the grain's centre of mass
   double normal_force = 0.0;
+  double load_parameter = 0.0;  // t of the load point: bead 0 gets (1 − t) F, bead 1 t F
   bool sliding = false;
   SegmentContact geometry;
 };
+
+// t of the load point (above) for the geometry g of a touching pair.
+double load_point_parameter(const SegmentContact& g, const WireSegmentState& segment, double sweep_radius);
 
 // Geometry and force of one (segment, grain) pair. `grain` is posed at its centre of mass
 // (PosedShape::position()). history is the pair's tangential spring; it is advanced only
