@@ -130,9 +130,18 @@ TEST_F(WireOnRoundedCube, ASegmentThroughTheCoreGetsAFiniteForceAlongTheShortest
   EXPECT_NEAR(c.force_grain.z(), -15.7 * c.overlap, 1e-12);
 }
 
-// A segment of length 1 on the top face, tilted by θ about its end 0 (overlap ξ_0 there):
-// end 1 overlaps by ξ_1 = ξ_0 − sin θ. While both ends overlap, the load point is their
-// overlap-weighted centroid, so bead 0 carries ξ_0/(ξ_0 + ξ_1) of k_n ξ_0.
+// A segment of length 1 over the top face, tilted by θ about its end 0 (overlap ξ_0
+// there): end 1 overlaps by ξ_1 = ξ_0 − sin θ. Below the 1e-2 rad tolerance the load
+// point is t = w ξ_1⁺/(ξ_0 + ξ_1⁺) (lever of the end overlaps) with w = clamp(2(1 − θ/0.01),
+// 0, 1) blending to end 0; beyond, end 0 (the closest point). Bead 1 carries t k_n ξ_0.
+double load_point_of_tilted_segment(double overlap0, double angle) {
+  constexpr double kTolerance = 1e-2;
+  if (angle >= kTolerance) return 0.0;
+  const double overlap1 = std::max(0.0, overlap0 - std::sin(angle));
+  const double weight = std::min(1.0, 2.0 * (1.0 - angle / kTolerance));
+  return weight * overlap1 / (overlap0 + overlap1);
+}
+
 WireSegmentState tilted_segment(double overlap0, double angle) {
   WireSegmentState s;
   const double z0 = 0.5 * kEdge + kSweep + kWireRadius - overlap0;
@@ -145,21 +154,21 @@ WireSegmentState tilted_segment(double overlap0, double angle) {
 
 TEST_F(WireOnRoundedCube, ATiltedSegmentSharesItsLoadInProportionToTheOverlapsOfItsEnds) {
   const double overlap0 = 0.01, angle = 0.005;  // below the 1e-2 rad parallel tolerance
-  const double overlap1 = overlap0 - std::sin(angle);
   TangentialHistory history;
   const WireGrainContact c = wire_grain_contact(law(), grain, motion, tilted_segment(overlap0, angle), 0.0, history);
   ASSERT_TRUE(c.touching);
   EXPECT_NEAR(c.overlap, overlap0, 1e-15);
   const double total = law().normal_stiffness * overlap0;
-  EXPECT_NEAR(c.force_bead0.z(), total * overlap0 / (overlap0 + overlap1), 1e-14);
-  EXPECT_NEAR(c.force_bead1.z(), total * overlap1 / (overlap0 + overlap1), 1e-14);
+  const double t = load_point_of_tilted_segment(overlap0, angle);
+  EXPECT_NEAR(c.force_bead0.z(), total * (1.0 - t), 1e-14);
+  EXPECT_NEAR(c.force_bead1.z(), total * t, 1e-14);
 }
 
 TEST_F(WireOnRoundedCube, TheBeadsShareChangesContinuouslyAsTheSegmentTiltsPastTheParallelTolerance) {
-  // ξ_0 = 0.004: end 1 leaves the face at θ = 0.004, before the 0.01 tolerance, where
-  // the single closest point (end 0) takes over; a share that jumped there (from the
-  // middle of the interval to the end) made resting wires chatter
-  const double overlap0 = 0.004;
+  // ξ_0 = 0.02: end 1 still overlaps at the 0.01 rad tolerance, where the geometry
+  // switches from the parallel interval to the single closest point (end 0); a share
+  // that followed that switch made resting wires chatter
+  const double overlap0 = 0.02;
   double previous = -1.0, largest_jump = 0.0;
   for (int k = 0; k <= 300; ++k) {
     const double angle = 1e-4 * k;
@@ -168,10 +177,9 @@ TEST_F(WireOnRoundedCube, TheBeadsShareChangesContinuouslyAsTheSegmentTiltsPastT
         wire_grain_contact(law(), grain, motion, tilted_segment(overlap0, angle), 0.0, history);
     ASSERT_TRUE(c.touching);
     const double share0 = c.force_bead0.z() / (c.force_bead0.z() + c.force_bead1.z());
-    const double expected = std::sin(angle) >= overlap0 ? 1.0 : overlap0 / (2.0 * overlap0 - std::sin(angle));
-    EXPECT_NEAR(share0, expected, 1e-9) << "angle " << angle;
+    EXPECT_NEAR(share0, 1.0 - load_point_of_tilted_segment(overlap0, angle), 1e-12) << "angle " << angle;
     if (previous >= 0.0) largest_jump = std::max(largest_jump, std::abs(share0 - previous));
     previous = share0;
   }
-  EXPECT_LT(largest_jump, 0.05);  // steps of 1e-4 rad; the old rule jumped by 0.5
+  EXPECT_LT(largest_jump, 0.03);  // steps of 1e-4 rad; the old rule jumped by 0.5 − 0.25
 }

@@ -172,5 +172,182 @@ run             1500
         self.assertLess(drift, 1e-13 * p0)
 
 
+def three_cube_scene(height=0.62):
+    """Three cubes (edge 1, sweep 0.1), turned about z, 0.14 and 0.08 apart, their centres
+    at `height` (0.6: resting on the floor), and a wire of ten 0.4-long segments at
+    z = 1.35, 0.05 above resting cubes, off their centre line."""
+    cubes = []
+    for x, turn in ((-1.6, 0.3), (0.0, -0.2), (1.6, 0.5)):
+        cubes.append((x, 0.05 * x, height, np.cos(turn / 2), 0.0, 0.0, np.sin(turn / 2)))
+    return scene(cubes, ["line -2.0 0.1 1.35 2.0 0.1 1.35 segment 0.4 radius 0.1"], shape="cube 1",
+                 box=(-3, 3, -3, 3, -0.5, 3))
+
+
+COUPLED = """
+fix             g all gravity {g} vector 0 0 -1
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra every {every} tolerance 1e-8 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains {contact}
+timestep        1e-3
+"""
+
+
+class SubCycling(DeckTestCase):
+    def test_one_five_and_ten_sub_steps_reach_the_same_rest_without_energy_gain(self):
+        # the wire drops onto three resting cubes; at rest the force of the wire on each
+        # grain and the floor force agree for N = 1, 5, 10 wire sub-steps per NSCD step.
+        # Energy E = kinetic + potential + wire elastic (contact springs left out, which
+        # only lowers E), taken at the end of each NSCD step, where the grains have their
+        # new velocities v' and will move to x + h v' (θ = 1): their potential energy is
+        # that of x + h v', so E is the state a Moreau–Jean step can only dissipate; it
+        # must never exceed its start value
+        made = three_cube_scene(height=0.6)
+        rest = {}
+        for every in (1, 5, 10):
+            r = run(deck(COUPLED.format(g=G, every=every, contact="") + f"""
+fix             calm wire viscous 0.02
+compute         elastic wire wire/energy
+variable        pe_wire atom mass*z
+variable        pe_grains atom mass*(z+{every * 1e-3}*vz)
+compute         pe_wire wire reduce sum v_pe_wire
+compute         pe_grains grains reduce sum v_pe_grains
+compute         ke all ke
+variable        energy equal c_ke+c_pe_wire+c_pe_grains+c_elastic[3]
+thermo_style    custom step f_wg[1] f_nscd[9] v_energy
+thermo_modify   format float %.15g norm no
+thermo          1
+dump            d grains custom 12000 dump.w id f_wg[1] f_wg[2] f_wg[3]
+dump_modify     d format "%d %.15g %.15g %.15g"
+run             12000
+"""), workdir=made.workdir)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            d = read_dump(r.path("dump.w"))
+            energy = t["energy"][t["Step"] % every == 0]
+            gain = np.max(energy - energy[0])
+            rest[every] = (d["f_wg[3]"], t["nscd[9]"][-1], gain)
+            print(f"\nN = {every}: wire force on the grains {d['f_wg[3]']}, floor {t['nscd[9]'][-1]:.12g}, "
+                  f"contacts {t['wg[1]'][-1]:.0f}, largest energy gain {gain:.3g} "
+                  f"(drop {energy[0] - energy[-1]:.4g})")
+        scale = np.abs(rest[1][0]).sum()
+        self.assertGreater(scale, 0.0)
+        for every in (5, 10):
+            np.testing.assert_allclose(rest[every][0], rest[1][0], atol=1e-3 * scale)
+            self.assertAlmostEqual(rest[every][1] / rest[1][1], 1.0, delta=1e-3)
+        for every in (1, 5, 10):
+            self.assertLessEqual(rest[every][2], 1e-12)
+
+    def test_two_ranks_give_the_state_of_one(self):
+        # the subdomain boundary x = 0 cuts the middle cube and the wire
+        made = three_cube_scene()
+        states = []
+        for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
+            r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact="") + """
+thermo          100
+dump            d all custom 400 dump.s id x y z vx vy vz
+run             400
+""", processors=grid), "d"), np_ranks=ranks, workdir=made.workdir)
+            self.assertRanCleanly(r)
+            states.append(read_dump(r.path("dump.s")))
+        for column in ("x", "y", "z", "vx", "vy", "vz"):
+            np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-12, err_msg=column)
+
+    def test_restart_in_the_middle_of_a_sub_cycle_continues_the_straight_run(self):
+        # N = 5; the restart file is written after step 233, three sub-steps into an NSCD
+        # step; the straight run also stops and goes on at 233 (a run boundary: setup)
+        made = three_cube_scene()
+        body = COUPLED.format(g=G, every=5, contact="")
+        straight = run(full_precision(deck(body + """
+run             233
+dump            d all custom 267 dump.s id x y z vx vy vz
+run             267
+"""), "d"), workdir=made.workdir)
+        self.assertRanCleanly(straight)
+        os.rename(made.path("dump.s"), made.path("dump.straight"))
+        first = run(deck(body + """
+run             233
+write_restart   mid.restart
+"""), workdir=made.workdir)
+        self.assertRanCleanly(first)
+        second = run(full_precision(HEADER + """
+read_restart    mid.restart
+group           grains type 1
+group           wire type 2
+""" + body + """
+dump            d all custom 267 dump.s id x y z vx vy vz
+run             267
+""", "d"), workdir=made.workdir)
+        self.assertRanCleanly(second)
+        a, b = read_dump(made.path("dump.straight")), read_dump(made.path("dump.s"))
+        for column in ("x", "y", "z", "vx", "vy", "vz"):
+            np.testing.assert_allclose(b[column], a[column], rtol=0, atol=1e-13, err_msg=column)
+
+
+class Errors(DeckTestCase):
+    def check(self, body, message, made=None):
+        made = made or Errors.made
+        self.assertStopsWith(run(deck(body + "\nrun 1\n"), workdir=made.workdir), message)
+
+    @classmethod
+    def setUpClass(cls):
+        cls.made = scene([resting_cube(0, 0)], ["line -0.5 0.2 2.3 0.5 0.2 2.3 segment 0.5 radius 0.1"])
+
+    def test_bad_keywords(self):
+        nscd = "fix nscd grains nscd/polyhedra\n"
+        self.check(nscd + "fix wg wire wire/grain grains E_w -1",
+                   "fix wire/grain (id wg): value of 'E_w' must be > 0, got -1")
+        self.check(nscd + "fix wg wire wire/grain grains E_p 0",
+                   "fix wire/grain (id wg): value of 'E_p' must be > 0, got 0")
+        self.check(nscd + "fix wg wire wire/grain grains nu_p 0.5",
+                   "fix wire/grain (id wg): value of 'nu_p' must be < 0.5")
+        self.check(nscd + "fix wg wire wire/grain grains mu_s -0.1",
+                   "fix wire/grain (id wg): value of 'mu_s' must be >= 0, got -0.1")
+        self.check(nscd + "fix wg wire wire/grain grains mu_s 0.3 mu_d 0.4",
+                   "fix wire/grain (id wg): mu_d (0.400000) must not exceed mu_s (0.300000)")
+        self.check(nscd + "fix wg wire wire/grain grains stiffness 3",
+                   "fix wire/grain (id wg): unknown keyword 'stiffness'")
+        self.check(nscd + "fix wg wire wire/grain grains mu_d",
+                   "fix wire/grain (id wg): missing value after 'mu_d'")
+        self.check(nscd + "fix wg wire wire/grain",
+                   "fix wire/grain (id wg): expected the grain group after 'wire/grain'")
+        self.check(nscd + "fix wg wire wire/grain pebbles",
+                   "fix wire/grain (id wg): grain group 'pebbles' does not exist")
+
+    def test_groups_and_the_nscd_fix(self):
+        self.check("fix nscd grains nscd/polyhedra\nfix wg wire wire/grain wire",
+                   "fix wire/grain (id wg): grain group 'wire' has no grains")
+        self.check("fix nscd grains nscd/polyhedra\nfix wg grains wire/grain grains",
+                   "fix wire/grain (id wg): wire group 'grains' has no wire beads")
+        self.check("fix nscd grains nscd/polyhedra\nfix wg all wire/grain grains",
+                   "fix wire/grain (id wg): wire group 'all' holds 1 grains (give the wire beads only)")
+        self.check("fix wg wire wire/grain grains",
+                   "fix wire/grain (id wg): needs a fix nscd/polyhedra that integrates all grains of group 'grains'")
+
+    def test_nscd_time_step(self):
+        self.check("timestep 1e-3\nfix nscd grains nscd/polyhedra timestep 2.5e-3",
+                   "fix nscd/polyhedra (id nscd): value of 'timestep' (0.0025) must be an integer multiple of "
+                   "the LIGGGHTS timestep (0.001)")
+        self.check("timestep 1e-3\nfix nscd grains nscd/polyhedra timestep 5e-4",
+                   "fix nscd/polyhedra (id nscd): value of 'timestep' (0.0005) must be an integer multiple of "
+                   "the LIGGGHTS timestep (0.001)")
+        self.check("fix nscd grains nscd/polyhedra every 2 timestep 2e-3",
+                   "fix nscd/polyhedra (id nscd): give 'every' or 'timestep', not both")
+        self.check("fix nscd grains nscd/polyhedra timestep -1",
+                   "fix nscd/polyhedra (id nscd): value of 'timestep' must be > 0, got -1")
+
+    def test_wrong_atom_style(self):
+        text = """
+units lj
+atom_style wire
+region box block -2 2 -2 2 -2 2
+create_box 1 box
+create_wire 1 line 0 0 0 1 0 0
+fix wg all wire/grain all
+"""
+        self.assertStopsWith(run(text), "fix wire/grain (id wg): needs atom_style hybrid with wire and polyhedron, "
+                                        "not 'wire'")
+
+
 if __name__ == "__main__":
     main()

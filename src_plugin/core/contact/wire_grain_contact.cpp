@@ -1,19 +1,26 @@
 #include "core/contact/wire_grain_contact.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace wiregrain {
 
-double load_point_parameter(const SegmentContact& g, const WireSegmentState& segment, double sweep_radius) {
+double load_point_parameter(const PosedShape& grain, const SegmentContact& g, const WireSegmentState& segment,
+                            double angle_tolerance) {
   if (!(g.t_end > g.t_begin)) return g.t;
   const Eigen::Vector3d axis = segment.x1 - segment.x0;
-  const double reach = sweep_radius + segment.radius;
   const auto overlap_at = [&](double t) {
-    return std::max(0.0, reach - g.normal.dot(segment.x0 + t * axis - g.point_on_core));
+    const Eigen::Vector3d p = segment.x0 + t * axis;
+    return -segment_contact(grain, p, p, segment.radius).gap;
   };
   const double begin = overlap_at(g.t_begin), end = overlap_at(g.t_end);
-  if (!(begin + end > 0.0)) return g.t;
-  return (g.t_begin * begin + g.t_end * end) / (begin + end);
+  const double deeper_end = begin >= end ? g.t_begin : g.t_end;
+  const double positive = std::max(0.0, begin) + std::max(0.0, end);
+  if (!(positive > 0.0)) return deeper_end;
+  const double lever = (g.t_begin * std::max(0.0, begin) + g.t_end * std::max(0.0, end)) / positive;
+  const double tilt = std::asin(std::min(1.0, std::abs(begin - end) / ((g.t_end - g.t_begin) * axis.norm())));
+  const double weight = std::min(1.0, std::max(0.0, 2.0 * (1.0 - tilt / angle_tolerance)));
+  return weight * lever + (1.0 - weight) * deeper_end;
 }
 
 WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
@@ -26,7 +33,7 @@ WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape&
   out.normal = g.normal;
   if (!(out.overlap > 0.0)) return out;
   out.touching = true;
-  const double t = load_point_parameter(g, segment, grain.sweep_radius());
+  const double t = load_point_parameter(grain, g, segment, ContactOptions().angle_tolerance);
   out.load_parameter = t;
   const Eigen::Vector3d axis_point = segment.x0 + t * (segment.x1 - segment.x0);
   out.point = axis_point - (segment.radius - 0.5 * out.overlap) * g.normal;

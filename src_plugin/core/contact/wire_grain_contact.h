@@ -7,15 +7,20 @@
 // crossing segment still has a defined normal and a finite overlap), unit normal n from
 // the grain to the wire and the closest-point parameter t ∈ [0, 1] on the segment.
 //   overlap ξ_n = r_p + r_w − d;
-//   load point: the closest point x(t) of the axis; when the segment lies parallel (within
-//   the angle tolerance) to a face or edge over [t_b, t_e], the centroid of the overlaps
-//   of the interval's ends against that face, measured along n,
-//       t = (t_b ξ_b⁺ + t_e ξ_e⁺) / (ξ_b⁺ + ξ_e⁺)
-//   (the middle when the segment is exactly parallel; the deeper end once the other end
-//   has left the face, as for a tilted segment beyond the tolerance), so the share of
-//   the two beads changes continuously as a resting wire tilts: a rule that jumped from
-//   the middle to the end at the tolerance angle made a wire lying on faces chatter
-//   between the two shares and never come to rest;
+//   load point x(t): the closest point; when the segment lies parallel (within the angle
+//   tolerance θ_tol of segment_contact) to a face or edge over [t_b, t_e], with the exact
+//   overlaps ξ_b, ξ_e of the interval's ends (point–core distances) and the tilt
+//   θ = asin(|ξ_b − ξ_e| / ((t_e − t_b) l)) they show,
+//       t = w t_lever + (1 − w) t_deeper,  t_lever = (t_b ξ_b⁺ + t_e ξ_e⁺) / (ξ_b⁺ + ξ_e⁺),
+//       w = clamp(2 (1 − θ/θ_tol), 0, 1),
+//   so a flat-lying segment is loaded at its middle, and as it tilts the load moves
+//   continuously to the deeper end, where the geometry puts the single closest point
+//   beyond θ_tol. The paper's closest point (Sec. 2.3) is undefined for a flat-lying
+//   segment; the middle of the interval, switched to its end at θ_tol, made a wire lying
+//   on faces chatter between the two bead shares and never come to rest. (Loading at
+//   the centroid of the overlap profile instead was tried: with the force k_n ξ_n from
+//   the closest point applied elsewhere, the contact is no longer conservative and a
+//   resting wire kept vibrating; measured in tests/styles/test_wire_grain.py.)
 //   contact point p = x(t) − (r_w − ξ_n/2) n (halfway through the overlap);
 //   relative velocity of the wire with respect to the grain at p:
 //       u = (1 − t) v_0 + t v_1 − (v_g + ω_g × (p − x_g));
@@ -63,7 +68,9 @@ struct WireGrainContact {
 };
 
 // t of the load point (above) for the geometry g of a touching pair.
-double load_point_parameter(const SegmentContact& g, const WireSegmentState& segment, double sweep_radius);
+// (two extra exact point–core distances when the segment is parallel to a feature)
+double load_point_parameter(const PosedShape& grain, const SegmentContact& g, const WireSegmentState& segment,
+                            double angle_tolerance);
 
 // Geometry and force of one (segment, grain) pair. `grain` is posed at its centre of mass
 // (PosedShape::position()). history is the pair's tangential spring; it is advanced only
