@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -565,4 +566,100 @@ TEST(ConvexShapeInput, BadInputThrows) {
   expect_invalid_argument([&] { ConvexShape::box(1.0, -2.0, 1.0); }, "ly", "got -2");
   expect_invalid_argument([&] { ConvexShape::cube(1.0).sharp_mass_properties(0.0); }, "density",
                           "density must be a finite number > 0");
+}
+
+// ---------------------------------------------------------------------------------------
+// Spheres: one vertex, no edges, no faces, the radius as sweep radius
+
+TEST(ConvexShapeSphere, OneVertexNoEdgesNoFaces) {
+  const ConvexShape s = ConvexShape::sphere(0.7);
+  ASSERT_EQ(s.vertices().size(), 1u);
+  EXPECT_EQ(s.vertices()[0], Vector3d::Zero());
+  EXPECT_TRUE(s.edges().empty());
+  EXPECT_TRUE(s.faces().empty());
+  EXPECT_TRUE(s.is_sphere());
+  EXPECT_FALSE(ConvexShape::cube(1.0).is_sphere());
+  EXPECT_EQ(s.sweep_radius(), 0.7);
+  EXPECT_EQ(s.bounding_radius(), 0.7);
+  // from_points with one point: the same sphere about that point
+  const Vector3d p(1.0, -2.0, 0.5);
+  const ConvexShape q = ConvexShape::from_points({p}, 0.3);
+  ASSERT_EQ(q.vertices().size(), 1u);
+  EXPECT_EQ(q.vertices()[0], p);
+  EXPECT_TRUE(q.is_sphere());
+  EXPECT_NEAR(q.bounding_radius(), p.norm() + 0.3, 1e-15);
+  // a rigid motion moves the vertex
+  const Matrix3d rotation = Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+  const ConvexShape moved = q.transformed(rotation, Vector3d(0, 0, 1));
+  EXPECT_LT((moved.vertices()[0] - (rotation * p + Vector3d(0, 0, 1))).norm(), 1e-15);
+  EXPECT_TRUE(moved.faces().empty());
+}
+
+// The dilated grain of a sphere is the ball: V = 4π r³/3, centroid at the centre,
+// inertia 2/5 m r² about every axis.
+TEST(ConvexShapeSphere, DilatedMassIsTheBall) {
+  for (double r : {0.05, 0.7, 3.0}) {
+    const double rho = 2.5;
+    const Vector3d centre(0.3, -1.2, 4.0);
+    const MassProperties m = ConvexShape::from_points({centre}, r).dilated_mass_properties(rho);
+    const double volume = 4.0 / 3.0 * kPi * r * r * r;
+    EXPECT_LT(relative_error(m.volume, volume), 1e-15);
+    EXPECT_LT(relative_error(m.mass, rho * volume), 1e-15);
+    EXPECT_LT((m.centroid - centre).norm(), 1e-15 * centre.norm());
+    expect_isotropic_inertia(m, 0.4 * rho * volume * r * r, 1e-14, "ball r = " + std::to_string(r));
+    const MassProperties same = ConvexShape::sphere(r).mass_properties(rho, MassModel::dilated);
+    EXPECT_EQ(same.volume, m.volume);
+  }
+}
+
+// No sharp volume: the sharp model is refused, naming "model"; the body frame of the
+// dilated model puts the vertex at the origin without turning it.
+TEST(ConvexShapeSphere, SharpModelRefusedBodyFrameOfTheBall) {
+  const ConvexShape s = ConvexShape::from_points({Vector3d(1, 2, 3)}, 0.5);
+  expect_invalid_argument([&] { s.sharp_mass_properties(1.0); }, "model", "dilated mass model");
+  expect_invalid_argument([&] { s.mass_properties(1.0, MassModel::sharp_polyhedron); }, "model",
+                          "zero volume");
+  expect_invalid_argument([&] { to_body_frame(s, 1.0, MassModel::sharp_polyhedron); }, "model",
+                          "sphere");
+  const BodyFrameShape body = to_body_frame(s, 2.0, MassModel::dilated);
+  ASSERT_EQ(body.shape.vertices().size(), 1u);
+  EXPECT_LT(body.shape.vertices()[0].norm(), 1e-15);
+  EXPECT_LT((body.centroid - Vector3d(1, 2, 3)).norm(), 1e-15);
+  EXPECT_EQ(body.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0);
+  const double mass = 2.0 * 4.0 / 3.0 * kPi * 0.125;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(body.principal_moments[i], 0.4 * mass * 0.25, 1e-15);
+  EXPECT_EQ(body.shape.sweep_radius(), 0.5);
+}
+
+TEST(ConvexShapeSphere, BadRadiusNamesTheArgument) {
+  for (double r : {0.0, -1.0, std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::quiet_NaN()})
+    expect_invalid_argument([&] { ConvexShape::sphere(r); }, "radius",
+                            "radius must be a finite number > 0, got");
+  expect_invalid_argument([&] { ConvexShape::sphere(-2.0); }, "radius", "got -2");
+  expect_invalid_argument([&] { ConvexShape::from_points({Vector3d(1, 0, 0)}, 0.0); },
+                          "sweep_radius", "one point is a sphere and needs sweep_radius > 0");
+  expect_invalid_argument(
+      [&] { ConvexShape::from_points({Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0)}, 1.0); },
+      "points", "point 0 has a non-finite coordinate");
+  expect_invalid_argument([&] { ConvexShape::from_points({Vector3d(1, 0, 0), Vector3d(0, 1, 0)}, 1.0); },
+                          "points", "at least 4 points, got 2");
+  expect_invalid_argument([&] { ConvexShape::from_points({}, 1.0); }, "points",
+                          "at least 4 points, got 0");
+}
+
+// A vertex file with one point and a positive sweep radius is a sphere.
+TEST(ConvexShapeSphere, OnePointVertexFile) {
+  const std::string path = ::testing::TempDir() + "wiregrain_sphere_" + std::to_string(::getpid()) + ".txt";
+  {
+    std::ofstream out(path);
+    out << "# a sphere\n0.25 -0.5 1\n";
+  }
+  const ConvexShape s = ConvexShape::from_vertex_file(path, 0.4);
+  ASSERT_TRUE(s.is_sphere());
+  EXPECT_EQ(s.vertices()[0], Vector3d(0.25, -0.5, 1.0));
+  EXPECT_EQ(s.sweep_radius(), 0.4);
+  expect_invalid_argument([&] { ConvexShape::from_vertex_file(path, 0.0); }, "sweep_radius",
+                          "needs sweep_radius > 0");
+  std::remove(path.c_str());
 }

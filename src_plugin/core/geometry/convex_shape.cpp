@@ -106,13 +106,26 @@ Moments polyhedron_moments(const std::vector<Vector3d>& vertices,
 
 ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double sweep_radius) {
   require_nonnegative("sweep_radius", sweep_radius);
-  if (points.size() < 4)
-    throw InvalidArgument("points", "a convex polyhedron needs at least 4 points, got " +
-                                        std::to_string(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!points[i].allFinite())
       throw InvalidArgument("points", "point " + std::to_string(i) +
                                           " has a non-finite coordinate");
+  // One point: its hull is the point, and the grain the sphere of radius sweep_radius
+  // about it (one vertex, no edges, no faces).
+  if (points.size() == 1) {
+    if (!(sweep_radius > 0.0))
+      throw InvalidArgument("sweep_radius",
+                            "one point is a sphere and needs sweep_radius > 0 (its radius), got " +
+                                format_number(sweep_radius));
+    ConvexShape shape;
+    shape.vertices_ = points;
+    shape.sweep_radius_ = sweep_radius;
+    return shape;
+  }
+  if (points.size() < 4)
+    throw InvalidArgument("points", "a convex polyhedron needs at least 4 points, got " +
+                                        std::to_string(points.size()) +
+                                        " (one point with sweep_radius > 0 makes a sphere)");
 
   // size of the cloud: diagonal of its bounding box
   Vector3d lo = points[0], hi = points[0];
@@ -454,6 +467,11 @@ ConvexShape ConvexShape::random_ellipsoid(std::uint64_t seed, int n_vertices, do
   return random_ellipsoid(rng, n_vertices, a, b_over_a, c_over_a, sweep_radius);
 }
 
+ConvexShape ConvexShape::sphere(double radius) {
+  require_positive("radius", radius);
+  return from_points({Vector3d::Zero()}, radius);
+}
+
 ConvexShape ConvexShape::box(double lx, double ly, double lz, double sweep_radius) {
   require_positive("lx", lx);
   require_positive("ly", ly);
@@ -543,6 +561,10 @@ ConvexShape ConvexShape::transformed(const Matrix3d& rotation, const Vector3d& t
 
 MassProperties ConvexShape::sharp_mass_properties(double density) const {
   require_positive("density", density);
+  if (is_sphere())
+    throw InvalidArgument("model",
+                          "a sphere has no sharp mass properties: its core is one point, of zero "
+                          "volume (use the dilated mass model)");
   Vector3d reference = Vector3d::Zero();
   for (const auto& v : vertices_) reference += v;
   reference /= static_cast<double>(vertices_.size());
@@ -652,9 +674,11 @@ MassProperties ConvexShape::dilated_mass_properties(double density) const {
     sector_second[j] += flat_sector_first * e.transpose();
   }
 
-  // vertex sectors: volume element ρ² dρ dΩ
+  // vertex sectors: volume element ρ² dρ dΩ. The lone vertex of a sphere has no faces and
+  // its normal cone is the whole unit sphere: |Ω| = 4π, M1 = 0, M2 = 4π/3 · 1, so the
+  // sector is the ball, V = 4π r³/3, ∫ x xᵀ = 4π r⁵/15 · 1, I = 8π ρ r⁵/15 = 2/5 m r².
   for (std::size_t v = 0; v < vertices_.size(); ++v) {
-    const double solid_angle = 2.0 * kPi - face_angle_sum[v];
+    const double solid_angle = is_sphere() ? 4.0 * kPi : 2.0 * kPi - face_angle_sum[v];
     Matrix3d m2 = solid_angle / 3.0 * Matrix3d::Identity() + sector_second[v];
     m2 = 0.5 * (m2 + m2.transpose());
     const Vector3d& m1 = sector_first[v];
