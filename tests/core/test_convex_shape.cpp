@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -662,4 +663,56 @@ TEST(ConvexShapeSphere, OnePointVertexFile) {
   expect_invalid_argument([&] { ConvexShape::from_vertex_file(path, 0.0); }, "sweep_radius",
                           "needs sweep_radius > 0");
   std::remove(path.c_str());
+}
+
+// Drawing: a polyhedron's faces (moved out by r along their normals when swept); a
+// sphere's ball as a latitude–longitude tessellation: B bands × 2B sectors (2B triangles
+// at each pole, 2B (B − 2) quadrilaterals), every vertex at distance r from the centre,
+// every polygon planar and counter-clockwise seen from outside, and the polygons closing
+// into a surface of genus 0 (each directed edge once, its reverse once, V − E + F = 2).
+TEST(ConvexShapeSphere, SurfacePolygons) {
+  const ConvexShape cube = ConvexShape::cube(2.0, 0.25);
+  for (bool swept : {false, true}) {
+    const auto polygons = surface_polygons(cube, swept);
+    ASSERT_EQ(polygons.size(), 6u);
+    for (std::size_t f = 0; f < 6; ++f) {
+      ASSERT_EQ(polygons[f].size(), 4u);
+      const Vector3d& n = cube.faces()[f].normal;
+      for (const Vector3d& p : polygons[f]) EXPECT_NEAR(p.dot(n), swept ? 1.25 : 1.0, 1e-15);
+    }
+  }
+
+  const double r = 0.7;
+  const Vector3d c(1.0, -2.0, 0.5);
+  const ConvexShape ball = ConvexShape::from_points({c}, r);
+  const int B = kSphereDisplayBands;
+  for (bool swept : {false, true}) {
+    const auto polygons = surface_polygons(ball, swept);
+    ASSERT_EQ(static_cast<int>(polygons.size()), 2 * B * B);
+    int triangles = 0;
+    std::set<std::array<double, 3>> corners;
+    std::set<std::pair<std::array<double, 3>, std::array<double, 3>>> directed;
+    const auto key = [](const Vector3d& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
+    for (const auto& polygon : polygons) {
+      const std::size_t m = polygon.size();
+      ASSERT_TRUE(m == 3 || m == 4);
+      triangles += m == 3;
+      Vector3d newell = Vector3d::Zero(), mean = Vector3d::Zero();
+      for (std::size_t k = 0; k < m; ++k) {
+        newell += (polygon[k] - c).cross(polygon[(k + 1) % m] - c);
+        mean += (polygon[k] - c) / static_cast<double>(m);
+        EXPECT_NEAR((polygon[k] - c).norm(), r, 1e-15);
+        corners.insert(key(polygon[k]));
+        EXPECT_TRUE(directed.insert({key(polygon[k]), key(polygon[(k + 1) % m])}).second);
+      }
+      const Vector3d n = newell.normalized();
+      EXPECT_GT(n.dot(mean), 0.0);  // outward
+      for (const Vector3d& p : polygon) EXPECT_NEAR(n.dot(p - c), n.dot(mean), 1e-15);  // planar
+    }
+    EXPECT_EQ(triangles, 4 * B);
+    for (const auto& [a, b] : directed) EXPECT_EQ(directed.count({b, a}), 1u);
+    const long v = static_cast<long>(corners.size()), e = static_cast<long>(directed.size()) / 2;
+    EXPECT_EQ(v, 2 + (B - 1) * 2 * B);
+    EXPECT_EQ(v - e + static_cast<long>(polygons.size()), 2);
+  }
 }

@@ -696,6 +696,53 @@ MassProperties ConvexShape::mass_properties(double density, MassModel model) con
                                      : sharp_mass_properties(density);
 }
 
+// ---------------------------------------------------------------------------------------
+// Drawing
+
+std::vector<std::vector<Vector3d>> surface_polygons(const ConvexShape& shape, bool swept) {
+  std::vector<std::vector<Vector3d>> out;
+  const double r = shape.sweep_radius();
+  if (!shape.is_sphere()) {
+    out.reserve(shape.faces().size());
+    for (const auto& face : shape.faces()) {
+      const Vector3d shift = (swept ? r : 0.0) * face.normal;
+      std::vector<Vector3d> polygon;
+      polygon.reserve(face.vertices.size());
+      for (int v : face.vertices) polygon.push_back(shape.vertices()[v] + shift);
+      out.push_back(std::move(polygon));
+    }
+    return out;
+  }
+  // Ring i (polar angle θ_i = π i / B, i = 0..B; rings 0 and B are the poles), sector j
+  // (azimuth φ_j = 2π j / S, S = 2B): c + r (sin θ cos φ, sin θ sin φ, cos θ). Each
+  // vertex is computed once, so neighbouring polygons share it bit for bit. The loop
+  // (i, j), (i+1, j), (i+1, j+1), (i, j+1) runs down, east, up: counter-clockwise seen
+  // from outside (at φ = 0 the edges −z then +y give the outward normal +x).
+  const int bands = kSphereDisplayBands, sectors = 2 * kSphereDisplayBands;
+  const Vector3d& c = shape.vertices()[0];
+  std::vector<std::vector<Vector3d>> ring(bands + 1, std::vector<Vector3d>(sectors));
+  for (int i = 0; i <= bands; ++i) {
+    const double theta = kPi * i / bands;
+    const double sin_t = i == bands ? 0.0 : std::sin(theta), cos_t = i == bands ? -1.0 : std::cos(theta);
+    for (int j = 0; j < sectors; ++j) {
+      const double phi = 2.0 * kPi * j / sectors;
+      ring[i][j] = c + r * Vector3d(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+    }
+  }
+  out.reserve(static_cast<std::size_t>(bands) * sectors);
+  for (int i = 0; i < bands; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const int k = (j + 1) % sectors;
+      if (i == 0)
+        out.push_back({ring[0][0], ring[1][j], ring[1][k]});
+      else if (i == bands - 1)
+        out.push_back({ring[i][j], ring[bands][0], ring[i][k]});
+      else
+        out.push_back({ring[i][j], ring[i + 1][j], ring[i + 1][k], ring[i][k]});
+    }
+  return out;
+}
+
 PrincipalAxes principal_axes(const Matrix3d& inertia) {
   Eigen::SelfAdjointEigenSolver<Matrix3d> solver(0.5 * (inertia + inertia.transpose()));
   if (solver.info() != Eigen::Success)

@@ -150,6 +150,17 @@ class ConvexShape {
   double sweep_radius_ = 0.0;
 };
 
+// Polygons that draw a grain (body frame; each convex, counter-clockwise seen from
+// outside), for output such as dump polyhedron/vtk:
+//   - a polyhedral core: its faces, each moved out along its normal by the sweep radius
+//     when `swept` (the spheropolyhedron's flat faces; edges and corners not rounded);
+//   - a sphere, whatever `swept` (its point core alone draws nothing): the ball of radius
+//     r tessellated along latitudes and longitudes, kSphereDisplayBands bands of polar
+//     angle π/kSphereDisplayBands times 2·kSphereDisplayBands sectors, triangles at the
+//     poles and planar quadrilaterals between, every vertex on the sphere.
+constexpr int kSphereDisplayBands = 8;
+std::vector<std::vector<Eigen::Vector3d>> surface_polygons(const ConvexShape& shape, bool swept);
+
 // Principal moments (ascending) and right-handed principal axes of an inertia tensor
 // (Eigen::SelfAdjointEigenSolver).
 PrincipalAxes principal_axes(const Eigen::Matrix3d& inertia);
