@@ -131,7 +131,7 @@ class Placer {
 };
 
 struct ShapeChoice {
-  std::string kind = "ellipsoid";  // ellipsoid cube box tetrahedron octahedron file
+  std::string kind = "ellipsoid";  // ellipsoid cube box tetrahedron octahedron sphere file
   double size[3] = {0.0, 0.0, 0.0};
   std::string path;
 };
@@ -170,6 +170,7 @@ void CreateGrains::command(int narg, char **arg) {
   std::uint64_t seed = 0;
   double a_min = 0.8, a_max = 1.0, b_over_a = 0.8, c_over_a = 0.6, sweep = 0.1, rho = 1.5;
   double spacing = 0.0;
+  bool have_sweep = false;
   long n_vertices = 20, attempts = 1000;
   ShapeChoice choice;
   std::string shapes_file;
@@ -197,6 +198,7 @@ void CreateGrains::command(int narg, char **arg) {
         args.fail("value of 'vertices' must be <= 1000000, got " + std::to_string(n_vertices));
     } else if (key == "sweep") {
       sweep = args.value_nonnegative(key);
+      have_sweep = true;
     } else if (key == "density") {
       rho = args.value_positive(key);
     } else if (key == "spacing") {
@@ -209,20 +211,25 @@ void CreateGrains::command(int narg, char **arg) {
       shapes_file = args.value_word(key);
     } else if (key == "shape") {
       choice.kind = args.value_word(key);
-      if (choice.kind == "cube" || choice.kind == "tetrahedron" || choice.kind == "octahedron") {
+      if (choice.kind == "cube" || choice.kind == "tetrahedron" || choice.kind == "octahedron" ||
+          choice.kind == "sphere") {
         choice.size[0] = args.value_positive("shape " + choice.kind);
       } else if (choice.kind == "box") {
         for (int d = 0; d < 3; d++) choice.size[d] = args.value_positive("shape box");
       } else if (choice.kind == "file") {
         choice.path = args.value_word("shape file");
       } else if (choice.kind != "ellipsoid") {
-        args.fail("unknown shape '" + choice.kind + "' (ellipsoid, cube, box, tetrahedron, octahedron or file)");
+        args.fail("unknown shape '" + choice.kind +
+                  "' (ellipsoid, cube, box, tetrahedron, octahedron, sphere or file)");
       }
     } else {
       args.unknown_keyword(key);
     }
   }
   if (!have_seed) args.fail("missing keyword 'seed' (a positive integer for the random numbers)");
+  // a sphere is the one-vertex grain whose sweep radius is its radius R
+  if (choice.kind == "sphere" && have_sweep)
+    args.fail("keyword 'sweep' does not apply to 'shape sphere' (its radius is the sweep radius)");
   if (a_min > a_max)
     args.fail("a_min (" + wiregrain::format_number(a_min) + ") must not exceed a_max (" +
               wiregrain::format_number(a_max) + ")");
@@ -308,6 +315,8 @@ void CreateGrains::command(int narg, char **arg) {
         s.reset(new wiregrain::ConvexShape(wiregrain::ConvexShape::regular_tetrahedron(L[0], sweep)));
       else if (choice.kind == "octahedron")
         s.reset(new wiregrain::ConvexShape(wiregrain::ConvexShape::regular_octahedron(L[0], sweep)));
+      else if (choice.kind == "sphere")
+        s.reset(new wiregrain::ConvexShape(wiregrain::ConvexShape::sphere(L[0])));
       else
         s.reset(new wiregrain::ConvexShape(wiregrain::ConvexShape::from_vertex_file(choice.path, sweep)));
       double q[4];

@@ -5,7 +5,8 @@
    create_grains type N random region-ID [keywords]      random non-overlapping insertion
      keywords: seed S (required)  a_min 0.8  a_max 1.0  b_over_a 0.8  c_over_a 0.6
                vertices 20 (N_v)  sweep 0.1 (r_p)  density 1.5 (rho_p)
-               shape ellipsoid | cube L | box LX LY LZ | tetrahedron L | octahedron L | file PATH
+               shape ellipsoid | cube L | box LX LY LZ | tetrahedron L | octahedron L | sphere R |
+                     file PATH   (sphere R: the one-vertex grain of radius R; no 'sweep')
                spacing 2*a_max (layer only)  attempts 1000  write_shapes FILE
 
    layer: two staggered square lattices (the second s/2 across and 2 a_max higher) in the

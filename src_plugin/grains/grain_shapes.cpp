@@ -67,7 +67,7 @@ void GrainShapes::command(int narg, char **arg) {
         double sweep = 0.0;
         std::string k1, k2, k3;
         if (!(in >> k1 >> index >> k2 >> sweep >> k3 >> n) || k1 != "shape" || k2 != "sweep" || k3 != "vertices" ||
-            index != s || n < 4) {
+            index != s || (n != 1 && n < 4)) {  // one vertex: a sphere
           problem = "'" + path + "': shape " + std::to_string(s) + " is malformed";
           break;
         }

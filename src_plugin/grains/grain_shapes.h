@@ -5,7 +5,8 @@
    grain_shapes read FILE      (before read_data; replaces an empty library)
 
    File: a header line "wiregrain shapes N mass dilated|sharp", then per shape a line
-   "shape K sweep R vertices V" followed by V lines "x y z" of body-frame vertices. */
+   "shape K sweep R vertices V" followed by V lines "x y z" of body-frame vertices
+   (V = 1: a sphere of radius R; otherwise V >= 4, the hull's vertices). */
 
 #ifdef COMMAND_CLASS
 

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "update.h"
 
+#include "core/geometry/convex_shape.h"
 #include "core/geometry/shape_library.h"
 #include "plugin_args.h"
 #include "plugin_vtk.h"
@@ -105,7 +106,12 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
   const int nrows = static_cast<int>(gathered_.size() / size_one);
   const auto value = [&](int r, int column) { return gathered_[static_cast<size_t>(r) * size_one + column]; };
 
-  // grains in id order (the same file whatever the decomposition); shapeless ones left out
+  // grains in id order (the same file whatever the decomposition); shapeless ones left out.
+  // The polygons of each library shape in use, body frame, once per snapshot
+  // (core/geometry/convex_shape.h surface_polygons: the faces, swept out with `sweep yes`;
+  // a sphere as its tessellated ball).
+  std::vector<std::vector<std::vector<Eigen::Vector3d>>> polygons(library.size());
+  std::vector<bool> have_polygons(library.size(), false);
   std::vector<int> rows;
   rows.reserve(nrows);
   int shapeless = 0;
@@ -121,8 +127,12 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
                          std::to_string(static_cast<long>(value(r, TAG))) + " has shape " + std::to_string(s) +
                          ", the library has " + std::to_string(library.size()) + " shapes").c_str());
     rows.push_back(r);
-    for (const auto &face : library[s].shape.faces()) {
-      npoints += static_cast<vtkIdType>(face.vertices.size());
+    if (!have_polygons[s]) {
+      polygons[s] = wiregrain::surface_polygons(library[s].shape, sweep_);
+      have_polygons[s] = true;
+    }
+    for (const auto &polygon : polygons[s]) {
+      npoints += static_cast<vtkIdType>(polygon.size());
       ncells++;
     }
   }
@@ -156,18 +166,15 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
 
   vtkIdType p = 0, c = 0;
   for (int r : rows) {
-    const wiregrain::ConvexShape &shape = library[static_cast<int>(value(r, SHAPE))].shape;
     const Eigen::Matrix3d rotation =
         Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized().toRotationMatrix();
     const Eigen::Vector3d centre(value(r, X), value(r, Y), value(r, Z));
-    const double offset = sweep_ ? shape.sweep_radius() : 0.0;
     const int grain_values[3] = {static_cast<int>(value(r, TAG)), static_cast<int>(value(r, TYPE)),
                                  static_cast<int>(value(r, SHAPE))};
-    for (const auto &face : shape.faces()) {
-      const Eigen::Vector3d shift = offset * face.normal;
-      polys->InsertNextCell(static_cast<vtkIdType>(face.vertices.size()));
-      for (int vertex : face.vertices) {
-        const Eigen::Vector3d q = centre + rotation * (shape.vertices()[vertex] + shift);
+    for (const auto &polygon : polygons[static_cast<int>(value(r, SHAPE))]) {
+      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()));
+      for (const Eigen::Vector3d &vertex : polygon) {
+        const Eigen::Vector3d q = centre + rotation * vertex;
         points->SetPoint(p, q.x(), q.y(), q.z());
         velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
         angular_velocity->SetTuple3(p, value(r, WX), value(r, WY), value(r, WZ));

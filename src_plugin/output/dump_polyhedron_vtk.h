@@ -10,7 +10,9 @@
    points of a file are Σ over grains and faces of the face's vertex count), so faces
    render flat. Cell data per face: id, type, shape; point data: velocity and
    angular_velocity of the grain. `sweep yes` moves each face outward by the sweep radius
-   (an approximation of the spheropolyhedron: edges and corners are not rounded).
+   (an approximation of the spheropolyhedron: edges and corners are not rounded). A
+   sphere (one-vertex shape) is always drawn as its ball, tessellated along latitudes and
+   longitudes (core surface_polygons: 8 bands x 16 sectors, 128 cells, 480 points).
 
    Every rank packs its grains through the Dump base class (pack() into buf); rank 0
    receives all buffers and builds the meshes from the shape library, which is the same

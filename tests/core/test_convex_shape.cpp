@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -565,4 +567,152 @@ TEST(ConvexShapeInput, BadInputThrows) {
   expect_invalid_argument([&] { ConvexShape::box(1.0, -2.0, 1.0); }, "ly", "got -2");
   expect_invalid_argument([&] { ConvexShape::cube(1.0).sharp_mass_properties(0.0); }, "density",
                           "density must be a finite number > 0");
+}
+
+// ---------------------------------------------------------------------------------------
+// Spheres: one vertex, no edges, no faces, the radius as sweep radius
+
+TEST(ConvexShapeSphere, OneVertexNoEdgesNoFaces) {
+  const ConvexShape s = ConvexShape::sphere(0.7);
+  ASSERT_EQ(s.vertices().size(), 1u);
+  EXPECT_EQ(s.vertices()[0], Vector3d::Zero());
+  EXPECT_TRUE(s.edges().empty());
+  EXPECT_TRUE(s.faces().empty());
+  EXPECT_TRUE(s.is_sphere());
+  EXPECT_FALSE(ConvexShape::cube(1.0).is_sphere());
+  EXPECT_EQ(s.sweep_radius(), 0.7);
+  EXPECT_EQ(s.bounding_radius(), 0.7);
+  // from_points with one point: the same sphere about that point
+  const Vector3d p(1.0, -2.0, 0.5);
+  const ConvexShape q = ConvexShape::from_points({p}, 0.3);
+  ASSERT_EQ(q.vertices().size(), 1u);
+  EXPECT_EQ(q.vertices()[0], p);
+  EXPECT_TRUE(q.is_sphere());
+  EXPECT_NEAR(q.bounding_radius(), p.norm() + 0.3, 1e-15);
+  // a rigid motion moves the vertex
+  const Matrix3d rotation = Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+  const ConvexShape moved = q.transformed(rotation, Vector3d(0, 0, 1));
+  EXPECT_LT((moved.vertices()[0] - (rotation * p + Vector3d(0, 0, 1))).norm(), 1e-15);
+  EXPECT_TRUE(moved.faces().empty());
+}
+
+// The dilated grain of a sphere is the ball: V = 4π r³/3, centroid at the centre,
+// inertia 2/5 m r² about every axis.
+TEST(ConvexShapeSphere, DilatedMassIsTheBall) {
+  for (double r : {0.05, 0.7, 3.0}) {
+    const double rho = 2.5;
+    const Vector3d centre(0.3, -1.2, 4.0);
+    const MassProperties m = ConvexShape::from_points({centre}, r).dilated_mass_properties(rho);
+    const double volume = 4.0 / 3.0 * kPi * r * r * r;
+    EXPECT_LT(relative_error(m.volume, volume), 1e-15);
+    EXPECT_LT(relative_error(m.mass, rho * volume), 1e-15);
+    EXPECT_LT((m.centroid - centre).norm(), 1e-15 * centre.norm());
+    expect_isotropic_inertia(m, 0.4 * rho * volume * r * r, 1e-14, "ball r = " + std::to_string(r));
+    const MassProperties same = ConvexShape::sphere(r).mass_properties(rho, MassModel::dilated);
+    EXPECT_EQ(same.volume, m.volume);
+  }
+}
+
+// No sharp volume: the sharp model is refused, naming "model"; the body frame of the
+// dilated model puts the vertex at the origin without turning it.
+TEST(ConvexShapeSphere, SharpModelRefusedBodyFrameOfTheBall) {
+  const ConvexShape s = ConvexShape::from_points({Vector3d(1, 2, 3)}, 0.5);
+  expect_invalid_argument([&] { s.sharp_mass_properties(1.0); }, "model", "dilated mass model");
+  expect_invalid_argument([&] { s.mass_properties(1.0, MassModel::sharp_polyhedron); }, "model",
+                          "zero volume");
+  expect_invalid_argument([&] { to_body_frame(s, 1.0, MassModel::sharp_polyhedron); }, "model",
+                          "sphere");
+  const BodyFrameShape body = to_body_frame(s, 2.0, MassModel::dilated);
+  ASSERT_EQ(body.shape.vertices().size(), 1u);
+  EXPECT_LT(body.shape.vertices()[0].norm(), 1e-15);
+  EXPECT_LT((body.centroid - Vector3d(1, 2, 3)).norm(), 1e-15);
+  EXPECT_EQ(body.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0);
+  const double mass = 2.0 * 4.0 / 3.0 * kPi * 0.125;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(body.principal_moments[i], 0.4 * mass * 0.25, 1e-15);
+  EXPECT_EQ(body.shape.sweep_radius(), 0.5);
+}
+
+TEST(ConvexShapeSphere, BadRadiusNamesTheArgument) {
+  for (double r : {0.0, -1.0, std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::quiet_NaN()})
+    expect_invalid_argument([&] { ConvexShape::sphere(r); }, "radius",
+                            "radius must be a finite number > 0, got");
+  expect_invalid_argument([&] { ConvexShape::sphere(-2.0); }, "radius", "got -2");
+  expect_invalid_argument([&] { ConvexShape::from_points({Vector3d(1, 0, 0)}, 0.0); },
+                          "sweep_radius", "one point is a sphere and needs sweep_radius > 0");
+  expect_invalid_argument(
+      [&] { ConvexShape::from_points({Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0)}, 1.0); },
+      "points", "point 0 has a non-finite coordinate");
+  expect_invalid_argument([&] { ConvexShape::from_points({Vector3d(1, 0, 0), Vector3d(0, 1, 0)}, 1.0); },
+                          "points", "at least 4 points, got 2");
+  expect_invalid_argument([&] { ConvexShape::from_points({}, 1.0); }, "points",
+                          "at least 4 points, got 0");
+}
+
+// A vertex file with one point and a positive sweep radius is a sphere.
+TEST(ConvexShapeSphere, OnePointVertexFile) {
+  const std::string path = ::testing::TempDir() + "wiregrain_sphere_" + std::to_string(::getpid()) + ".txt";
+  {
+    std::ofstream out(path);
+    out << "# a sphere\n0.25 -0.5 1\n";
+  }
+  const ConvexShape s = ConvexShape::from_vertex_file(path, 0.4);
+  ASSERT_TRUE(s.is_sphere());
+  EXPECT_EQ(s.vertices()[0], Vector3d(0.25, -0.5, 1.0));
+  EXPECT_EQ(s.sweep_radius(), 0.4);
+  expect_invalid_argument([&] { ConvexShape::from_vertex_file(path, 0.0); }, "sweep_radius",
+                          "needs sweep_radius > 0");
+  std::remove(path.c_str());
+}
+
+// Drawing: a polyhedron's faces (moved out by r along their normals when swept); a
+// sphere's ball as a latitude–longitude tessellation: B bands × 2B sectors (2B triangles
+// at each pole, 2B (B − 2) quadrilaterals), every vertex at distance r from the centre,
+// every polygon planar and counter-clockwise seen from outside, and the polygons closing
+// into a surface of genus 0 (each directed edge once, its reverse once, V − E + F = 2).
+TEST(ConvexShapeSphere, SurfacePolygons) {
+  const ConvexShape cube = ConvexShape::cube(2.0, 0.25);
+  for (bool swept : {false, true}) {
+    const auto polygons = surface_polygons(cube, swept);
+    ASSERT_EQ(polygons.size(), 6u);
+    for (std::size_t f = 0; f < 6; ++f) {
+      ASSERT_EQ(polygons[f].size(), 4u);
+      const Vector3d& n = cube.faces()[f].normal;
+      for (const Vector3d& p : polygons[f]) EXPECT_NEAR(p.dot(n), swept ? 1.25 : 1.0, 1e-15);
+    }
+  }
+
+  const double r = 0.7;
+  const Vector3d c(1.0, -2.0, 0.5);
+  const ConvexShape ball = ConvexShape::from_points({c}, r);
+  const int B = kSphereDisplayBands;
+  for (bool swept : {false, true}) {
+    const auto polygons = surface_polygons(ball, swept);
+    ASSERT_EQ(static_cast<int>(polygons.size()), 2 * B * B);
+    int triangles = 0;
+    std::set<std::array<double, 3>> corners;
+    std::set<std::pair<std::array<double, 3>, std::array<double, 3>>> directed;
+    const auto key = [](const Vector3d& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
+    for (const auto& polygon : polygons) {
+      const std::size_t m = polygon.size();
+      ASSERT_TRUE(m == 3 || m == 4);
+      triangles += m == 3;
+      Vector3d newell = Vector3d::Zero(), mean = Vector3d::Zero();
+      for (std::size_t k = 0; k < m; ++k) {
+        newell += (polygon[k] - c).cross(polygon[(k + 1) % m] - c);
+        mean += (polygon[k] - c) / static_cast<double>(m);
+        EXPECT_NEAR((polygon[k] - c).norm(), r, 1e-15);
+        corners.insert(key(polygon[k]));
+        EXPECT_TRUE(directed.insert({key(polygon[k]), key(polygon[(k + 1) % m])}).second);
+      }
+      const Vector3d n = newell.normalized();
+      EXPECT_GT(n.dot(mean), 0.0);  // outward
+      for (const Vector3d& p : polygon) EXPECT_NEAR(n.dot(p - c), n.dot(mean), 1e-15);  // planar
+    }
+    EXPECT_EQ(triangles, 4 * B);
+    for (const auto& [a, b] : directed) EXPECT_EQ(directed.count({b, a}), 1u);
+    const long v = static_cast<long>(corners.size()), e = static_cast<long>(directed.size()) / 2;
+    EXPECT_EQ(v, 2 + (B - 1) * 2 * B);
+    EXPECT_EQ(v - e + static_cast<long>(polygons.size()), 2);
+  }
 }

@@ -53,6 +53,19 @@ Eigen::Vector3d sum_of_forces(const ContactList& list, ContactKind kind, long a,
   return sum;
 }
 
+// A sphere (one-vertex grain) of radius r, mass m_s, inertia 2/5 m_s r², at rest at
+// `centre` under gravity.
+GrainState resting_sphere(long tag, int shape, const Eigen::Vector3d& centre, double mass, double radius) {
+  GrainState g;
+  g.tag = tag;
+  g.shape = shape;
+  g.position = centre;
+  g.force = Eigen::Vector3d(0, 0, -mass * kG);
+  g.mass = mass;
+  g.inertia = Eigen::Vector3d::Constant(0.4 * mass * radius * radius);
+  return g;
+}
+
 }  // namespace
 
 TEST(GrainStep, CubeOnTheFloorCarriesItsWeight) {
@@ -97,6 +110,51 @@ TEST(GrainStep, TwoStackedCubesCarryOneAndTwoWeights) {
   // listed from the top down: the interface (z = 1) before the floor (z = 0)
   EXPECT_EQ(r.contacts.records().front().kind, ContactKind::grain_grain);
   EXPECT_EQ(r.contacts.records().back().kind, ContactKind::grain_wall);
+}
+
+TEST(GrainStep, SphereOnTheFloorCarriesItsWeight) {
+  ShapeLibrary library;
+  library.add(ConvexShape::sphere(0.4));
+  const double m = 1.3;
+  GrainImpulseMemory memory;
+  const GrainStepResult r = grain_step({resting_sphere(4, 0, Eigen::Vector3d(0.2, -0.3, 0.4), m, 0.4)}, library,
+                                       {floor_wall()}, kH, tight(), 0, memory);
+  EXPECT_NEAR(r.wall_forces[0].z(), -m * kG, 1e-12);
+  EXPECT_NEAR(r.wall_forces[0].head<2>().norm(), 0.0, 1e-12);
+  EXPECT_LT(r.velocities[0].norm(), 1e-12);
+  EXPECT_LT(r.angular_velocities[0].norm(), 1e-12);
+  EXPECT_LT(r.contact_torques[0].norm(), 1e-12);  // the force goes through the centre
+  ASSERT_EQ(r.contacts.size(), 1u);                // one point, below the centre
+  const ContactRecord& c = r.contacts.records()[0];
+  EXPECT_EQ(c.kind, ContactKind::grain_wall);
+  EXPECT_NEAR((c.point - Eigen::Vector3d(0.2, -0.3, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(c.overlap, 0.0, 1e-15);
+  EXPECT_NEAR((c.force - Eigen::Vector3d(0, 0, m * kG)).norm(), 0.0, 1e-12);
+}
+
+// A sphere (r = 0.3, m_s = 0.7) resting off-centre on a unit cube on the floor: the cube
+// presses on the floor with (m + m_s) g, the sphere on the cube with m_s g.
+TEST(GrainStep, SphereOnACubeOnTheFloor) {
+  ShapeLibrary library;
+  library.add(ConvexShape::cube(1.0, 0.0));
+  library.add(ConvexShape::sphere(0.3));
+  const double m_s = 0.7;
+  GrainImpulseMemory memory;
+  const GrainStepResult r =
+      grain_step({resting_cube(1, 0.5), resting_sphere(2, 1, Eigen::Vector3d(0.1, -0.2, 1.3), m_s, 0.3)}, library,
+                 {floor_wall()}, kH, tight(), 0, memory);
+  EXPECT_NEAR(r.wall_forces[0].z(), -(kMass + m_s) * kG, 1e-11);
+  EXPECT_NEAR(r.wall_forces[0].head<2>().norm(), 0.0, 1e-11);
+  EXPECT_LT(r.velocities[0].norm() + r.velocities[1].norm(), 1e-12);
+  EXPECT_LT(r.angular_velocities[0].norm() + r.angular_velocities[1].norm(), 1e-12);
+  EXPECT_NEAR(r.contact_forces[1].z(), m_s * kG, 1e-11);
+  EXPECT_NEAR(r.contact_forces[0].z(), kMass * kG, 1e-11);
+  const Eigen::Vector3d between = sum_of_forces(r.contacts, ContactKind::grain_grain, 1, 2);
+  EXPECT_NEAR((between - Eigen::Vector3d(0, 0, m_s * kG)).norm(), 0.0, 1e-11);
+  EXPECT_EQ(r.contacts.size(), 5u);  // the sphere's point on the top face, the cube's 4 corners
+  const ContactRecord& top = r.contacts.records().front();
+  EXPECT_EQ(top.kind, ContactKind::grain_grain);
+  EXPECT_NEAR((top.point - Eigen::Vector3d(0.1, -0.2, 1.0)).norm(), 0.0, 1e-14);
 }
 
 TEST(GrainStep, FreeGrainGetsTheFreeVelocity) {

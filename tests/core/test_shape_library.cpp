@@ -67,3 +67,53 @@ TEST(ShapeLibrary, IsotropicShapesKeepTheirAxes) {
   library.add(ConvexShape::regular_octahedron(1.0), &placement);
   EXPECT_NEAR(placement.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-14);
 }
+
+// A sphere in the library: its vertex at the origin, the ball's volume and moments
+// (4π r³/3, 2/5 V r² at density 1), bounding radius r; it survives the round trip
+// through serialize/deserialize with the shapes around it. A library of the sharp
+// model refuses it (no sharp volume), naming "model".
+TEST(ShapeLibrary, SphereRoundTripAndSharpModelRefused) {
+  const double pi = 3.14159265358979323846, r = 0.35;
+  ShapeLibrary library(MassModel::dilated);
+  library.add(ConvexShape::cube(1.0, 0.05));
+  ShapeLibrary::Placement placement;
+  const int index = library.add(ConvexShape::from_points({Eigen::Vector3d(2, -1, 0.5)}, r), &placement);
+  library.add(ConvexShape::sphere(1.5));
+  EXPECT_EQ(index, 1);
+  EXPECT_LT((placement.centroid - Eigen::Vector3d(2, -1, 0.5)).norm(), 1e-15);
+  EXPECT_EQ(placement.rotation.angularDistance(Eigen::Quaterniond::Identity()), 0.0);
+  const double volume = 4.0 / 3.0 * pi * r * r * r;
+  const GrainShape& g = library[index];
+  ASSERT_TRUE(g.shape.is_sphere());
+  EXPECT_EQ(g.shape.vertices()[0], Eigen::Vector3d::Zero());
+  EXPECT_NEAR(g.volume, volume, 1e-15 * volume);
+  for (int d = 0; d < 3; ++d) EXPECT_NEAR(g.unit_inertia[d], 0.4 * volume * r * r, 1e-15 * volume * r * r);
+  EXPECT_EQ(g.bounding_radius, r);
+
+  const std::vector<double> image = library.serialize();
+  const ShapeLibrary copy = ShapeLibrary::deserialize(image);
+  ASSERT_EQ(copy.size(), 3);
+  for (int s = 0; s < 3; ++s) {
+    EXPECT_EQ(copy[s].shape.is_sphere(), s > 0);
+    EXPECT_EQ(copy[s].shape.vertices(), library[s].shape.vertices());
+    EXPECT_EQ(copy[s].shape.faces().size(), library[s].shape.faces().size());
+    EXPECT_EQ(copy[s].shape.sweep_radius(), library[s].shape.sweep_radius());
+    EXPECT_NEAR(copy[s].volume, library[s].volume, 1e-14 * library[s].volume);
+    EXPECT_NEAR((copy[s].unit_inertia - library[s].unit_inertia).norm(), 0.0, 1e-14 * library[s].unit_inertia.norm());
+    EXPECT_EQ(copy[s].bounding_radius, library[s].bounding_radius);
+  }
+  // a one-vertex shape without a radius, or with 2 vertices, is corrupt data
+  std::vector<double> no_radius = {1.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0};
+  EXPECT_THROW(ShapeLibrary::deserialize(no_radius), InvalidArgument);
+  std::vector<double> two = {1.0, 1.0, 0.5, 2.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0};
+  EXPECT_THROW(ShapeLibrary::deserialize(two), InvalidArgument);
+
+  ShapeLibrary sharp(MassModel::sharp_polyhedron);
+  try {
+    sharp.add(ConvexShape::sphere(1.0));
+    ADD_FAILURE() << "a sphere joined a library of the sharp model";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "model");
+  }
+  EXPECT_EQ(sharp.size(), 0);
+}

@@ -183,3 +183,33 @@ TEST_F(WireOnRoundedCube, TheBeadsShareChangesContinuouslyAsTheSegmentTiltsPastT
   }
   EXPECT_LT(largest_jump, 0.03);  // steps of 1e-4 rad; the old rule jumped by 0.5 − 0.25
 }
+
+// A segment lying across the top of a sphere (radius 1 at the origin, a one-vertex
+// grain): the foot of the centre on the axis is x = 0, i.e. t = 0.3/0.8; the normal is
+// +z, the beads share k_n ξ as (1 − t, t), and the force on the grain passes through
+// its centre (no torque).
+TEST(WireOnSphere, SegmentAcrossTheTopIsPushedOutThroughTheCentre) {
+  const double radius = 1.0;
+  const ConvexShape ball = ConvexShape::sphere(radius);
+  const PosedShape grain{ball, Vector3d::Zero(), Eigen::Quaterniond::Identity()};
+  GrainMotion motion;
+  motion.mass = 4.0;
+  WireSegmentState s;
+  const double height = radius + kWireRadius - kOverlap;
+  s.x0 = Vector3d(-0.3, 0.0, height);
+  s.x1 = Vector3d(0.5, 0.0, height);
+  s.m0 = s.m1 = 0.01;
+  s.radius = kWireRadius;
+  TangentialHistory history;
+  const WireGrainContact c = wire_grain_contact(law(), grain, motion, s, 1e-4, history);
+  ASSERT_TRUE(c.touching);
+  EXPECT_NEAR(c.overlap, kOverlap, 1e-14);
+  EXPECT_NEAR((c.normal - Vector3d::UnitZ()).norm(), 0.0, 1e-14);
+  const double fn = 15.7 * kOverlap, t = 0.3 / 0.8;
+  EXPECT_NEAR(c.geometry.t, t, 1e-14);
+  EXPECT_NEAR((c.force_bead0 - Vector3d(0, 0, (1.0 - t) * fn)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.force_bead1 - Vector3d(0, 0, t * fn)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.force_grain - Vector3d(0, 0, -fn)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((c.point - Vector3d(0, 0, radius - 0.5 * kOverlap)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(c.torque_grain.norm(), 0.0, 1e-16);
+}

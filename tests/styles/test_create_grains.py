@@ -161,9 +161,28 @@ def vertex_face(points, vertices, faces, normals, offsets):
     return best
 
 
+def point_core_distance(point, g):
+    """Exact distance of a point (a sphere's core) and a polytope core; -1 if the point is
+    inside (no separating axis among the polytope's face normals: the faces of point − P
+    are P's faces). Outside: the nearest of its edges (ends included) and faces."""
+    v = g.world()
+    normals, offsets = face_planes(v, g.faces)
+    p = np.array([point])
+    if separated_by_axes(p, v, normals) <= 0.0:
+        return -1.0
+    e = np.array(g.edges())
+    return min(point_segment(p, v[e[:, 0]], v[e[:, 1]]).min(), vertex_face(p, v, g.faces, normals, offsets))
+
+
 def core_distance(ga, gb):
     """Exact distance of the two sharp cores; -1 if they intersect (no separating axis
-    among the face normals and edge-edge cross products)."""
+    among the face normals and edge-edge cross products). A sphere's core is its centre
+    (one vertex, no faces)."""
+    if not ga.faces and not gb.faces:
+        return float(np.linalg.norm(ga.world()[0] - gb.world()[0]))
+    if not ga.faces or not gb.faces:
+        point, poly = (ga, gb) if not ga.faces else (gb, ga)
+        return point_core_distance(point.world()[0], poly)
     va, vb = ga.world(), gb.world()
     na, oa = face_planes(va, ga.faces)
     nb, ob = face_planes(vb, gb.faces)
@@ -195,6 +214,10 @@ def segment_core_distance(g, a, b):
     dist = segment_segment(v[e[:, 0]], v[e[:, 1]], a[None, :], b[None, :]).min()
     dist = min(dist, point_segment(v, a[None, :], b[None, :]).min())
     return min(dist, vertex_face(np.array([a, b]), v, g.faces, normals, offsets))
+
+
+def gap_of(a, b):
+    return core_distance(a, b) - a.sweep - b.sweep
 
 
 def gaps(grains):
@@ -398,6 +421,51 @@ create_grains   1 20 random cont seed 4 shape {shape} write_shapes shapes.txt
             self.assertRanCleanly(res)
             self.check_grains(res, 20, self.inside)
 
+    def test_spheres(self):
+        """shape sphere R: one-vertex grains of radius R, mass ρ 4/3 π R³, no overlaps
+        (centres more than 2R apart); then spheres among cubes, the sphere-cube gaps by
+        the point-polytope distance above, the smallest one the gap create_grains reports
+        (over the sphere-cube pairs: spheres whose bounding spheres meet overlap)."""
+        r, rho = 0.6, 2.0
+        res = self.insert(f"""
+region          cont block -7 7 -4 4 0 4
+create_grains   1 150 random cont seed 9 shape sphere {r} density {rho} write_shapes shapes.txt
+""")
+        grains, g = self.check_grains(res, 150, self.inside, density=rho)
+        volume = 4.0 / 3.0 * math.pi * r ** 3
+        for grain in grains:
+            self.assertEqual((grain.shape, grain.n_vertices, grain.n_faces, grain.sweep), (0, 1, 0, r))
+            self.assertEqual(grain.body.tolist(), [[0.0, 0.0, 0.0]])
+            self.assertAlmostEqual(grain.volume / volume, 1.0, delta=1e-15)
+        np.testing.assert_allclose(read_dump(res.path("dump.g"))["mass"], rho * volume, rtol=1e-15)
+        centres = np.array([grain.x for grain in grains])
+        apart = np.linalg.norm(centres[:, None, :] - centres[None, :, :], axis=2)[np.triu_indices(150, 1)]
+        self.assertGreater(apart.min(), 2 * r)
+        # a sphere's bounding sphere is the sphere: bounding spheres that meet overlap, so
+        # no placed pair is a close pair
+        self.assertEqual(len(g), 0)
+        self.assertIsNone(reported(res.output))
+        self.assertIn("create_grains: no close pairs (bounding spheres apart)", res.output)
+        print(f"\n150 spheres: smallest gap {apart.min() - 2 * r:.6g} (centre distance - 2R)")
+
+        res = self.insert("""
+region          cont block -7 7 -4 4 0 4
+create_grains   1 30 random cont seed 3 shape cube 1.0 sweep 0.1 write_shapes first.txt
+create_grains   1 40 random cont seed 4 shape sphere 0.5 write_shapes shapes.txt
+""")
+        spheres, _ = self.check_grains(res, 40, self.inside)
+        cubes = read_shapes(res.path("first.txt"))
+        self.assertEqual({grain.shape for grain in spheres}, {1})
+        mixed = [gap_of(c, s) for c in cubes for s in spheres
+                 if np.linalg.norm(c.x - s.x) <= c.bounding_radius() + s.bounding_radius()]
+        both = gaps(spheres).tolist() + mixed
+        self.assertGreater(len(mixed), 10)
+        self.assertTrue(np.all(np.array(both) > 0.0))
+        gap, pairs = reported(res.output)
+        self.assertEqual(pairs, len(both))
+        self.assertAlmostEqual(gap / min(both), 1.0, delta=1e-9)
+        print(f"40 spheres among 30 cubes: {len(mixed)} close sphere-cube pairs, minimum gap {min(both):.6g}")
+
     def test_avoids_existing_grains(self):
         res = self.insert("""
 region          cont block -7 7 -4 4 0 6
@@ -519,7 +587,17 @@ class Errors(DeckTestCase):
                    "'shape file': cannot open vertex file 'missing.txt'")
         self.check(base + "shape file flat.txt", "'shape file': vertex file 'flat.txt'",
                    files={"flat.txt": "0 0 0\n1 0 0\n0 1 0\n1 1 0\n"})
-        self.check(base + "shape sphere", "unknown shape 'sphere'")
+        self.check(base + "shape cylinder 1", "unknown shape 'cylinder' (ellipsoid, cube, box, tetrahedron, "
+                                              "octahedron, sphere or file)")
+        self.check(base + "shape sphere 0", "value of 'shape sphere' must be > 0, got 0")
+        self.check(base + "shape sphere -0.5", "value of 'shape sphere' must be > 0, got -0.5")
+        self.check(base + "shape sphere 0.5 sweep 0.1",
+                   "keyword 'sweep' does not apply to 'shape sphere' (its radius is the sweep radius)")
+        self.check(base + "shape sphere 0.5", "'shape sphere': a sphere has no sharp mass properties: its core "
+                   "is one point, of zero volume (use the dilated mass model)",
+                   header=HEADER.replace("atom_style      polyhedron", "atom_style      polyhedron mass sharp"))
+        self.check(base + "shape file point.txt sweep 0", "'shape file': one point is a sphere and needs "
+                   "sweep_radius > 0 (its radius), got 0", files={"point.txt": "0.5 0.5 0.5\n"})
         self.check("create_grains 1 10 random cont", "missing keyword 'seed'")
         self.check("create_grains 1 10 random cont seed 0", "value of 'seed' must be a positive integer, got 0")
         self.check(base + "spacing 2", "keyword 'spacing' applies to 'layer' only")

@@ -266,6 +266,36 @@ class PolyhedronVTK(DeckTestCase):
                     np.testing.assert_allclose(offset, offset.mean(), rtol=0, atol=1e-9)
                     self.assertLessEqual(np.max(q @ normal), offset.mean() + 1e-9)
 
+    def test_sphere_grains(self):
+        """Sphere grains (one-vertex shapes) are drawn as their ball, with or without
+        `sweep yes`: 8 bands x 16 sectors = 128 polygons (32 triangles, 96 quadrilaterals,
+        480 points) per grain, every point at the radius from the grain's centre, every
+        polygon planar and counter-clockwise seen from outside."""
+        radius = 0.5
+        deck = DECK.replace(" sweep {sweep}", "")
+        files = {}
+        for options in ("format ascii", "format ascii sweep yes"):
+            text = full_precision(deck.format(n=4, shape=f"shape sphere {radius}", v=VELOCITY, w=OMEGA,
+                                              dt=DT, options=options), "c")
+            r = self.run_ok(text)
+            centres = self.centres(r)
+            n = len(centres)
+            self.assertEqual(n, 4)
+            path = r.path("post/grains_20.vtp")
+            counts, _ = read_vtp(path)
+            self.assertEqual((counts["cells"], counts["points"]), (128 * n, 480 * n))
+            m = Mesh(path)
+            self.assertEqual(sorted(len(f) for f in m.polys), [3] * (32 * n) + [4] * (96 * n))
+            for face, grain in zip(m.polys, m.cell_arrays["id"].astype(int)):
+                p = m.points[face] - centres[grain]
+                np.testing.assert_allclose(np.linalg.norm(p, axis=1), radius, rtol=0, atol=1e-12)
+                normal = newell_normal(p)
+                self.assertGreater(normal @ p.mean(axis=0), 0.0)
+                np.testing.assert_allclose(p @ normal, (p @ normal).mean(), rtol=0, atol=1e-12)
+            with open(path, "rb") as f:
+                files[options] = f.read()
+        self.assertEqual(files["format ascii"], files["format ascii sweep yes"])
+
     def test_series_matches_wire_dump(self):
         """Grains and a wire in one system (atom_style hybrid): both series files list the
         same times, also across a change of time step, so ParaView plays them together."""

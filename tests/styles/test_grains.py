@@ -203,6 +203,52 @@ read_data       g.data
 """, workdir=first.workdir)
         self.assertStopsWith(third, "atom_style polyhedron: Atoms section of data file: shape '")
 
+    def test_sphere_shapes_round_trip(self):
+        """Sphere grains (one vertex, the radius as sweep) through grain_shapes write/read
+        and write_data/read_data: the same file, the same grains, mass ρ 4/3 π R³."""
+        first = run(HEADER + """
+create_grains   1 8 random box seed 77 shape sphere 0.45 density 2.0
+write_data      g.data
+grain_shapes    write g.shapes
+""")
+        self.assertRanCleanly(first)
+        with open(first.path("g.shapes")) as f:
+            text = f.read()
+        self.assertEqual(text, "wiregrain shapes 1 mass dilated\nshape 0 sweep 0.45000000000000001 vertices 1\n0 0 0\n")
+        second = run("""
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+grain_shapes    read g.shapes
+read_data       g.data
+write_data      g2.data
+grain_shapes    write g2.shapes
+dump            d all custom 1 dump.g id mass
+dump_modify     d format "%d %.17g"
+run             0
+""", workdir=first.workdir)
+        self.assertRanCleanly(second)
+        with open(first.path("g2.shapes")) as f:
+            self.assertEqual(f.read(), text)
+
+        def atoms(name):
+            with open(first.path(name)) as f:
+                lines = f.read().splitlines()
+            k = lines.index("Atoms # polyhedron") if "Atoms # polyhedron" in lines else next(
+                i for i, l in enumerate(lines) if l.startswith("Atoms"))
+            rows = []
+            for line in lines[k + 2:]:
+                if not line.strip():
+                    break
+                rows.append([float(w) for w in line.split()])
+            return np.array(sorted(rows))
+        a, b = atoms("g.data"), atoms("g2.data")
+        self.assertEqual(len(a), 8)
+        self.assertLess(np.max(np.abs(a - b)), 1e-14)
+        np.testing.assert_allclose(read_dump(first.path("dump.g"))["mass"], 2.0 * 4 / 3 * math.pi * 0.45 ** 3,
+                                   rtol=1e-15)
+
     def test_one_and_two_ranks_and_restart(self):
         made = spinning_grains()
         self.assertRanCleanly(made)
@@ -250,6 +296,14 @@ class BadInput(DeckTestCase):
                              "fix nve/polyhedron (id a): 1 grains have no shape")
         self.assertStopsWith(run(HEADER + "grain_shapes read nowhere.shapes\n"),
                              "command grain_shapes (id -): cannot open 'nowhere.shapes'")
+        # a one-vertex shape is a sphere and needs a radius; two vertices are no shape
+        point = "wiregrain shapes 1 mass dilated\nshape 0 sweep 0 vertices 1\n0 0 0\n"
+        self.assertStopsWith(run(HEADER + "grain_shapes read p.shapes\n", files={"p.shapes": point}),
+                             "command grain_shapes (id -): 'p.shapes': one point is a sphere and needs "
+                             "sweep_radius > 0 (its radius), got 0")
+        two = "wiregrain shapes 1 mass dilated\nshape 0 sweep 0.5 vertices 2\n0 0 0\n1 0 0\n"
+        self.assertStopsWith(run(HEADER + "grain_shapes read t.shapes\n", files={"t.shapes": two}),
+                             "command grain_shapes (id -): 't.shapes': shape 0 is malformed")
         wire = HEADER.replace("atom_style      polyhedron", "atom_style      wire")
         self.assertStopsWith(run(wire + "fix a all nve/polyhedron\n"),
                              "fix nve/polyhedron (id a): needs atom_style polyhedron")

@@ -351,6 +351,15 @@ double support_value(const PosedShape& p, const Vector3d& n) {
   return h;
 }
 
+// Orthonormal basis (u, w) of the plane ⟂ n (unit) with u × w = n: u = e_k × n / |e_k × n|,
+// e_k the coordinate axis least aligned with n (the first of ties).
+void plane_basis(const Vector3d& n, Vector3d& u, Vector3d& w) {
+  int k = 0;
+  n.cwiseAbs().minCoeff(&k);
+  u = Vector3d::Unit(k).cross(n).normalized();
+  w = n.cross(u);
+}
+
 // ---------------------------------------------------------------------------------------
 // Separating-axis test. depth(n) = h_A(n) + h_B(−n) is, for every unit n, an upper bound
 // of the penetration depth (the distance from the origin to the boundary of A − B when
@@ -363,6 +372,19 @@ struct SatAxis {
   double depth = kInf;
   Vector3d normal = Vector3d::UnitX();  // from A to B
 };
+
+// Two point cores a and b (spheres, or a sphere and a zero-length segment): A − B is the
+// single point a − b and depth(n) = n·(a − b) is least, −|b − a|, along
+// n = (b − a)/|b − a|. Coincident points give depth 0 in every direction; the normal is
+// then +x, a fixed choice (the default normal of CoreDistance).
+SatAxis point_point_axis(const Vector3d& a, const Vector3d& b) {
+  SatAxis axis;
+  const Vector3d d = b - a;
+  const double length = d.norm();
+  axis.depth = -length;
+  if (length > 0.0) axis.normal = d / length;
+  return axis;
+}
 
 // Gauss-map test for edge pairs (Gregorius, "The Separating Axis Test between Convex
 // Polyhedra", GDC 2013): the great arcs a1→a2 of A's edge and c→d = −b1→−b2 of B's
@@ -393,6 +415,11 @@ std::vector<SatEdge> sat_edges(const PosedShape& P, double sign) {
 }
 
 SatAxis sat_polytopes(const PosedShape& A, const PosedShape& B) {
+  // Two spheres: neither core has a face or an edge. A sphere and a polytope need no
+  // special case: their difference is the polytope moved (and reflected), whose faces
+  // are the polytope's, all tried below, and there are no edge pairs.
+  if (A.shape().is_sphere() && B.shape().is_sphere())
+    return point_point_axis(A.vertices()[0], B.vertices()[0]);
   SatAxis best;
   const auto consider = [&best](double depth, const Vector3d& n) {
     if (depth < best.depth) {
@@ -439,8 +466,19 @@ double segment_support(const std::array<Vector3d, 2>& end, const Vector3d& n) {
 
 // The same for a polytope P (as A) and a segment S (as B): the faces of P − S are the
 // faces of P and the products of an edge of P with the segment, for the edges whose arc
-// crosses the great circle ⟂ S (S has no faces).
-SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end) {
+// crosses the great circle ⟂ S (S has no faces). size: the configuration's, as for GJK.
+//
+// A sphere (core: the point c) has neither faces nor edges: P − S is the segment c − S.
+// Its candidate axes ⟂ S give depth(n) = n·(c − end0), least, −(distance of c from the
+// axis line), along the direction from c to its foot on the line. When the line passes
+// through c (within the rounding of GJK's origin test, kGjkOrigin × size, below which
+// that direction is noise) every ⟂ direction gives depth 0: the normal is then u of
+// plane_basis(S/|S|), a fixed unit vector ⟂ S, and the overlap finite,
+// r_grain + wire_radius. The end caps (axes ±S) need no candidate: a centre beyond an
+// end is either within rounding of it or nearly touching, where segment_contact keeps
+// GJK's direction when it separates more. A zero-length segment is a point:
+// point_point_axis.
+SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end, double size) {
   SatAxis best;
   const auto consider = [&best](double depth, const Vector3d& n) {
     if (depth < best.depth) {
@@ -448,6 +486,25 @@ SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end) {
       best.normal = n;
     }
   };
+  if (P.shape().is_sphere()) {
+    const Vector3d& c = P.vertices()[0];
+    const Vector3d s = end[1] - end[0];
+    const double length = s.norm();
+    if (!(length > 0.0)) return point_point_axis(c, end[0]);
+    const Vector3d along = s / length;
+    const Vector3d to_line = (end[0] - c) - along.dot(end[0] - c) * along;  // ⟂ S
+    const double off_line = to_line.norm();
+    SatAxis axis;
+    if (off_line > kGjkOrigin * size) {
+      axis.depth = -off_line;
+      axis.normal = to_line / off_line;
+    } else {
+      Vector3d w;
+      plane_basis(along, axis.normal, w);
+      axis.depth = 0.0;
+    }
+    return axis;
+  }
   for (std::size_t f = 0; f < P.face_normals().size(); ++f) {
     const Vector3d& n = P.face_normals()[f];
     consider(P.face_offsets()[f] + segment_support(end, -n), n);
@@ -529,14 +586,6 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
     if (best_edge >= 0 && best_sin <= sin_tol) return {FeatureKind::edge, best_edge};
   }
   return {FeatureKind::vertex, v};
-}
-
-// Orthonormal basis (u, w) of the plane ⟂ n with u × w = n.
-void plane_basis(const Vector3d& n, Vector3d& u, Vector3d& w) {
-  int k = 0;
-  n.cwiseAbs().minCoeff(&k);
-  u = Vector3d::Unit(k).cross(n).normalized();
-  w = n.cross(u);
 }
 
 // The contact plane: 2D coordinates ⟂ n about an origin.
@@ -1091,7 +1140,7 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
     out.distance = g.distance;
     n = (g.point_b - g.point_a) / g.distance;
   } else {
-    const SatAxis axis = sat_segment(grain, S.end);
+    const SatAxis axis = sat_segment(grain, S.end, size);
     n = axis.normal;
     if (g.touching) {
       out.method = DistanceMethod::sat;

@@ -33,6 +33,15 @@
 //     Each point gets its own gap measured along n (exact for every point, also for a
 //     feature that is parallel only within the tolerance).
 //
+// Spheres (ConvexShape::is_sphere(): the core is one point, no edges, no faces) go
+// through the same code: their support point is the centre, their contact feature the
+// vertex, so every manifold with a sphere has one point. Where the SAT would need a
+// face of the sphere (details in contact_geometry.cpp, docs/core_contact.md):
+//   - sphere–polytope: the polytope's faces are the whole candidate set (exact);
+//   - sphere–sphere with coincident centres: depth 0, normal +x (fixed choice);
+//   - segment through a sphere's centre: depth 0, the normal a fixed unit vector ⟂ the
+//     segment (u of plane_basis: e_k × s/|s|, e_k the axis least aligned with s).
+//
 // Inputs are checked (InvalidArgument, argument() names the C++ parameter): non-finite
 // positions or orientations, zero quaternions, negative radii, bad options.
 #pragma once

@@ -106,13 +106,26 @@ Moments polyhedron_moments(const std::vector<Vector3d>& vertices,
 
 ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double sweep_radius) {
   require_nonnegative("sweep_radius", sweep_radius);
-  if (points.size() < 4)
-    throw InvalidArgument("points", "a convex polyhedron needs at least 4 points, got " +
-                                        std::to_string(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!points[i].allFinite())
       throw InvalidArgument("points", "point " + std::to_string(i) +
                                           " has a non-finite coordinate");
+  // One point: its hull is the point, and the grain the sphere of radius sweep_radius
+  // about it (one vertex, no edges, no faces).
+  if (points.size() == 1) {
+    if (!(sweep_radius > 0.0))
+      throw InvalidArgument("sweep_radius",
+                            "one point is a sphere and needs sweep_radius > 0 (its radius), got " +
+                                format_number(sweep_radius));
+    ConvexShape shape;
+    shape.vertices_ = points;
+    shape.sweep_radius_ = sweep_radius;
+    return shape;
+  }
+  if (points.size() < 4)
+    throw InvalidArgument("points", "a convex polyhedron needs at least 4 points, got " +
+                                        std::to_string(points.size()) +
+                                        " (one point with sweep_radius > 0 makes a sphere)");
 
   // size of the cloud: diagonal of its bounding box
   Vector3d lo = points[0], hi = points[0];
@@ -454,6 +467,11 @@ ConvexShape ConvexShape::random_ellipsoid(std::uint64_t seed, int n_vertices, do
   return random_ellipsoid(rng, n_vertices, a, b_over_a, c_over_a, sweep_radius);
 }
 
+ConvexShape ConvexShape::sphere(double radius) {
+  require_positive("radius", radius);
+  return from_points({Vector3d::Zero()}, radius);
+}
+
 ConvexShape ConvexShape::box(double lx, double ly, double lz, double sweep_radius) {
   require_positive("lx", lx);
   require_positive("ly", ly);
@@ -543,6 +561,10 @@ ConvexShape ConvexShape::transformed(const Matrix3d& rotation, const Vector3d& t
 
 MassProperties ConvexShape::sharp_mass_properties(double density) const {
   require_positive("density", density);
+  if (is_sphere())
+    throw InvalidArgument("model",
+                          "a sphere has no sharp mass properties: its core is one point, of zero "
+                          "volume (use the dilated mass model)");
   Vector3d reference = Vector3d::Zero();
   for (const auto& v : vertices_) reference += v;
   reference /= static_cast<double>(vertices_.size());
@@ -652,9 +674,11 @@ MassProperties ConvexShape::dilated_mass_properties(double density) const {
     sector_second[j] += flat_sector_first * e.transpose();
   }
 
-  // vertex sectors: volume element ρ² dρ dΩ
+  // vertex sectors: volume element ρ² dρ dΩ. The lone vertex of a sphere has no faces and
+  // its normal cone is the whole unit sphere: |Ω| = 4π, M1 = 0, M2 = 4π/3 · 1, so the
+  // sector is the ball, V = 4π r³/3, ∫ x xᵀ = 4π r⁵/15 · 1, I = 8π ρ r⁵/15 = 2/5 m r².
   for (std::size_t v = 0; v < vertices_.size(); ++v) {
-    const double solid_angle = 2.0 * kPi - face_angle_sum[v];
+    const double solid_angle = is_sphere() ? 4.0 * kPi : 2.0 * kPi - face_angle_sum[v];
     Matrix3d m2 = solid_angle / 3.0 * Matrix3d::Identity() + sector_second[v];
     m2 = 0.5 * (m2 + m2.transpose());
     const Vector3d& m1 = sector_first[v];
@@ -670,6 +694,53 @@ MassProperties ConvexShape::dilated_mass_properties(double density) const {
 MassProperties ConvexShape::mass_properties(double density, MassModel model) const {
   return model == MassModel::dilated ? dilated_mass_properties(density)
                                      : sharp_mass_properties(density);
+}
+
+// ---------------------------------------------------------------------------------------
+// Drawing
+
+std::vector<std::vector<Vector3d>> surface_polygons(const ConvexShape& shape, bool swept) {
+  std::vector<std::vector<Vector3d>> out;
+  const double r = shape.sweep_radius();
+  if (!shape.is_sphere()) {
+    out.reserve(shape.faces().size());
+    for (const auto& face : shape.faces()) {
+      const Vector3d shift = (swept ? r : 0.0) * face.normal;
+      std::vector<Vector3d> polygon;
+      polygon.reserve(face.vertices.size());
+      for (int v : face.vertices) polygon.push_back(shape.vertices()[v] + shift);
+      out.push_back(std::move(polygon));
+    }
+    return out;
+  }
+  // Ring i (polar angle θ_i = π i / B, i = 0..B; rings 0 and B are the poles), sector j
+  // (azimuth φ_j = 2π j / S, S = 2B): c + r (sin θ cos φ, sin θ sin φ, cos θ). Each
+  // vertex is computed once, so neighbouring polygons share it bit for bit. The loop
+  // (i, j), (i+1, j), (i+1, j+1), (i, j+1) runs down, east, up: counter-clockwise seen
+  // from outside (at φ = 0 the edges −z then +y give the outward normal +x).
+  const int bands = kSphereDisplayBands, sectors = 2 * kSphereDisplayBands;
+  const Vector3d& c = shape.vertices()[0];
+  std::vector<std::vector<Vector3d>> ring(bands + 1, std::vector<Vector3d>(sectors));
+  for (int i = 0; i <= bands; ++i) {
+    const double theta = kPi * i / bands;
+    const double sin_t = i == bands ? 0.0 : std::sin(theta), cos_t = i == bands ? -1.0 : std::cos(theta);
+    for (int j = 0; j < sectors; ++j) {
+      const double phi = 2.0 * kPi * j / sectors;
+      ring[i][j] = c + r * Vector3d(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+    }
+  }
+  out.reserve(static_cast<std::size_t>(bands) * sectors);
+  for (int i = 0; i < bands; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const int k = (j + 1) % sectors;
+      if (i == 0)
+        out.push_back({ring[0][0], ring[1][j], ring[1][k]});
+      else if (i == bands - 1)
+        out.push_back({ring[i][j], ring[bands][0], ring[i][k]});
+      else
+        out.push_back({ring[i][j], ring[i + 1][j], ring[i + 1][k], ring[i][k]});
+    }
+  return out;
 }
 
 PrincipalAxes principal_axes(const Matrix3d& inertia) {

@@ -18,6 +18,11 @@
 //     vertex (the Steiner decomposition of a convex body's parallel set).
 // Which one a simulation uses is the caller's choice; the difference is O(r·area/volume).
 //
+// A sphere is the spheropolyhedron whose core is one point: one vertex, no edges, no
+// faces, sweep radius = the sphere's radius > 0 (ConvexShape::sphere, or from_points
+// with one point). Its dilated mass properties are the ball's; it has no sharp volume,
+// so its sharp mass properties are refused (InvalidArgument "model").
+//
 // Input errors throw wiregrain::InvalidArgument whose argument() is the C++ parameter name
 // below (n_vertices, a, b_over_a, c_over_a, sweep_radius, points, path, edge, ...).
 #pragma once
@@ -59,12 +64,20 @@ class ConvexShape {
     double offset = 0.0;        // plane: normal · x = offset
   };
 
-  // Convex hull (CGAL, exact predicates) of at least 4 points that span a volume.
-  // Rejects: fewer than 4 points, two points closer than 1e-10 times the size of the
+  // Convex hull (CGAL, exact predicates) of at least 4 points that span a volume, or
+  // of exactly one point: the sphere of radius sweep_radius centred there (the hull of
+  // one point is that point; its vertex keeps its coordinates).
+  // Rejects: 2 or 3 points, two points closer than 1e-10 times the size of the
   // point cloud (duplicates), all points within 1e-10 times that size of one plane
-  // (flat or collinear: zero volume), non-finite coordinates, sweep_radius < 0.
+  // (flat or collinear: zero volume), non-finite coordinates, sweep_radius < 0, and
+  // sweep_radius = 0 for one point (argument "sweep_radius").
   static ConvexShape from_points(const std::vector<Eigen::Vector3d>& points,
                                  double sweep_radius);
+
+  // The sphere of the given radius centred at the origin: one vertex at the origin, no
+  // edges, no faces, sweep radius = radius. Rejects radius <= 0 or not finite
+  // (argument "radius").
+  static ConvexShape sphere(double radius);
 
   // Convex hull of n_vertices random points on the surface of the ellipsoid with
   // semi-axes a ≥ b ≥ c along x, y, z (b = b_over_a·a, c = c_over_a·a). Each point is a
@@ -97,6 +110,8 @@ class ConvexShape {
   const std::vector<std::array<int, 2>>& edges() const { return edges_; }
   const std::vector<Face>& faces() const { return faces_; }
   double sweep_radius() const { return sweep_radius_; }
+  // True for a sphere: the core is one point (one vertex, no edges, no faces).
+  bool is_sphere() const { return faces_.empty(); }
   // max |v| over the vertices plus the sweep radius: the radius of a sphere about the
   // frame origin that contains the grain (about the centroid once in the body frame).
   double bounding_radius() const;
@@ -109,13 +124,17 @@ class ConvexShape {
   // Exact mass properties of the polyhedron P (no dilation) for a uniform density:
   // divergence theorem on signed tetrahedra (reference point, face-fan triangle), with
   // ∫_T x xᵀ dV = V_T/20 (Σ_k v_k v_kᵀ + s sᵀ), s = Σ_k v_k, over the 4 vertices of T.
+  // A sphere's core is a point of zero volume: InvalidArgument("model", ...) (use the
+  // dilated model).
   MassProperties sharp_mass_properties(double density) const;
 
   // Exact mass properties of the spheropolyhedron P ⊕ B_r. Its volume is Steiner's
   // V_r = V + S r + (r²/2) Σ_edges L_e α_e + (4π/3) r³ (α_e: angle between the normals
-  // of the edge's two faces). See convex_shape.cpp for the pieces' moments.
+  // of the edge's two faces). See convex_shape.cpp for the pieces' moments. For a
+  // sphere: the ball, V = 4π r³/3, inertia 2/5 m r² about its centre.
   MassProperties dilated_mass_properties(double density) const;
 
+  // InvalidArgument("model", ...) for the sharp model of a sphere (see above).
   MassProperties mass_properties(double density, MassModel model) const;
 
  private:
@@ -130,6 +149,17 @@ class ConvexShape {
   std::vector<Face> faces_;
   double sweep_radius_ = 0.0;
 };
+
+// Polygons that draw a grain (body frame; each convex, counter-clockwise seen from
+// outside), for output such as dump polyhedron/vtk:
+//   - a polyhedral core: its faces, each moved out along its normal by the sweep radius
+//     when `swept` (the spheropolyhedron's flat faces; edges and corners not rounded);
+//   - a sphere, whatever `swept` (its point core alone draws nothing): the ball of radius
+//     r tessellated along latitudes and longitudes, kSphereDisplayBands bands of polar
+//     angle π/kSphereDisplayBands times 2·kSphereDisplayBands sectors, triangles at the
+//     poles and planar quadrilaterals between, every vertex on the sphere.
+constexpr int kSphereDisplayBands = 8;
+std::vector<std::vector<Eigen::Vector3d>> surface_polygons(const ConvexShape& shape, bool swept);
 
 // Principal moments (ascending) and right-handed principal axes of an inertia tensor
 // (Eigen::SelfAdjointEigenSolver).

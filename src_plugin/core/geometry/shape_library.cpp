@@ -45,7 +45,8 @@ ShapeLibrary ShapeLibrary::deserialize(const std::vector<double>& data) {
     if (k + 2 > data.size()) fail();
     const double sweep = data[k++];
     const long n = std::lround(data[k++]);
-    if (n < 4 || k + 3 * std::size_t(n) > data.size()) fail();
+    // one vertex (a sphere) or a hull of at least 4
+    if ((n != 1 && n < 4) || k + 3 * std::size_t(n) > data.size()) fail();
     std::vector<Eigen::Vector3d> vertices;
     for (long v = 0; v < n; ++v, k += 3) vertices.emplace_back(data[k], data[k + 1], data[k + 2]);
     library.append_body_frame(ConvexShape::from_points(vertices, sweep));

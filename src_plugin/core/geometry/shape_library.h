@@ -26,7 +26,9 @@ class ShapeLibrary {
 
   // Adds a shape given in any frame. Returns its index; `placement`, if given, receives
   // the rotation body frame → given frame and the centroid in the given frame, so a grain
-  // placed with that orientation and position reproduces the input exactly.
+  // placed with that orientation and position reproduces the input exactly. A sphere
+  // cannot join a library of the sharp model (it has no sharp volume):
+  // InvalidArgument("model", ...).
   struct Placement {
     Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -39,7 +41,8 @@ class ShapeLibrary {
 
   // A flat image for restart files and broadcasts: [model, count, then per shape: sweep
   // radius, vertex count, x y z of each body-frame vertex]. deserialize() rebuilds the same
-  // library (same vertices, faces from the same hull, same mass properties).
+  // library (same vertices, faces from the same hull, same mass properties); a sphere is
+  // its one vertex and its radius (ConvexShape::from_points with one point).
   std::vector<double> serialize() const;
   static ShapeLibrary deserialize(const std::vector<double>& data);
 
