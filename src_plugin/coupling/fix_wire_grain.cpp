@@ -86,7 +86,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
 
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 7;
+  size_vector = 8;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -287,6 +287,7 @@ void FixWireGrain::evaluate(bool setup) {
         }
         loads.add(grain_tag, c.force_grain, c.torque_grain);
         local_stats_[0] += 1.0;
+        if (c.sliding) local_stats_[4] += 1.0;
         local_stats_[1] = std::max(local_stats_[1], c.overlap);
         local_stats_[2] = std::max(local_stats_[2], c.overlap / radius[i]);
         wiregrain::ContactRecord record;
@@ -356,14 +357,15 @@ void FixWireGrain::apply_grain_loads(const wiregrain::GrainLoadSums &loads, int 
 
 double FixWireGrain::compute_vector(int k) {
   if (stats_step_ != update->ntimestep) {
-    double sums[2] = {local_stats_[0], local_stats_[3]}, total[2], extremes[2];
-    MPI_Allreduce(sums, total, 2, MPI_DOUBLE, MPI_SUM, world);
+    double sums[3] = {local_stats_[0], local_stats_[3], local_stats_[4]}, total[3], extremes[2];
+    MPI_Allreduce(sums, total, 3, MPI_DOUBLE, MPI_SUM, world);
     MPI_Allreduce(local_stats_ + 1, extremes, 2, MPI_DOUBLE, MPI_MAX, world);
     global_stats_[0] = total[0];
     global_stats_[1] = extremes[0];
     global_stats_[2] = extremes[1];
     for (int e = 0; e < 3; e++) global_stats_[3 + e] = average_force_[e];
     global_stats_[6] = total[1];
+    global_stats_[7] = total[2];
     stats_step_ = update->ntimestep;
   }
   return global_stats_[k];

@@ -27,7 +27,7 @@
 
    Outputs: vector [contacts, largest overlap, largest overlap / r_w, force of the wire on
    the grains averaged over the last NSCD step (x, y, z), exact segment–grain evaluations
-   of the step]; per-atom array (6): beads: force from the grains this step (3), 0 0 0;
+   of the step, contacts sliding (on the Coulomb limit)]; per-atom array (6): beads: force from the grains this step (3), 0 0 0;
    grains: force and torque from the wire averaged over the last NSCD step. Publishes its
    contacts (kind wire_grain, a = the segment's first bead, b = the grain). */
 
@@ -99,8 +99,8 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
   double **output_;              // per-atom array (see above)
   int nmax_ghost_;
-  double local_stats_[4];        // contacts, overlap, overlap / r_w, evaluations
-  double global_stats_[7];
+  double local_stats_[5];        // contacts, overlap, overlap / r_w, evaluations, sliding contacts
+  double global_stats_[8];
   double average_force_[3];      // on all grains, last NSCD step
   bigint stats_step_;
 

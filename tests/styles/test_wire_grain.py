@@ -16,20 +16,22 @@ atom_modify     map array sort 0 0.0
 """
 
 
-def scene(grains, wires, shape="cube 2", sweep=0.1, density=1.0, box=(-6, 6, -6, 6, -1, 8), boundary="f f f"):
+def scene(grains, wires, shape="cube 2", sweep=0.1, density=1.0, box=(-6, 6, -6, 6, -1, 8), boundary="f f f",
+          files=None):
     """A data file (scene.data + scene.shapes) with len(grains) grains of one shape at the
     given poses [(x, y, z, qw, qi, qj, qk)] (atom type 1) and the wires of the
-    `create_wire 2 ...` argument strings `wires` (atom type 2)."""
+    `create_wire 2 ...` argument strings `wires` (atom type 2); `files` {name: text} are
+    written next to the deck first (polylines)."""
     lines = "\n".join(f"create_wire     2 {w}" for w in wires)
     made = run(HEADER + f"""
 boundary        {boundary}
 region          box block {' '.join(map(str, box))}
 create_box      2 box
-create_grains   1 {len(grains)} random box seed 7 shape {shape} sweep {sweep} density {density}
+create_grains   1 {len(grains)} random box seed 7 shape {shape} {"" if sweep is None else f"sweep {sweep}"} density {density}
 {lines}
 write_data      scene.data
 grain_shapes    write scene.shapes
-""")
+""", files=files)
     if made.returncode != 0:
         raise AssertionError(made.output[-3000:])
     with open(made.path("scene.data")) as f:
@@ -347,6 +349,112 @@ fix wg all wire/grain all
 """
         self.assertStopsWith(run(text), "fix wire/grain (id wg): needs atom_style hybrid with wire and polyhedron, "
                                         "not 'wire'")
+
+
+class Capstan(DeckTestCase):
+    """A wire wrapped over a fixed sphere (radius 1, a one-vertex grain 10⁶ times heavier
+    than the wire, no gravity), bending stiffness off (m_rot 0: the ideal string of the
+    capstan equation), held by T₁ at one end while the other end's pull T₂ is raised
+    slowly from T₁: the whole arc slides (every contact on the Coulomb limit) when
+    T₂/T₁ = e^{μθ} (Euler–Eytelwein). The wire is a polygon of 64 segments per π of
+    arc, touching the sphere at their middles; its discrete ratio differs from e^{μθ}
+    by O(μ β²) with β = π/64 (1e-4), well inside the 2 % asked."""
+
+    MU = 0.5
+    RADIUS = 1.0
+    WIRE_RADIUS = 0.02
+    K_PER_PI = 64
+    LEG = 10          # segments per straight leg
+    T1 = 1e-3
+
+    def polyline(self, wrap):
+        # beads on the arc at radius ρ_b = ρ / cos(β/2), so that every chord touches the
+        # sphere (ρ = R + r_w) at its middle; legs tangent to the arc's ends
+        beta = np.pi / self.K_PER_PI
+        rho = self.RADIUS + self.WIRE_RADIUS
+        rho_b = rho / np.cos(beta / 2)
+        chord = 2 * rho_b * np.sin(beta / 2)
+        k = int(round(wrap / beta))
+        start = np.pi if wrap > 2 else np.pi / 2
+        arc = [(rho_b * np.cos(start - j * beta), rho_b * np.sin(start - j * beta)) for j in range(k + 1)]
+        x0, z0 = arc[0]
+        tangent0 = np.array([np.sin(start), -np.cos(start)])          # into the arc at its start
+        first = [(x0 - j * chord * tangent0[0], z0 - j * chord * tangent0[1]) for j in range(self.LEG, 0, -1)]
+        x1, z1 = arc[-1]
+        end = start - k * beta
+        tangent1 = np.array([np.sin(end), -np.cos(end)])              # along the arc at its end
+        last = [(x1 + j * chord * tangent1[0], z1 + j * chord * tangent1[1]) for j in range(1, self.LEG + 1)]
+        points = first + arc + last
+        return "\n".join(f"{x!r} 0.0 {z!r}" for x, z in points) + "\n", chord, tangent0, tangent1
+
+    def slip_ratio(self, wrap):
+        text, chord, tangent0, tangent1 = self.polyline(wrap)
+        made = scene([(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)],
+                     [f"polyline wire.txt segment {chord!r} radius {self.WIRE_RADIUS}"],
+                     shape=f"sphere {self.RADIUS}", sweep=None, density=1e6, box=(-3, 3, -3, 3, -3, 3),
+                     files={"wire.txt": text})
+        target = np.exp(self.MU * wrap)
+        # T₂/T₁ rises from 1 to 0.8 e^{μθ} in 2 time units (a first run), then by
+        # 0.4 e^{μθ} in 10 (a second run, whose thermo table is read)
+        fast, slow = 0.8 * target - 1.0, 0.4 * target / 10.0
+        arc_segments = int(round(wrap / (np.pi / self.K_PER_PI)))
+        t1 = self.T1
+        # T₁ pulls the first bead (atom 2: the grain is atom 1) back along the first leg,
+        # T₂ pulls the last bead on along the last
+        r = run(deck(f"""
+variable        last equal count(all)
+group           pulled1 id 2
+group           pulled2 id ${{last}}
+fix             elastic wire wire/elastic m_rot 0
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra
+fix             wg wire wire/grain grains mu_s {self.MU} mu_d {self.MU}
+fix             calm wire viscous 0.0002
+timestep        1e-4
+variable        ratio equal 1.0+{fast!r}*0.5*step*dt
+variable        f1x equal {-t1 * tangent0[0]!r}
+variable        f1z equal {-t1 * tangent0[1]!r}
+variable        f2x equal {t1 * tangent1[0]!r}*v_ratio
+variable        f2z equal {t1 * tangent1[1]!r}*v_ratio
+fix             hold pulled1 addforce v_f1x 0.0 v_f1z
+fix             pull pulled2 addforce v_f2x 0.0 v_f2z
+compute         x1 pulled1 reduce max x
+compute         z1 pulled1 reduce max z
+thermo_style    custom step v_ratio f_wg[1] f_wg[8] c_x1 c_z1
+thermo_modify   format float %.10g
+thermo          100
+run             20000
+variable        ratio equal {0.8 * target!r}+{slow!r}*(step*dt-2.0)
+run             100000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        self.assertTrue("1 atoms in group pulled2" in r.output, "the last bead was not found")
+        t = r.thermo()
+        contacts, sliding = t["wg[1]"], t["wg[8]"]
+        self.assertGreaterEqual(np.median(contacts), arc_segments - 1)
+        # gross slip: from here to the end every contact slides (the settling in the first
+        # run slid everywhere too, as the loaded wire stretched over the sphere)
+        sticking = np.nonzero(sliding < contacts)[0]
+        self.assertTrue(len(sticking) and sticking[-1] + 1 < len(sliding), "no gross slip")
+        onset = sticking[-1] + 1
+        ratio = t["ratio"][onset]
+        # the held end starts to move with the arc: 1e-5 beyond its settled position
+        settled = onset // 2
+        end = np.hypot(t["x1"][settled:] - t["x1"][settled], t["z1"][settled:] - t["z1"][settled])
+        moved = t["ratio"][settled + np.argmax(end > 1e-5)]
+        print(f"\ncapstan θ = {wrap:.4f}: all {contacts[onset]:.0f} contacts slide from T2/T1 = {ratio:.4f}, the held "
+              f"end moves from {moved:.4f}; e^(μθ) = {target:.4f} ({ratio / target - 1:+.2%}, {moved / target - 1:+.2%})")
+        return ratio, moved, target
+
+    def test_half_turn(self):
+        ratio, moved, target = self.slip_ratio(np.pi)
+        self.assertAlmostEqual(ratio / target, 1.0, delta=0.02)
+        self.assertAlmostEqual(moved / target, 1.0, delta=0.02)
+
+    def test_quarter_turn(self):
+        ratio, moved, target = self.slip_ratio(np.pi / 2)
+        self.assertAlmostEqual(ratio / target, 1.0, delta=0.02)
+        self.assertAlmostEqual(moved / target, 1.0, delta=0.02)
 
 
 if __name__ == "__main__":
