@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Core>
@@ -123,6 +124,12 @@ int FixWireGrain::setmask() { return PRE_FORCE | POST_FORCE; }
 
 void FixWireGrain::fail(const std::string &what) { wiregrain_lmp::style_error(error, "fix", "wire/grain", id, what); }
 
+// for a condition found on one rank only (error->one: the others need not take part)
+void FixWireGrain::fail_one(const std::string &what) {
+  error->one(FLERR, ("fix wire/grain (id " + std::string(id) + "): " + what).c_str());
+  throw std::logic_error(what);  // not reached
+}
+
 // The groups (beads that are not grains; grains with a shape, all integrated by one
 // fix nscd/polyhedra), the moduli per type pair and the segment reach.
 void FixWireGrain::init() {
@@ -232,11 +239,44 @@ void FixWireGrain::hold_grains() {
   held_version_ = nscd_->pose_version();
 }
 
-// One sub-step: every owned segment against the held grains within reach.
+// The segment from owned bead i to its next bead j (the image nearest to i).
+wiregrain::WireSegmentState FixWireGrain::segment_of(int i, int j) const {
+  double **x = atom->x, **v = atom->v;
+  double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+  domain->minimum_image(d);
+  wiregrain::WireSegmentState segment;
+  segment.x0 = vec(x[i]);
+  segment.x1 = segment.x0 + vec(d);
+  segment.v0 = vec(v[i]);
+  segment.v1 = vec(v[j]);
+  segment.m0 = atom->rmass[i];
+  segment.m1 = atom->rmass[j];
+  segment.radius = atom->radius[i];
+  return segment;
+}
+
+// Statistics and the published record of a touching pair (segment from bead i).
+void FixWireGrain::record_contact(const wiregrain::WireGrainContact &c, int i, long grain_tag) {
+  local_stats_[0] += 1.0;
+  if (c.sliding) local_stats_[4] += 1.0;
+  local_stats_[1] = std::max(local_stats_[1], c.overlap);
+  local_stats_[2] = std::max(local_stats_[2], c.overlap / atom->radius[i]);
+  wiregrain::ContactRecord record;
+  record.kind = wiregrain::ContactKind::wire_grain;
+  record.a = atom->tag[i];
+  record.b = grain_tag;
+  record.point = c.point;
+  record.normal = -c.normal;  // from a (the wire) to b (the grain)
+  record.force = c.force_grain;
+  record.overlap = c.overlap;
+  record.status = c.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+  core_->contacts.add(record);
+}
+
+// One sub-step: every owned segment against the held grains within reach. Bead forces
+// go to bead_force_ (ghosts included), grain loads to `loads`.
 void FixWireGrain::evaluate(bool setup) {
-  double **x = atom->x, **v = atom->v, **f = atom->f;
   const int *mask = atom->mask, *tag = atom->tag, *type = atom->type, *next = wire_->wire_next;
-  const double *radius = atom->radius, *rmass = atom->rmass, *rest = wire_->wire_rest;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost, ntypes = atom->ntypes;
   if (nall > nmax_ghost_) {
     nmax_ghost_ = atom->nmax;
@@ -249,6 +289,7 @@ void FixWireGrain::evaluate(bool setup) {
   wiregrain::GrainLoadSums &loads = setup ? step_loads : core_->sums;
   core_->contacts.clear();
   for (double &s : local_stats_) s = 0.0;
+  stats_step_ = -1;
   long evaluations = 0;
   const double dt = setup ? 0.0 : update->dt;  // the setup call does not advance the springs
 
@@ -257,24 +298,15 @@ void FixWireGrain::evaluate(bool setup) {
     if (!(mask[i] & groupbit) || !next[i]) continue;
     const int j = atom->map(next[i]);
     if (j < 0)
-      fail("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
-           ", which is neither owned nor a ghost here");
-    double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-    domain->minimum_image(d);
-    wiregrain::WireSegmentState segment;
-    segment.x0 = vec(x[i]);
-    segment.x1 = segment.x0 + vec(d);
-    segment.v0 = vec(v[i]);
-    segment.v1 = vec(v[j]);
-    segment.m0 = rmass[i];
-    segment.m1 = rmass[j];
-    segment.radius = radius[i];
+      fail_one("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
+               ", which is neither owned nor a ghost here");
+    const wiregrain::WireSegmentState segment = segment_of(i, j);
     try {
       held.for_each_candidate(segment.x0, segment.x1, segment.radius, [&](int k, const Eigen::Vector3d &shift) {
         evaluations++;
         const long grain_tag = held.grain(k).tag;
         const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
-            modulus_[type[i] * (ntypes + 1) + core_->held_type[k]], rest[i], radius[i], friction_);
+            modulus_[type[i] * (ntypes + 1) + core_->held_type[k]], wire_->wire_rest[i], segment.radius, friction_);
         wiregrain::TangentialHistory h;
         history_->lookup(i, (int)grain_tag, h);
         wiregrain::TangentialHistory advanced = h;
@@ -286,49 +318,41 @@ void FixWireGrain::evaluate(bool setup) {
           bead_force_[j][e] += c.force_bead1[e];
         }
         loads.add(grain_tag, c.force_grain, c.torque_grain);
-        local_stats_[0] += 1.0;
-        if (c.sliding) local_stats_[4] += 1.0;
-        local_stats_[1] = std::max(local_stats_[1], c.overlap);
-        local_stats_[2] = std::max(local_stats_[2], c.overlap / radius[i]);
-        wiregrain::ContactRecord record;
-        record.kind = wiregrain::ContactKind::wire_grain;
-        record.a = tag[i];
-        record.b = grain_tag;
-        record.point = c.point;
-        record.normal = -c.normal;  // from a (the wire) to b (the grain)
-        record.force = c.force_grain;
-        record.overlap = c.overlap;
-        record.status = c.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
-        core_->contacts.add(record);
+        record_contact(c, i, grain_tag);
       });
     } catch (const wiregrain::InvalidArgument &e) {
-      wiregrain_lmp::style_error(error, "fix", "wire/grain", id,
-                                 "segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
-                                     " (a segment stretched beyond 25 %?)");
+      fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
+               " (a segment stretched beyond 25 %?)");
     }
   }
   history_->end_step();
   core_->contacts.count_evaluations(evaluations);
   local_stats_[3] = double(evaluations);
+  apply_bead_forces();
 
-  // forces on ghost beads to their owners, then into f
-  comm->reverse_comm_fix(this);
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    for (int e = 0; e < 3; e++) {
-      f[i][e] += bead_force_[i][e];
-      output_[i][e] = bead_force_[i][e];
-      output_[i][3 + e] = 0.0;
-    }
+  if (setup) {
+    apply_grain_loads(step_loads, 1);
+    return;
   }
-  if (!setup) summed_steps_++;
-  if (setup) apply_grain_loads(step_loads, 1);
-  else if (nscd_->solves_at_end_of_step(update->ntimestep)) {
+  summed_steps_++;
+  if (nscd_->solves_at_end_of_step(update->ntimestep)) {  // the last sub-step of the NSCD step
     apply_grain_loads(core_->sums, summed_steps_);
     core_->sums.clear();
     summed_steps_ = 0;
   }
-  stats_step_ = -1;
+}
+
+// The forces on ghost beads summed to their owners, then added to f.
+void FixWireGrain::apply_bead_forces() {
+  comm->reverse_comm_fix(this);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    for (int e = 0; e < 3; e++) {
+      atom->f[i][e] += bead_force_[i][e];
+      output_[i][e] = bead_force_[i][e];
+      output_[i][3 + e] = 0.0;
+    }
+  }
 }
 
 // The loads of all ranks on every rank (the same sums everywhere), added to the owned

@@ -51,6 +51,8 @@ FixStyle(wire/grain,FixWireGrain)
 
 namespace wiregrain {
 class GrainLoadSums;
+struct WireGrainContact;
+struct WireSegmentState;
 }
 
 namespace LAMMPS_NS {
@@ -106,8 +108,12 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
 
   void hold_grains();
   void evaluate(bool setup);
+  wiregrain::WireSegmentState segment_of(int i, int j) const;
+  void record_contact(const wiregrain::WireGrainContact &c, int i, long grain_tag);
+  void apply_bead_forces();
   void apply_grain_loads(const wiregrain::GrainLoadSums &loads, int steps);
   [[noreturn]] void fail(const std::string &what);
+  [[noreturn]] void fail_one(const std::string &what);
 };
 
 }  // namespace LAMMPS_NS
