@@ -41,7 +41,7 @@ The scene (atom_style hybrid polyhedron wire, Table 1 defaults everywhere):
 
 The machine is shared (another job may run tests meanwhile): expect +-30 % between
 invocations; the per-style timers of one run are more reliable than loop-time differences.
-About 3 minutes on one core with the defaults."""
+About 2 1/4 minutes on one core with the defaults (set-up 1 1/4, the four cases 1)."""
 
 import argparse
 import math
@@ -360,14 +360,15 @@ def main():
     print(f"wire laid {gap:.2f} above the pile surface on average (rounded profile), fell for {args.drop} "
           f"sub-steps: {drop_rows[-1][1]:.0f} wire-grain contacts at the end; work dir {work}")
     print()
-    print(f"{'case':<28}{'loop':>8}{'wire/grain':>11}{'pair':>8}{'neigh':>8}{'elastic':>9}{'gear':>7}"
+    print(f"{'case':<28}{'loop':>8}{'wire/grain':>11}{'(evals)':>8}{'pair':>8}{'neigh':>8}{'elastic':>9}{'gear':>7}"
           f"{'walls':>7}{'nscd':>7}   {'nscd/NSCD step':>14}{'detect':>8}{'solve':>7}{'sweeps':>7}{'points':>7}")
-    print(f"{'':<28}{'ms per sub-step':^63}   {'ms per NSCD step':^29}")
+    print(f"{'':<28}{'ms per sub-step':^71}   {'ms per NSCD step':^29}")
     for key in "abcd":
         r = results[key]
         walls = sum(per_sub(r, "fix " + w) for w in ("floor", "wxlo", "wxhi", "wylo", "wyhi"))
         s = r["stats"]
-        print(f"{key + ' ' + r['label']:<28}{r['loop'] * ms:8.3f}{per_sub(r, 'fix wg'):11.3f}{per_sub(r, 'Pair'):8.3f}"
+        print(f"{key + ' ' + r['label']:<28}{r['loop'] * ms:8.3f}{per_sub(r, 'fix wg'):11.3f}"
+              f"{s.get('f_wg[7]', 0.0):8.0f}{per_sub(r, 'Pair'):8.3f}"
               f"{per_sub(r, 'Neigh'):8.3f}{per_sub(r, 'fix elastic'):9.3f}{per_sub(r, 'fix integr'):7.3f}"
               f"{walls:7.3f}{per_sub(r, 'fix nscd'):7.3f}   {r['t']['fix nscd'] / nscd_steps * 1e3:14.2f}"
               f"{s['f_nscd[22]'] * 1e3:8.2f}{s['f_nscd[23]'] * 1e3:7.2f}{s['f_nscd[1]']:7.1f}{s['f_nscd[3]']:7.0f}")
