@@ -1361,3 +1361,39 @@ TEST(ContactGeometryErrors, BadInputsNameTheArgument) {
 }
 
 }  // namespace
+
+// feature_gap_limit: pairs farther apart than the limit keep the exact distance, normal
+// and GJK's closest points (the same as with the full lookup, for a segment crossing
+// over an edge: a single closest point), and lose only the parallel interval.
+TEST(SegmentPolyhedron, FeatureGapLimitKeepsDistancesAndClosestPoints) {
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  ContactOptions gap_only;
+  gap_only.feature_gap_limit = 0.0;
+  const double r_w = 0.02;
+  {  // crossing over the edge (x = ½, z = ½) at right angles, apart
+    const Vector3d p0(0.3, 0.2, 0.9), p1(1.1, 0.2, 0.1);
+    const SegmentContact full = segment_contact(grain, p0, p1, r_w);
+    const SegmentContact fast = segment_contact(grain, p0, p1, r_w, gap_only);
+    EXPECT_GT(full.gap, 0.0);
+    EXPECT_NEAR(fast.distance, 0.1 * std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(fast.gap, full.gap, 1e-15);
+    EXPECT_LT((fast.normal - full.normal).norm(), 1e-12);
+    EXPECT_NEAR(fast.t, 0.375, 1e-12);
+    EXPECT_LT((fast.point_on_core - Vector3d(0.5, 0.2, 0.5)).norm(), 1e-12);
+  }
+  {  // parallel to the top face, apart: the interval [0, 0.375] only with the full lookup
+    const Vector3d p0(0.2, 0.1, 0.8), p1(1.0, 0.1, 0.8);
+    const SegmentContact full = segment_contact(grain, p0, p1, r_w);
+    const SegmentContact fast = segment_contact(grain, p0, p1, r_w, gap_only);
+    EXPECT_NEAR(fast.distance, 0.3, 1e-12);
+    EXPECT_NEAR(full.t_end, 0.375, 1e-12);
+    EXPECT_EQ(fast.t_begin, fast.t_end);
+  }
+  {  // touching (gap < 0): the limit does not apply, the interval is there
+    const Vector3d p0(0.2, 0.1, 0.6), p1(1.0, 0.1, 0.6);
+    const SegmentContact fast = segment_contact(grain, p0, p1, r_w, gap_only);
+    EXPECT_LT(fast.gap, 0.0);
+    EXPECT_NEAR(fast.t_end, 0.375, 1e-12);
+  }
+}

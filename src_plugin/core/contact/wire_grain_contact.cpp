@@ -27,7 +27,9 @@ WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape&
                                     const GrainMotion& motion, const WireSegmentState& segment,
                                     double dt, TangentialHistory& history) {
   WireGrainContact out;
-  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius);
+  ContactOptions only_touching;  // pairs apart need their gap only
+  only_touching.feature_gap_limit = 0.0;
+  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, only_touching);
   const SegmentContact& g = out.geometry;
   out.overlap = -g.gap;
   out.normal = g.normal;

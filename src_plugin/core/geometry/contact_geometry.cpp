@@ -64,6 +64,8 @@ void check_options(const ContactOptions& options) {
   if (options.max_points < 0)
     throw InvalidArgument("max_points", "max_points must be >= 0 (0: no limit), got " +
                                             std::to_string(options.max_points));
+  if (std::isnan(options.feature_gap_limit))
+    throw InvalidArgument("feature_gap_limit", "feature_gap_limit must not be NaN");
 }
 
 void check_not_nan(const char* name, double value) {
@@ -1160,6 +1162,12 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
   }
   out.normal = n;
   out.gap = out.distance - (grain.sweep_radius() + wire_radius);
+  if (out.method == DistanceMethod::gjk && out.gap > options.feature_gap_limit) {
+    out.point_on_core = g.point_a;
+    out.point_on_segment = g.point_b;
+    out.t = out.t_begin = out.t_end = length > 0.0 ? std::clamp(g.weight_b1, 0.0, 1.0) : 0.0;
+    return out;
+  }
 
   // Single closest points: GJK's (t = the barycentric weight of end1), or for the SAT
   // the deepest end of the segment and its projection along n on the grain's feature
