@@ -13,7 +13,9 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "fix_wire_wall.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include "core/common/validation.h"
@@ -123,9 +125,19 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       w.velocity.setZero();
       w.friction = core_->options.friction;
       core_->walls.push_back(w);
+    } else if (key == "wall_fix") {
+      wiregrain::PlaneWall w;
+      w.friction = core_->options.friction;
+      core_->walls.push_back(w);
+      wall_fix_ids_.resize(core_->walls.size());
+      wall_fix_ids_.back() = args.value_word(key);
     } else if (key == "wall_friction" || key == "wall_velocity") {
-      if (core_->walls.empty()) args.fail("'" + key + "' must follow a 'wall'");
+      if (core_->walls.empty()) args.fail("'" + key + "' must follow a 'wall' or 'wall_fix'");
+      wall_fix_ids_.resize(core_->walls.size());
       if (key == "wall_friction") core_->walls.back().friction = args.value_nonnegative(key);
+      else if (!wall_fix_ids_.back().empty())
+        args.fail("'wall_velocity' does not apply to 'wall_fix " + wall_fix_ids_.back() +
+                  "' (the fix moves the plane: fix_modify " + wall_fix_ids_.back() + " velocity ...)");
       else
         for (int d = 0; d < 3; d++) core_->walls.back().velocity[d] = args.value_double(key);
     } else {
@@ -133,6 +145,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     }
   }
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
+  wall_fix_ids_.resize(core_->walls.size());
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
@@ -220,6 +233,19 @@ int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNSCDPolyhedra::init() {
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nscd/polyhedra", "grains");
+  wall_fixes_.assign(wall_fix_ids_.size(), NULL);
+  for (size_t w = 0; w < wall_fix_ids_.size(); w++) {
+    if (wall_fix_ids_[w].empty()) continue;
+    const int ifix = modify->find_fix(wall_fix_ids_[w].c_str());
+    if (ifix < 0)
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 "wall_fix " + wall_fix_ids_[w] + ": no fix with this ID");
+    wall_fixes_[w] = dynamic_cast<FixWireWall *>(modify->fix[ifix]);
+    if (!wall_fixes_[w])
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 "wall_fix " + wall_fix_ids_[w] + ": fix style is " + modify->fix[ifix]->style +
+                                     ", not wire/wall");
+  }
   if (nscd_timestep_ > 0.0) {
     const double ratio = nscd_timestep_ / update->dt;
     if (std::round(ratio) < 1.0 || std::abs(ratio - std::round(ratio)) > 1e-9 * ratio)
@@ -289,6 +315,7 @@ void FixNSCDPolyhedra::final_integrate() {
 // forces and h = N dt.
 void FixNSCDPolyhedra::solve_step() {
   solved_once_ = true;
+  sync_wall_fixes();
   const double h = (summed_steps_ > 0 ? summed_steps_ : solve_interval()) * update->dt;
   const double start = MPI_Wtime();
   const std::vector<wiregrain::GrainState> grains = gather_grains();
@@ -311,13 +338,26 @@ void FixNSCDPolyhedra::solve_step() {
   scatter_results(grains, result);
   record_stats(result);
   publish_contacts(result);
-  // the wall positions for the next detection
+  // the wall positions for the next detection (wall_fix walls: taken from their fix)
   for (wiregrain::PlaneWall &w : core_->walls) w.point += w.velocity * h;
+  sync_wall_fixes();
   last_h_ = h;
   move_pending_ = true;
   summed_steps_ = 0;
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 6; k++) force_sum_[i][k] = 0.0;
+}
+
+// The walls defined by a fix wire/wall (wall_fix): its plane and velocity at this step.
+void FixNSCDPolyhedra::sync_wall_fixes() {
+  for (size_t w = 0; w < wall_fixes_.size(); w++) {
+    if (!wall_fixes_[w]) continue;
+    double p[3];
+    wall_fixes_[w]->current_point(p);
+    core_->walls[w].point = vec(p);
+    core_->walls[w].normal = vec(wall_fixes_[w]->normal());
+    core_->walls[w].velocity = vec(wall_fixes_[w]->velocity());
+  }
 }
 
 void FixNSCDPolyhedra::solve_failed(const std::exception &e) {

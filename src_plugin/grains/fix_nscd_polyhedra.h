@@ -8,6 +8,7 @@
        [convergence natural_map|increment|both]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
+       [wall_fix ID [wall_friction mu]] ...
 
    Each step: at the end of step n, with the forces and torques of step n (gravity
    and every other style's), the free velocities v + h F/m, L + h T are corrected by the
@@ -19,6 +20,10 @@
    (they migrate and restart), so velocities set between runs are honoured. Walls are planes of
    infinite mass, each with its own friction and velocity. The step itself is the core's
    (core/nscd/grain_step.h); this fix gathers, schedules, scatters and reports.
+
+   wall_fix ID: the plane of fix ID (style wire/wall, which the wire beads feel) is also a
+   wall of the grains, at the fix's current position and velocity at every solve: a
+   container wall defined once for grains and wire.
 
    every N (or timestep h = N dt, an integer multiple of the LIGGGHTS timestep): the solve
    runs with h = N dt at the end of the steps whose number is a multiple of N, with the
@@ -103,6 +108,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   // defined in the .cpp (style headers are compiled without Eigen)
   struct CoreState;
   std::unique_ptr<CoreState> core_;
+  std::vector<std::string> wall_fix_ids_;   // per wall: the fix wire/wall it comes from ("" : own)
+  std::vector<class FixWireWall *> wall_fixes_;
   int every_ = 1;                           // solve every N steps with h = N dt
   bool every_given_ = false;
   double nscd_timestep_ = 0.0;              // keyword timestep (0: use every_)
@@ -123,6 +130,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::string problem_file_;                // its file name, '*' replaced by the step
 
   void solve_step();
+  void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
   void record_stats(const wiregrain::GrainStepResult &);

@@ -92,9 +92,7 @@ int FixWireWall::setmask() { return POST_FORCE; }
 
 void FixWireWall::init() {
   // re-reference at every run start, so a `timestep` command between runs is honoured
-  current_point(point_);
-  reference_step_ = update->ntimestep;
-  reference_dt_ = update->dt;
+  rereference();
   history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
   // the rigid-wall modulus of each atom type's wire material (plugin_material.h)
   wall_modulus_of_type_.assign(atom->ntypes + 1, 0.0);
@@ -110,11 +108,23 @@ void FixWireWall::current_point(double p[3]) const {
   for (int d = 0; d < 3; d++) p[d] = point_[d] + velocity_[d] * t;
 }
 
-// a changed time step: the wall continues from where it is
-void FixWireWall::reset_dt() {
+// the wall continues from where it is (a changed time step or velocity)
+void FixWireWall::rereference() {
   current_point(point_);
   reference_step_ = update->ntimestep;
   reference_dt_ = update->dt;
+}
+
+void FixWireWall::reset_dt() { rereference(); }
+
+// fix_modify ID velocity vx vy vz
+int FixWireWall::modify_param(int narg, char **arg) {
+  if (narg < 1 || std::string(arg[0]) != "velocity") return 0;
+  wiregrain_lmp::StyleArgs args(error, "fix_modify", "wire/wall", id, std::min(narg, 4), arg, 0);
+  args.next_keyword();
+  rereference();
+  for (int d = 0; d < 3; d++) velocity_[d] = args.value_double("velocity");
+  return 4;
 }
 
 void FixWireWall::post_force(int /*vflag*/) {

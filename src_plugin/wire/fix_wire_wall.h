@@ -12,6 +12,12 @@
    type, else Table 1 (common/plugin_material.h); tangential springs persist (fix
    WIRE_WALL_HISTORY_<ID>). Several walls: several fixes.
 
+   fix_modify ID velocity vx vy vz: the wall goes on from where it is at the new velocity
+   (e.g. the column's side walls taken away).
+
+   fix nscd/polyhedra ... wall_fix ID makes the same plane a wall of the grains: one
+   definition per container wall.
+
    Outputs: vector = [contacts, largest overlap, force on the wall x, y, z] (all ranks).
    Publishes its contacts (kind wire_wall, a = −1, b = the bead's tag) as a
    ContactPublisher. */
@@ -48,8 +54,13 @@ class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
   double compute_vector(int);
   void write_restart(FILE *);
   void restart(char *);
+  int modify_param(int, char **);
   // this rank's bead–wall contacts of the last force call
   const wiregrain::ContactList &published_contacts() const;
+  // the plane now (fix nscd/polyhedra's wall_fix uses it for the grains)
+  void current_point(double p[3]) const;
+  const double *normal() const { return normal_; }
+  const double *velocity() const { return velocity_; }
 
  private:
   double point_[3], normal_[3], velocity_[3];
@@ -65,7 +76,7 @@ class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
   wiregrain::ContactList *contacts_;
   double local_stats_[5], global_stats_[5];
   bigint stats_step_;
-  void current_point(double p[3]) const;
+  void rereference();
 };
 
 }  // namespace LAMMPS_NS

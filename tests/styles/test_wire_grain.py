@@ -338,6 +338,18 @@ class Errors(DeckTestCase):
         self.check("fix nscd grains nscd/polyhedra timestep -1",
                    "fix nscd/polyhedra (id nscd): value of 'timestep' must be > 0, got -1")
 
+    def test_wall_fix(self):
+        self.check("fix nscd grains nscd/polyhedra wall_fix floor",
+                   "fix nscd/polyhedra (id nscd): wall_fix floor: no fix with this ID")
+        self.check("fix g grains gravity 1 vector 0 0 -1\nfix nscd grains nscd/polyhedra wall_fix g",
+                   "fix nscd/polyhedra (id nscd): wall_fix g: fix style is gravity, not wire/wall")
+        self.check("fix floor wire wire/wall plane 0 0 0 0 0 1\n"
+                   "fix nscd grains nscd/polyhedra wall_fix floor wall_velocity 1 0 0",
+                   "fix nscd/polyhedra (id nscd): 'wall_velocity' does not apply to 'wall_fix floor' (the fix "
+                   "moves the plane: fix_modify floor velocity ...)")
+        self.check("fix floor wire wire/wall plane 0 0 0 0 0 1\nfix_modify floor velocity 1 0",
+                   "fix_modify wire/wall (id floor): missing value after 'velocity'")
+
     def test_wrong_atom_style(self):
         text = """
 units lj
@@ -455,6 +467,44 @@ run             100000
         ratio, moved, target = self.slip_ratio(np.pi / 2)
         self.assertAlmostEqual(ratio / target, 1.0, delta=0.02)
         self.assertAlmostEqual(moved / target, 1.0, delta=0.02)
+
+
+class ContainerWalls(DeckTestCase):
+    """One plane for grains and wire: fix wire/wall, used by fix nscd/polyhedra through
+    wall_fix."""
+
+    def test_a_cube_rests_on_a_wire_wall_floor_and_is_pushed_by_a_moving_one(self):
+        # a cube (edge 2, sweep 0.1, mass m) on the floor z = 0, the side wall x = -3
+        # standing still for 100 steps, then moving at +0.5 (fix_modify velocity) for 4000
+        # steps of 1e-3: it reaches the cube's face (x = -1.1) at t = 3.8 and pushes it,
+        # so at the end the face is at the wall, -3 + 0.5·4 = -1.0, within one NSCD step
+        # of travel; the floor carries m g all along (frictionless floor for the grain)
+        made = scene([resting_cube(0, 0)], ["line -0.5 2.0 0.3 0.5 2.0 0.3 segment 0.5 radius 0.1"])
+        r = run(full_precision(deck(f"""
+fix             g grains gravity {G} vector 0 0 -1
+fix             floor wire wire/wall plane 0 0 0 0 0 1
+fix             side wire wire/wall plane -3 0 0 1 0 0 mu_s 0 mu_d 0
+fix             nscd grains nscd/polyhedra wall_fix floor wall_friction 0 wall_fix side wall_friction 0
+timestep        1e-3
+compute         xg grains reduce max x
+thermo_style    custom step c_xg f_nscd[9]
+thermo_modify   format float %.15g
+thermo          100
+run             100
+fix_modify      side velocity 0.5 0 0
+dump            d grains custom 4100 dump.g id mass x z
+run             4000
+"""), "d"), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        d = read_dump(r.path("dump.g"))
+        m = d["mass"][0]
+        face = d["x"][0] - 1.1
+        print(f"\ncontainer walls: cube face at {face:.9f} (wall at -1.0), floor force {-t['nscd[9]'][-1]:.12g} "
+              f"(m g = {m * G:.12g}), height {d['z'][0]:.12g}")
+        self.assertAlmostEqual(face, -1.0, delta=0.5 * 1e-3 + 1e-9)
+        self.assertAlmostEqual(-t["nscd[9]"][-1] / (m * G), 1.0, delta=1e-7)  # NSCD tolerance 1e-4 (relative)
+        self.assertAlmostEqual(d["z"][0], 1.1, delta=1e-9)
 
 
 if __name__ == "__main__":
