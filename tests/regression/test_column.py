@@ -1,0 +1,68 @@
+"""input_scripts/in.column on a tiny column (two particle and two wire layers, R = 3,
+24 grains, short times): the same observables on 1 and 2 MPI ranks, continuing from the
+relaxed column's restart file gives the straight run's observables, and the deck's own
+checks of its variables stop with an ERROR."""
+
+import re
+
+from liggghts_run import DeckTestCase, deck, main, run
+
+COLUMN = deck("input_scripts/in.column")
+TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "every_obs": 1000}
+NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc")
+
+
+def final_observables(result):
+    line = next(l for l in result.output.splitlines() if l.startswith("in.column final:"))
+    return {name: float(re.search(re.escape(name) + r" = (\S+)", line).group(1)) for name in NAMES}
+
+
+class Column(DeckTestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.straight = run(COLUMN, variables=TINY)
+
+    def test_runs_and_measures(self):
+        self.assertRanCleanly(self.straight)
+        obs = final_observables(self.straight)
+        print(f"\ntiny column, 1 rank: {obs}")
+        # 24 grains, most inside the loops; a wire on them: some contacts, some energy
+        self.assertGreater(obs["phi_p"], 0.5)
+        self.assertGreater(obs["z_wpc"], 0.0)
+        self.assertGreater(obs["U_s/L"], 0.0)
+        self.assertGreater(obs["H_n"], 0.0)
+
+    def test_two_ranks(self):
+        two = run(COLUMN, variables=TINY, np_ranks=2)
+        self.assertRanCleanly(two)
+        a, b = final_observables(self.straight), final_observables(two)
+        print(f"\n1 rank {a}\n2 ranks {b}")
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        # the wire's energy, a sum over 378 beads after 35 000 steps: 1.2e-9 measured
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-8)
+
+    def test_continue_from_the_relaxed_column(self):
+        resumed = run(COLUMN, variables=dict(TINY, resume=1), workdir=self.straight.workdir)
+        self.assertRanCleanly(resumed)
+        a, b = final_observables(self.straight), final_observables(resumed)
+        print(f"\nstraight {a}\nresumed {b}")
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
+
+    def test_bad_variables(self):
+        for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
+                                   ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
+                                   ({"v_wall": -0.02}, "in.column: v_wall must be > 0, got -0.02"),
+                                   ({"Np": 3, "nlayers": 4}, "in.column: Np (3) must be at least nlayers (4)"),
+                                   ({"t_relax": 10, "t_layer": 10},
+                                    "in.column: t_relax (10) must be at least the deposition time"),
+                                   ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
+                                   ({"R": 1, "Np": 100, "nlayers": 1},
+                                    "create_grains (id -): region too small for the layer")):
+            self.assertStopsWith(run(COLUMN, variables=variables), message)
+
+
+if __name__ == "__main__":
+    main()
