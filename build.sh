@@ -99,12 +99,13 @@ run_tests() {
 
 # The main example; see README.md, section Examples.
 run_example() {
-  local work="$BUILD_DIR/examples/wire_loop"
+  local work="$BUILD_DIR/examples/column"
   mkdir -p "$work"
-  cp "$here/examples/wire_loop/in.wire_loop" "$work/"
-  echo "build.sh: running examples/wire_loop in $work"
-  (cd "$work" && "$BUILD_DIR/liggghts" -in in.wire_loop)
-  echo "build.sh: output in $work (log.liggghts, dump.wire_loop, post/wire.vtp.series for ParaView)"
+  cp "$here/examples/column/in.column_small" "$work/"
+  echo "build.sh: running examples/column (the reduced wire-reinforced column, 2 MPI ranks) in $work"
+  (cd "$work" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+     mpirun --oversubscribe -np 2 "$BUILD_DIR/liggghts" -in in.column_small -var root "$here")
+  echo "build.sh: output in $work (log.liggghts, column.obs, post/grains.vtp.series and post/wire.vtp.series for ParaView)"
 }
 
 case "${1:-}" in

@@ -39,8 +39,11 @@ class Column(DeckTestCase):
         print(f"\n1 rank {a}\n2 ranks {b}")
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], b[name], name)
-        # the wire's energy, a sum over 378 beads after 35 000 steps: 1.2e-9 measured
-        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-8)
+        # the wire's energy after 35 000 steps: the forces on a bead are summed in another
+        # order on 2 ranks and the round-off grows in the wire's contacts (measured 1.2e-9
+        # and 5e-7 relative in two versions of the release heights); the grains' solve is
+        # replicated, so H_n, φ_p and z_wpc agree to the last bit
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-5)
 
     def test_continue_from_the_relaxed_column(self):
         resumed = run(COLUMN, variables=dict(TINY, resume=1), workdir=self.straight.workdir)
