@@ -20,13 +20,18 @@
 using namespace LAMMPS_NS;
 
 ComputeColumnRetention::ComputeColumnRetention(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), wire_groupbit_(0), axis_given_(false) {
+    : Compute(lmp, iarg, narg, arg), wire_groupbit_(0), axis_given_(false), fixed_radius_(0.0) {
   wiregrain_lmp::StyleArgs args(error, "compute", "column/retention", id, narg, arg, iarg);
   if (!AtomVecPolyhedron::of(atom))
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
-  if (args.done()) args.fail("expected the wire group after 'column/retention'");
-  wire_group_ = args.next_keyword();
-  if (group->find(wire_group_.c_str()) < 0) args.fail("wire group '" + wire_group_ + "' does not exist");
+  if (args.done()) args.fail("expected the wire group or 'radius r' after 'column/retention'");
+  const std::string first = args.next_keyword();
+  if (first == "radius") {
+    fixed_radius_ = args.value_positive(first);
+  } else {
+    wire_group_ = first;
+    if (group->find(wire_group_.c_str()) < 0) args.fail("wire group '" + wire_group_ + "' does not exist");
+  }
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "axis") {
@@ -47,11 +52,15 @@ ComputeColumnRetention::ComputeColumnRetention(LAMMPS *lmp, int &iarg, int narg,
 ComputeColumnRetention::~ComputeColumnRetention() { delete[] vector; }
 
 void ComputeColumnRetention::init() {
-  const int igroup_wire = group->find(wire_group_.c_str());
-  if (igroup_wire < 0)
-    wiregrain_lmp::style_error(error, "compute", "column/retention", id,
-                               "wire group '" + wire_group_ + "' no longer exists");
-  wire_groupbit_ = group->bitmask[igroup_wire];
+  if (fixed_radius_ > 0.0) {
+    wire_groupbit_ = 0;
+  } else {
+    const int igroup_wire = group->find(wire_group_.c_str());
+    if (igroup_wire < 0)
+      wiregrain_lmp::style_error(error, "compute", "column/retention", id,
+                                 "wire group '" + wire_group_ + "' no longer exists");
+    wire_groupbit_ = group->bitmask[igroup_wire];
+  }
   long local[2] = {0, 0}, total[2];  // grains, beads
   for (int i = 0; i < atom->nlocal; i++) {
     if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0) local[0]++;
@@ -61,7 +70,7 @@ void ComputeColumnRetention::init() {
   if (total[0] == 0)
     wiregrain_lmp::style_error(error, "compute", "column/retention", id,
                                "group '" + std::string(group->names[igroup]) + "' has no grains");
-  if (total[1] == 0)
+  if (fixed_radius_ <= 0.0 && total[1] == 0)
     wiregrain_lmp::style_error(error, "compute", "column/retention", id,
                                "wire group '" + wire_group_ + "' has no wire beads");
 }
@@ -82,7 +91,7 @@ void ComputeColumnRetention::compute_vector() {
                      double(beads.size())},
          total[2];
   MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, world);
-  const double radius = total[1] > 0.0 ? total[0] / total[1] : 0.0;
+  const double radius = fixed_radius_ > 0.0 ? fixed_radius_ : total[1] > 0.0 ? total[0] / total[1] : 0.0;
   const wiregrain::Retention mine = wiregrain::retention(grains, axis, radius);
   double counts[2] = {double(mine.inside), double(mine.total)}, all[2];
   MPI_Allreduce(counts, all, 2, MPI_DOUBLE, MPI_SUM, world);

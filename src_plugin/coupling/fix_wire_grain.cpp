@@ -24,6 +24,7 @@
 #include "update.h"
 
 #include "core/common/errors.h"
+#include "core/common/validation.h"
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_list.h"
 #include "core/contact/held_grains.h"
@@ -34,8 +35,6 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-// The segment reach allows the wire to stretch by 25 % (as pair wire/contact does).
-constexpr double kStretchAllowance = 1.25;
 // per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
 constexpr int kGrainRecord = 17;
 
@@ -61,6 +60,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       history_(NULL),
       held_version_(-1),
       segment_reach_(0.0),
+      max_stretch_(0.5),
       summed_steps_(0),
       bead_force_(NULL),
       output_(NULL),
@@ -79,6 +79,10 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
   friction_ = wiregrain_lmp::table1_friction();
   while (!args.done()) {
     const std::string key = args.next_keyword();
+    if (key == "max_stretch") {
+      max_stretch_ = args.value_positive(key);
+      continue;
+    }
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_w", "nu_w", wire_given_)) continue;
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_p", "nu_p", grain_given_)) continue;
     if (!wiregrain_lmp::parse_friction_keyword(args, key, friction_)) args.unknown_keyword(key);
@@ -158,7 +162,7 @@ void FixWireGrain::init() {
   if (global[2] > 0.0)
     fail("wire group '" + std::string(group->names[this->igroup]) + "' holds " + std::to_string((long)global[2]) +
          " grains (give the wire beads only)");
-  segment_reach_ = 0.5 * kStretchAllowance * global[3] + global[4];
+  segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[3] + global[4];
 
   // the one fix nscd/polyhedra that integrates all grains of the grain group
   nscd_ = NULL;
@@ -184,7 +188,7 @@ void FixWireGrain::init() {
   history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
   comm->ghost_velocity = 1;  // the damping needs the velocity of the segment's ghost bead
   // the next bead of an owned bead must be owned or a ghost
-  wiregrain_lmp::ensure_ghost_reach(lmp, kStretchAllowance * global[3] + neighbor->skin);
+  wiregrain_lmp::ensure_ghost_reach(lmp, (1.0 + max_stretch_) * global[3] + neighbor->skin);
   held_version_ = -1;
 }
 
@@ -322,7 +326,7 @@ void FixWireGrain::evaluate(bool setup) {
       });
     } catch (const wiregrain::InvalidArgument &e) {
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
-               " (a segment stretched beyond 25 %?)");
+               " (a segment stretched by more than max_stretch = " + wiregrain::format_number(max_stretch_) + "?)");
     }
   }
   history_->end_step();

@@ -3,6 +3,7 @@
 
    fix ID wire-group wire/grain grain-group [E_w 100] [nu_w 0] [E_p 1000] [nu_p 0.3]
        [mu_s 0.5] [mu_d 0.5] [restitution 0.5 | damping_ratio z] [limit_force no|yes]
+       [max_stretch 0.5]
 
    Every LIGGGHTS step (the wire sub-step dt), each segment of the wire group (a bead and
    its next bead, a spherocylinder of the bead's radius r_w) is tested against the grains
@@ -14,6 +15,9 @@
    closest-point weights, its opposite and torque to the grain.
    E and ν: the keywords, else fix property/global youngsModulus / poissonsRatio of the
    bead's / grain's atom type, else Table 1 (common/plugin_material.h).
+   max_stretch s: the contact search finds every grain near segments stretched up to
+   (1 + s) times their rest length; a longer segment stops the run (default 0.5: under
+   Table 1's soft wire, E_w = 100, a grain landing on a loop can stretch a segment by 25 %).
 
    Sub-cycling: the grains are seen where fix nscd/polyhedra last put them, with its last
    velocities, for the N steps of one NSCD step (its `every N` / `timestep h`). Each rank
@@ -96,7 +100,8 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   class FixWireContactHistory *history_;
   std::string history_id_;
   long held_version_;            // the NSCD fix's pose_version() of the held grains
-  double segment_reach_;         // largest half segment (25 % stretch allowed) + r_w
+  double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w
+  double max_stretch_;           // keyword max_stretch: the strain the contact search allows
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
   double **output_;              // per-atom array (see above)

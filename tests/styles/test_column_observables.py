@@ -46,7 +46,8 @@ class Retention(DeckTestCase):
         r = run(full_precision(deck("""
 compute         phi grains column/retention wire
 compute         sh grains column/retention wire axis 1.5 0.5
-thermo_style    custom step c_phi[1] c_phi[2] c_phi[3] c_phi[4] c_sh[1] c_sh[2]
+compute         fixed grains column/retention radius 2.6 axis 0 0
+thermo_style    custom step c_phi[1] c_phi[2] c_phi[3] c_phi[4] c_sh[1] c_sh[2] c_fixed[1] c_fixed[2]
 thermo_modify   format float %.15g
 dump            d wire custom 1 dump.w id x y z
 run             0
@@ -62,6 +63,8 @@ run             0
         inside = sum(math.hypot(x - 1.5, y - 0.5) < radius for x, y, *_ in poses)
         self.assertAlmostEqual(t["sh[2]"][0], radius, delta=1e-12)
         self.assertEqual(t["sh[1]"][0], inside / 4)
+        # a fixed cylinder of radius 2.6 (a column without wire): the grains at 0, 1.5, 2.5
+        self.assertEqual((t["fixed[1]"][0], t["fixed[2]"][0]), (0.75, 2.6))
         print(f"\nretention: R = {t['phi[2]'][0]:.12g}, φ_p = {t['phi[1]'][0]}; about (1.5, 0.5): R = {radius:.6f}, "
               f"φ_p = {t['sh[1]'][0]}")
 
@@ -106,7 +109,9 @@ class Errors(DeckTestCase):
         self.check("compute h wire column/height\nthermo_style custom step c_h",
                    "compute column/height (id h): group 'wire' has no grains")
         self.check("compute phi grains column/retention",
-                   "compute column/retention (id phi): expected the wire group after 'column/retention'")
+                   "compute column/retention (id phi): expected the wire group or 'radius r' after 'column/retention'")
+        self.check("compute phi grains column/retention radius -1",
+                   "compute column/retention (id phi): value of 'radius' must be > 0, got -1")
         self.check("compute phi grains column/retention rope",
                    "compute column/retention (id phi): wire group 'rope' does not exist")
         self.check("compute phi grains column/retention grains\nthermo_style custom step c_phi[1]",

@@ -307,6 +307,8 @@ class Errors(DeckTestCase):
                    "fix wire/grain (id wg): value of 'mu_s' must be >= 0, got -0.1")
         self.check(nscd + "fix wg wire wire/grain grains mu_s 0.3 mu_d 0.4",
                    "fix wire/grain (id wg): mu_d (0.400000) must not exceed mu_s (0.300000)")
+        self.check(nscd + "fix wg wire wire/grain grains max_stretch 0",
+                   "fix wire/grain (id wg): value of 'max_stretch' must be > 0, got 0")
         self.check(nscd + "fix wg wire wire/grain grains stiffness 3",
                    "fix wire/grain (id wg): unknown keyword 'stiffness'")
         self.check(nscd + "fix wg wire wire/grain grains mu_d",

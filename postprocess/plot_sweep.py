@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Plot the column's final observables against the swept parameter, mean ± standard
+deviation over the seeds (the paper's Figs. 8–11).
+
+    postprocess/plot_sweep.py sweeps/mu_w/summary.csv [more summary.csv ...] -o mu_w.png
+        [--label "μ_w"] [--legend "with wire" ...] [--table]
+
+Input: the summary.csv of postprocess/sweep.py (one row per run). Output: one PNG with four
+panels, H_n, φ_p, U_s/L (wire elastic energy per wire length, in ρ₁ g a_max³ where ρ₁ is
+the density unit of Table 1, ρ_p = 1.5 ρ₁, and lengths are in a_max, g = 1) and z_wpc,
+each against the parameter; one line per summary file. --table prints the means, standard deviations and seed counts.
+Uses Debian's python3-matplotlib and numpy."""
+
+import argparse
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+OBSERVABLES = [("H_n", "H_n = H / H(t_relax)"),
+               ("phi_p", "φ_p (grains inside the wire)"),
+               ("U_s/L", "U_s / L  [ρ₁ g a_max³]"),
+               ("z_wpc", "z_wpc (wire–grain contacts per segment)")]
+
+
+def read_summary(path):
+    """{value: {observable: [one number per seed]}} with values sorted numerically, and the
+    parameter's name."""
+    groups, param = defaultdict(lambda: defaultdict(list)), None
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            param = row["param"]
+            for name, _ in OBSERVABLES:
+                groups[float(row["value"])][name].append(float(row[name]))
+    return param, dict(sorted(groups.items()))
+
+
+def statistics(groups, name):
+    """values, means, standard deviations (ddof 1; 0 for one seed), seed counts."""
+    values = np.array(list(groups))
+    samples = [np.array(groups[v][name]) for v in groups]
+    means = np.array([s.mean() for s in samples])
+    stds = np.array([s.std(ddof=1) if len(s) > 1 else 0.0 for s in samples])
+    return values, means, stds, np.array([len(s) for s in samples])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("summaries", nargs="+")
+    parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--label", default=None, help="x axis label (default: the parameter's name)")
+    parser.add_argument("--legend", nargs="+", default=None, help="one label per summary file")
+    parser.add_argument("--table", action="store_true")
+    args = parser.parse_args()
+    if args.legend and len(args.legend) != len(args.summaries):
+        parser.error(f"--legend needs one label per summary file ({len(args.summaries)})")
+
+    fig, axes = plt.subplots(2, 2, figsize=(9, 7), constrained_layout=True)
+    for k, path in enumerate(args.summaries):
+        param, groups = read_summary(path)
+        if not groups:
+            sys.exit(f"plot_sweep.py: {path} has no runs")
+        legend = args.legend[k] if args.legend else path
+        for ax, (name, title) in zip(axes.flat, OBSERVABLES):
+            values, means, stds, counts = statistics(groups, name)
+            ax.errorbar(values, means, yerr=stds, marker="o", capsize=3, label=legend)
+            ax.set_xlabel(args.label or param)
+            ax.set_ylabel(title)
+            if args.table:
+                for v, m, s, n in zip(values, means, stds, counts):
+                    print(f"{legend}\t{param} = {v:g}\t{name} = {m:.4g} ± {s:.2g} ({n} seeds)")
+    for ax in axes.flat:
+        ax.grid(alpha=0.3)
+    axes.flat[0].legend(fontsize=8)
+    fig.savefig(args.output, dpi=120)
+    print(f"wrote {args.output}")
+
+
+if __name__ == "__main__":
+    main()
