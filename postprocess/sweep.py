@@ -48,8 +48,8 @@ def run_directory(out, param, value, seed):
 
 def command(args, value, seed):
     deck = os.path.abspath(args.deck)
-    cmd = [] if args.np == 1 else ["mpirun", "--oversubscribe", "-np", str(args.np)]
-    cmd += [os.path.abspath(args.liggghts), "-in", deck, "-log", "log.liggghts", "-screen", "none",
+    cmd = [] if args.np == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
+    cmd += [os.path.abspath(args.liggghts), "-in", deck, "-log", "log.liggghts",
             "-var", args.param, str(value), "-var", "seed", str(seed), "-var", "root", REPOSITORY]
     for name, val in args.var:
         cmd += ["-var", name, val]
@@ -71,11 +71,13 @@ def run_one(args, value, seed):
     with open(os.path.join(where, "stdout.txt"), "w") as out:
         status = subprocess.call(cmd, cwd=where, stdout=out, stderr=subprocess.STDOUT)
     wall = time.time() - start
-    log_path = os.path.join(where, "log.liggghts")
-    log = open(log_path, errors="replace").read() if os.path.exists(log_path) else ""
-    final = parse_final(log)
+    texts = []  # the log, and the screen output (error->one writes its ERROR only there)
+    for name in ("log.liggghts", "stdout.txt"):
+        path = os.path.join(where, name)
+        texts.append(open(path, errors="replace").read() if os.path.exists(path) else "")
+    final = parse_final(texts[0])
     if status != 0 or final is None:
-        errors = [line for line in log.splitlines() if line.startswith("ERROR")]
+        errors = [line for line in "\n".join(texts).splitlines() if line.startswith("ERROR")]
         return None, f"{where}: exit {status}; " + (errors[-1] if errors else "no final line in log.liggghts")
     row = {"param": args.param, "value": value, "seed": seed, **final, "wall_s": round(wall, 1)}
     with open(done, "w") as f:

@@ -54,6 +54,17 @@ class Column(DeckTestCase):
             self.assertEqual(a[name], b[name], name)
         self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
 
+    def test_without_wire(self):
+        # the same grains and procedure without the wire: no wire energy, no contacts;
+        # φ_p counted in the cylinder of radius R (compute column/retention radius,
+        # tested in tests/styles/test_column_observables.py)
+        bare = run(COLUMN, variables=dict(TINY, wire=0))
+        self.assertRanCleanly(bare)
+        obs = final_observables(bare)
+        print(f"\ntiny column without wire: {obs}")
+        self.assertEqual((obs["U_s/L"], obs["z_wpc"]), (0.0, 0.0))
+        self.assertGreater(obs["phi_p"], 0.0)
+
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
@@ -62,6 +73,7 @@ class Column(DeckTestCase):
                                    ({"t_relax": 10, "t_layer": 10},
                                     "in.column: t_relax (10) must be at least the deposition time"),
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
+                                   ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)

@@ -1,0 +1,151 @@
+#!/usr/bin/python3
+"""Benchmark: the paper's Table 1 column (input_scripts/in.column at its defaults: 915
+grains in 7 particle layers, 7 double loops of R = 10, Δt_SP = 1e-4, Δt_NSCD = 1e-3) with
+`mpirun -np 2`: wall time per step of each phase, its breakdown by part, and the wall time
+of the paper's full procedure (t_layer = 10, t = 300 and 600) extrapolated from them.
+
+    bench/column_table1.py [--liggghts build/liggghts] [--np 2] [--t-layer 1] [--sample 2000]
+
+The deck is in.column with shorter times only: each layer deposited for --t-layer (the
+paper: 10), relaxation and wall removal for 1 time unit each, then --sample steps of the
+complete column with the walls moving (the phase that is 4.6 of the paper's 6 million
+steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
+  wire elastic + integration  fix wire/elastic + fix nve/gear
+  wire–wire contacts           Pair + Neigh (pair wire/contact and the lists only it needs)
+  wire–wall contacts           the five fix wire/wall
+  wire–grain contacts          fix wire/grain (broad phase, exact evaluations, springs,
+                               the all-gather of the grains once per NSCD step)
+  grain detection, NSCD solve  fix nscd/polyhedra, split by its own clocks f_nscd[22]
+                               (gather + detection) and f_nscd[23] (solve)
+  communication, output        Comm, Outpt
+  other                        the rest (gravity, computes, the loop itself)
+Extrapolation: each layer's deposition at the measured cost per step of that layer's run
+× the paper's 10^5 steps per layer, plus (600 − 140)/Δt_SP steps at the complete column's
+cost per step. The layers deposited faster than in the paper land on each other while
+still moving; the cost per step of a layer's run is what the extrapolation uses, so this
+matters only through the contacts in flight. About 25 minutes with the defaults."""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPOSITORY = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from wire_grain_contacts import timers  # noqa: E402  (LIGGGHTS' timer lines of one run)
+
+PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END, DT = 10.0, 300.0, 600.0, 1e-4
+NLAYERS = 7
+
+
+def runs(out):
+    """Every run of the screen output: (steps, seconds, atoms, timers)."""
+    found = []
+    for m in re.finditer(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out):
+        block = out[m.start():]
+        nxt = block.find("Loop time of", 10)
+        found.append((int(m.group(2)), float(m.group(1)), int(m.group(3)), timers(block if nxt < 0 else block[:nxt])))
+    return found
+
+
+def parts(t, nscd_split):
+    """Seconds per part from one run's timers; nscd_split = (gather+detection, solve)
+    fractions of fix nscd's time."""
+    fix = {k[4:]: v for k, v in t.items() if k.startswith("fix ")}
+    walls = sum(fix.get(w, 0.0) for w in ("floor", "wxlo", "wxhi", "wylo", "wyhi"))
+    nscd = fix.get("nscd", 0.0)
+    total = sum(t.get(k, 0.0) for k in ("Pair", "Neigh", "Comm", "Outpt", "Other"))
+    named = {
+        "wire elastic + integration": fix.get("elastic", 0.0) + fix.get("integr", 0.0),
+        "wire–wire contacts": t.get("Pair", 0.0) + t.get("Neigh", 0.0),
+        "wire–wall contacts": walls,
+        "wire–grain contacts": fix.get("wg", 0.0),
+        "grain detection (NSCD)": nscd * nscd_split[0],
+        "NSCD solve": nscd * nscd_split[1],
+        "communication": t.get("Comm", 0.0),
+        "output": t.get("Outpt", 0.0),
+    }
+    named["other"] = max(0.0, total - sum(named.values()))
+    return named, total
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--liggghts", default=os.path.join(REPOSITORY, "build", "liggghts"))
+    parser.add_argument("--np", type=int, default=2)
+    parser.add_argument("--t-layer", type=float, default=1.0)
+    parser.add_argument("--sample", type=int, default=2000)
+    args = parser.parse_args()
+
+    work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
+    t_relax = 2 * NLAYERS * args.t_layer + 1.0
+    deck = f"""modify_timing on
+variable root index {REPOSITORY}
+include {REPOSITORY}/input_scripts/in.column
+# the complete column, walls moving: the NSCD split of the sample run
+thermo_style custom step atoms f_nscd[1] f_nscd[3] f_nscd[22] f_nscd[23]
+thermo {args.sample}
+run {args.sample}
+"""
+    with open(os.path.join(work, "in.bench"), "w") as f:
+        f.write(deck)
+    cmd = [args.liggghts, "-in", "in.bench", "-log", "log.liggghts", "-var", "t_layer", str(args.t_layer),
+           "-var", "t_relax", str(t_relax), "-var", "t_end", str(t_relax + 1.0), "-var", "every_obs", "1000"]
+    if args.np > 1:
+        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)] + cmd
+    print(f"running in {work}: {' '.join(cmd)}", flush=True)
+    start = time.time()
+    out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode(errors="replace")
+    wall = time.time() - start
+    found = runs(out)
+    if "ERROR" in out or len(found) < 2 * NLAYERS + 3:
+        sys.exit(f"the column failed in {work} after {len(found)} runs:\n" + out[-3000:])
+
+    # the NSCD split from the sample run's thermo: f_nscd[22], f_nscd[23] in seconds
+    last_rows = re.findall(r"^\s*\d+\s+\d+\s+\S+\s+\S+\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s*$",
+                           out[out.rfind("f_nscd[22]") if "f_nscd[22]" in out else 0:], re.M)
+    detect, solve = (float(v) for v in last_rows[-1]) if last_rows else (0.5, 0.5)
+    split = (detect / (detect + solve), solve / (detect + solve)) if detect + solve > 0 else (0.5, 0.5)
+
+    deposition = found[:2 * NLAYERS]
+    sample = found[-1]
+    print(f"\nmeasured: {len(found)} runs, {sum(r[0] for r in found)} steps, {wall:.0f} s wall "
+          f"(mpirun -np {args.np}, t_layer {args.t_layer:g})")
+    print(f"{'run':<22}{'atoms':>7}{'steps':>8}{'ms/step':>9}")
+    for k, (steps, seconds, atoms, _) in enumerate(deposition):
+        name = f"layer {k // 2 + 1} {'grains' if k % 2 == 0 else 'wire'}"
+        print(f"{name:<22}{atoms:>7}{steps:>8}{1e3 * seconds / steps:>9.2f}")
+    print(f"{'complete, walls moving':<22}{sample[2]:>7}{sample[0]:>8}{1e3 * sample[1] / sample[0]:>9.2f}")
+
+    paper_layer_steps = PAPER_T_LAYER / DT
+    paper_rest_steps = (PAPER_T_END - 2 * NLAYERS * PAPER_T_LAYER) / DT
+    dep_seconds = sum(seconds / steps * paper_layer_steps for steps, seconds, _, _ in deposition)
+    rest_seconds = sample[1] / sample[0] * paper_rest_steps
+    print(f"\nthe paper's procedure extrapolated: deposition {dep_seconds / 3600:.2f} h "
+          f"(14 x {paper_layer_steps:.0f} steps), relaxation + wall removal {rest_seconds / 3600:.2f} h "
+          f"({paper_rest_steps:.0f} steps), total {(dep_seconds + rest_seconds) / 3600:.2f} h "
+          f"(the paper: about a week on one core; the bar: 2 h)")
+
+    # breakdown: deposition runs weighted by the paper's steps, the sample by the rest
+    total_parts = {}
+    weighted = [(run, paper_layer_steps) for run in deposition] + [(sample, paper_rest_steps)]
+    for (steps, _, _, t), paper_steps in weighted:
+        named, _ = parts(t, split)
+        weight = paper_steps / steps
+        for k, v in named.items():
+            total_parts[k] = total_parts.get(k, 0.0) + v * weight
+    whole = sum(total_parts.values())
+    print(f"\nbreakdown of the extrapolated run (NSCD split from f_nscd[22], f_nscd[23]: "
+          f"{100 * split[0]:.0f} % gather + detection, {100 * split[1]:.0f} % solve)")
+    print(f"{'part':<30}{'hours':>8}{'share':>8}   complete column, ms/step")
+    named_sample, _ = parts(sample[3], split)
+    for k, v in sorted(total_parts.items(), key=lambda kv: -kv[1]):
+        print(f"{k:<30}{v / 3600:>8.2f}{100 * v / whole:>7.1f}%   {1e3 * named_sample[k] / sample[0]:.3f}")
+
+
+if __name__ == "__main__":
+    main()

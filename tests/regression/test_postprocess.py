@@ -1,0 +1,91 @@
+"""postprocess/: the sweep driver runs values × seeds, skips finished runs when called
+again, reports a failed run and tries it again; the plot scripts read its output and
+write PNGs. On the tiny column without wire (a second per run)."""
+
+import csv
+import json
+import os
+import subprocess
+import tempfile
+
+import numpy as np
+
+from liggghts_run import LIGGGHTS, DeckTestCase, main
+
+SOURCE = os.environ["WIREGRAIN_SOURCE"]
+POST = os.path.join(SOURCE, "postprocess")
+TINY = ["--var", "R", "3", "--var", "nlayers", "1", "--var", "Np", "13", "--var", "t_layer", "0.5",
+        "--var", "t_relax", "1", "--var", "t_end", "1.5", "--var", "every_obs", "1000"]
+
+
+def script(name, *args, cwd):
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(POST, name), *args], cwd=cwd,
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=600)
+    return proc.returncode, proc.stdout.decode(errors="replace")
+
+
+class Sweep(DeckTestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="wiregrain-sweep-")
+        cls.out = os.path.join(cls.work, "v_wall")
+        cls.sweep = ["v_wall", "0.2", "0.4", "--seeds", "11", "22", "--out", cls.out, "--jobs", "2",
+                     "--liggghts", LIGGGHTS, "--var", "wire", "0"] + TINY
+        cls.first = script("sweep.py", *cls.sweep, cwd=cls.work)
+
+    def rows(self):
+        with open(os.path.join(self.out, "summary.csv"), newline="") as f:
+            return list(csv.DictReader(f))
+
+    def test_runs_every_value_and_seed(self):
+        status, text = self.first
+        self.assertEqual(status, 0, text[-2000:])
+        rows = self.rows()
+        self.assertEqual([(r["value"], r["seed"]) for r in rows],
+                         [("0.2", "11"), ("0.2", "22"), ("0.4", "11"), ("0.4", "22")])
+        for r in rows:
+            where = os.path.join(self.out, f"v_wall={r['value']}", f"seed={r['seed']}")
+            with open(os.path.join(where, "log.liggghts")) as f:
+                final = [l for l in f if l.startswith("in.column final:")][-1]
+            # the row holds the deck's own final line
+            self.assertEqual(float(r["H_n"]), float(final.split("H_n = ")[1].split()[0]))
+            self.assertEqual(float(r["U_s/L"]), 0.0)
+        # the seeds differ: the columns differ
+        self.assertNotEqual(rows[0]["H0"], rows[1]["H0"])
+
+    def test_finished_runs_are_not_repeated(self):
+        logs = [os.path.join(self.out, "v_wall=0.2", f"seed={s}", "log.liggghts") for s in (11, 22)]
+        before = [os.stat(p).st_mtime_ns for p in logs]
+        status, text = script("sweep.py", *self.sweep, cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        self.assertEqual([os.stat(p).st_mtime_ns for p in logs], before)
+        self.assertEqual(len(self.rows()), 4)
+
+    def test_a_failed_run_is_reported_and_tried_again(self):
+        out = os.path.join(self.work, "bad")
+        args = ["v_wall", "-1", "--seeds", "5", "--out", out, "--liggghts", LIGGGHTS, "--var", "wire", "0"] + TINY
+        for _ in range(2):
+            status, text = script("sweep.py", *args, cwd=self.work)
+            self.assertEqual(status, 1)
+            self.assertIn("in.column: v_wall must be > 0, got -1", text)
+            self.assertFalse(os.path.exists(os.path.join(out, "v_wall=-1", "seed=5", "final.json")))
+
+    def test_plots(self):
+        status, text = script("plot_sweep.py", os.path.join(self.out, "summary.csv"), "-o", "sweep.png", "--table",
+                              cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        # mean ± standard deviation over the two seeds, from the rows
+        for value in ("0.2", "0.4"):
+            h = np.array([float(r["H_n"]) for r in self.rows() if r["value"] == value])
+            self.assertIn(f"v_wall = {float(value):g}\tH_n = {h.mean():.4g} ± {h.std(ddof=1):.2g} (2 seeds)", text)
+        run_dir = os.path.join(self.out, "v_wall=0.2", "seed=11")
+        for name, args in (("plot_column.py", [run_dir]), ("plot_columns.py", [run_dir, os.path.join(self.out, "v_wall=0.4", "seed=11")])):
+            status, text = script(name, *args, "-o", name + ".png", cwd=self.work)
+            self.assertEqual(status, 0, text[-2000:])
+        for png in ("sweep.png", "plot_column.py.png", "plot_columns.py.png"):
+            with open(os.path.join(self.work, png), "rb") as f:
+                self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", png)
+
+
+if __name__ == "__main__":
+    main()
