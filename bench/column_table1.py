@@ -4,10 +4,11 @@ grains in 7 particle layers, 7 double loops of R = 10, Δt_SP = 1e-4, Δt_NSCD =
 `mpirun -np 2`: wall time per step of each phase, its breakdown by part, and the wall time
 of the paper's full procedure (t_layer = 10, t = 300 and 600) extrapolated from them.
 
-    bench/column_table1.py [--liggghts build/liggghts] [--np 2] [--t-layer 1] [--sample 2000]
+    bench/column_table1.py [--liggghts build/liggghts] [--np 2] [--t-layer 0.5] [--t-after 0.3]
+        [--sample 2000] [--var NAME VALUE ...]
 
 The deck is in.column with shorter times only: each layer deposited for --t-layer (the
-paper: 10), relaxation and wall removal for 1 time unit each, then --sample steps of the
+paper: 10), relaxation and wall removal for --t-after time units each, then --sample steps of the
 complete column with the walls moving (the phase that is 4.6 of the paper's 6 million
 steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
   wire elastic + integration  fix wire/elastic + fix nve/gear
@@ -23,7 +24,8 @@ Extrapolation: each layer's deposition at the measured cost per step of that lay
 × the paper's 10^5 steps per layer, plus (600 − 140)/Δt_SP steps at the complete column's
 cost per step. The layers deposited faster than in the paper land on each other while
 still moving; the cost per step of a layer's run is what the extrapolation uses, so this
-matters only through the contacts in flight. About 25 minutes with the defaults."""
+matters only through the contacts in flight. --var passes other in.column variables (e.g.
+`--var R 3 --var Np 91` for a quick check of the script). About 15 minutes with the defaults."""
 
 import argparse
 import os
@@ -39,7 +41,7 @@ sys.path.insert(0, HERE)
 from wire_grain_contacts import timers  # noqa: E402  (LIGGGHTS' timer lines of one run)
 
 PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END, DT = 10.0, 300.0, 600.0, 1e-4
-NLAYERS = 7
+NLAYERS = 7  # in.column's default
 
 
 def runs(out):
@@ -77,12 +79,15 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--liggghts", default=os.path.join(REPOSITORY, "build", "liggghts"))
     parser.add_argument("--np", type=int, default=2)
-    parser.add_argument("--t-layer", type=float, default=1.0)
+    parser.add_argument("--t-layer", type=float, default=0.5)
+    parser.add_argument("--t-after", type=float, default=0.3)
     parser.add_argument("--sample", type=int, default=2000)
+    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     args = parser.parse_args()
+    nlayers = int(dict(args.var).get("nlayers", NLAYERS))
 
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
-    t_relax = 2 * NLAYERS * args.t_layer + 1.0
+    t_relax = 2 * nlayers * args.t_layer + args.t_after
     deck = f"""modify_timing on
 variable root index {REPOSITORY}
 include {REPOSITORY}/input_scripts/in.column
@@ -94,7 +99,9 @@ run {args.sample}
     with open(os.path.join(work, "in.bench"), "w") as f:
         f.write(deck)
     cmd = [args.liggghts, "-in", "in.bench", "-log", "log.liggghts", "-var", "t_layer", str(args.t_layer),
-           "-var", "t_relax", str(t_relax), "-var", "t_end", str(t_relax + 1.0), "-var", "every_obs", "1000"]
+           "-var", "t_relax", str(t_relax), "-var", "t_end", str(t_relax + args.t_after), "-var", "every_obs", "1000"]
+    for name, value in args.var:
+        cmd += ["-var", name, value]
     if args.np > 1:
         cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)] + cmd
     print(f"running in {work}: {' '.join(cmd)}", flush=True)
@@ -102,7 +109,7 @@ run {args.sample}
     out = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode(errors="replace")
     wall = time.time() - start
     found = runs(out)
-    if "ERROR" in out or len(found) < 2 * NLAYERS + 3:
+    if "ERROR" in out or len(found) < 2 * nlayers + 3:
         sys.exit(f"the column failed in {work} after {len(found)} runs:\n" + out[-3000:])
 
     # the NSCD split from the sample run's thermo: f_nscd[22], f_nscd[23] in seconds
@@ -111,7 +118,7 @@ run {args.sample}
     detect, solve = (float(v) for v in last_rows[-1]) if last_rows else (0.5, 0.5)
     split = (detect / (detect + solve), solve / (detect + solve)) if detect + solve > 0 else (0.5, 0.5)
 
-    deposition = found[:2 * NLAYERS]
+    deposition = found[:2 * nlayers]
     sample = found[-1]
     print(f"\nmeasured: {len(found)} runs, {sum(r[0] for r in found)} steps, {wall:.0f} s wall "
           f"(mpirun -np {args.np}, t_layer {args.t_layer:g})")
@@ -122,11 +129,11 @@ run {args.sample}
     print(f"{'complete, walls moving':<22}{sample[2]:>7}{sample[0]:>8}{1e3 * sample[1] / sample[0]:>9.2f}")
 
     paper_layer_steps = PAPER_T_LAYER / DT
-    paper_rest_steps = (PAPER_T_END - 2 * NLAYERS * PAPER_T_LAYER) / DT
+    paper_rest_steps = (PAPER_T_END - 2 * nlayers * PAPER_T_LAYER) / DT
     dep_seconds = sum(seconds / steps * paper_layer_steps for steps, seconds, _, _ in deposition)
     rest_seconds = sample[1] / sample[0] * paper_rest_steps
     print(f"\nthe paper's procedure extrapolated: deposition {dep_seconds / 3600:.2f} h "
-          f"(14 x {paper_layer_steps:.0f} steps), relaxation + wall removal {rest_seconds / 3600:.2f} h "
+          f"({2 * nlayers} x {paper_layer_steps:.0f} steps), relaxation + wall removal {rest_seconds / 3600:.2f} h "
           f"({paper_rest_steps:.0f} steps), total {(dep_seconds + rest_seconds) / 3600:.2f} h "
           f"(the paper: about a week on one core; the bar: 2 h)")
 

@@ -4,11 +4,14 @@ deviation over the seeds (the paper's Figs. 8–11).
 
     postprocess/plot_sweep.py sweeps/mu_w/summary.csv [more summary.csv ...] -o mu_w.png
         [--label "μ_w"] [--legend "with wire" ...] [--table]
+        [--baseline sweeps/wire/summary.csv --baseline-label "no wire"]
 
 Input: the summary.csv of postprocess/sweep.py (one row per run). Output: one PNG with four
 panels, H_n, φ_p, U_s/L (wire elastic energy per wire length, in ρ₁ g a_max³ where ρ₁ is
 the density unit of Table 1, ρ_p = 1.5 ρ₁, and lengths are in a_max, g = 1) and z_wpc,
-each against the parameter; one line per summary file. --table prints the means, standard deviations and seed counts.
+each against the parameter; one line per summary file. --table prints the means, standard deviations and seed counts. --baseline:
+the runs of another summary (e.g. the same column without wire) as a horizontal line at
+their mean with a band of ± one standard deviation.
 Uses Debian's python3-matplotlib and numpy."""
 
 import argparse
@@ -56,6 +59,8 @@ def main():
     parser.add_argument("--label", default=None, help="x axis label (default: the parameter's name)")
     parser.add_argument("--legend", nargs="+", default=None, help="one label per summary file")
     parser.add_argument("--table", action="store_true")
+    parser.add_argument("--baseline", default=None, help="a summary.csv drawn as mean ± std across every panel")
+    parser.add_argument("--baseline-label", default="baseline")
     args = parser.parse_args()
     if args.legend and len(args.legend) != len(args.summaries):
         parser.error(f"--legend needs one label per summary file ({len(args.summaries)})")
@@ -74,6 +79,15 @@ def main():
             if args.table:
                 for v, m, s, n in zip(values, means, stds, counts):
                     print(f"{legend}\t{param} = {v:g}\t{name} = {m:.4g} ± {s:.2g} ({n} seeds)")
+    if args.baseline:
+        _, groups = read_summary(args.baseline)
+        for ax, (name, _) in zip(axes.flat, OBSERVABLES):
+            samples = np.concatenate([np.array(groups[v][name]) for v in groups])
+            mean, std = samples.mean(), samples.std(ddof=1) if len(samples) > 1 else 0.0
+            ax.axhline(mean, color="k", ls="--", lw=1, label=f"{args.baseline_label} ({len(samples)} runs)")
+            ax.axhspan(mean - std, mean + std, color="k", alpha=0.1)
+            if args.table:
+                print(f"{args.baseline_label}\t{name} = {mean:.4g} ± {std:.2g} ({len(samples)} runs)")
     for ax in axes.flat:
         ax.grid(alpha=0.3)
     axes.flat[0].legend(fontsize=8)
