@@ -29,16 +29,17 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/held_grains.h"
 #include "plugin_args.h"
+#include "plugin_vector.h"
 #include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using wiregrain_lmp::vec3;
 
 namespace {
 // per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
 constexpr int kGrainRecord = 17;
 
-Eigen::Vector3d vec(const double *p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 }  // namespace
 
 struct FixWireGrain::CoreState {
@@ -225,15 +226,15 @@ void FixWireGrain::hold_grains() {
     g.tag = (long)r[0];
     g.shape = (int)r[1];
     core_->held_type[k] = (int)r[2];
-    g.position = vec(r + 3);
+    g.position = vec3(r + 3);
     g.orientation = Eigen::Quaterniond(r[6], r[7], r[8], r[9]);
-    g.motion.velocity = vec(r + 10);
-    g.motion.angular_velocity = vec(r + 13);
+    g.motion.velocity = vec3(r + 10);
+    g.motion.angular_velocity = vec3(r + 13);
     g.motion.mass = r[16];
   }
   wiregrain::GrainBox box;
-  box.lo = vec(domain->boxlo);
-  box.hi = vec(domain->boxhi);
+  box.lo = vec3(domain->boxlo);
+  box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   try {
     core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, segment_reach_));
@@ -249,10 +250,10 @@ wiregrain::WireSegmentState FixWireGrain::segment_of(int i, int j) const {
   double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
   domain->minimum_image(d);
   wiregrain::WireSegmentState segment;
-  segment.x0 = vec(x[i]);
-  segment.x1 = segment.x0 + vec(d);
-  segment.v0 = vec(v[i]);
-  segment.v1 = vec(v[j]);
+  segment.x0 = vec3(x[i]);
+  segment.x1 = segment.x0 + vec3(d);
+  segment.v0 = vec3(v[i]);
+  segment.v1 = vec3(v[j]);
   segment.m0 = atom->rmass[i];
   segment.m1 = atom->rmass[j];
   segment.radius = atom->radius[i];

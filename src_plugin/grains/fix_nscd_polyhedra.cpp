@@ -24,10 +24,12 @@
 #include "core/nscd/grain_step.h"
 #include "core/nscd/reduced_problem_io.h"
 #include "plugin_args.h"
+#include "plugin_vector.h"
 #include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using wiregrain_lmp::vec3;
 
 namespace {
 
@@ -35,8 +37,6 @@ constexpr int kMaxCapWarnings = 10;
 
 // per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3)
 constexpr int kGrainRecord = 25;
-
-Eigen::Vector3d vec(const double *p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 
 }  // namespace
 
@@ -285,8 +285,8 @@ void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
     if (!(atom->mask[i] & groupbit)) continue;
     const double *start = step_start_velocity_[i];
     const wiregrain::GrainPose pose = wiregrain::advance_grain_pose(
-        {vec(x[i]), Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3])}, vec(atom->inertia[i]),
-        vec(start), vec(atom->v[i]), vec(start + 3), vec(atom->angmom[i]), h, core_->options.solver.theta);
+        {vec3(x[i]), Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3])}, vec3(atom->inertia[i]),
+        vec3(start), vec3(atom->v[i]), vec3(start + 3), vec3(atom->angmom[i]), h, core_->options.solver.theta);
     for (int d = 0; d < 3; d++) x[i][d] = pose.position[d];
     quat[i][0] = pose.orientation.w();
     quat[i][1] = pose.orientation.x();
@@ -354,9 +354,9 @@ void FixNSCDPolyhedra::sync_wall_fixes() {
     if (!wall_fixes_[w]) continue;
     double p[3];
     wall_fixes_[w]->current_point(p);
-    core_->walls[w].point = vec(p);
-    core_->walls[w].normal = vec(wall_fixes_[w]->normal());
-    core_->walls[w].velocity = vec(wall_fixes_[w]->velocity());
+    core_->walls[w].point = vec3(p);
+    core_->walls[w].normal = vec3(wall_fixes_[w]->normal());
+    core_->walls[w].velocity = vec3(wall_fixes_[w]->velocity());
   }
 }
 
@@ -394,14 +394,14 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     wiregrain::GrainState &g = grains[k];
     g.tag = (long)r[0];
     g.shape = (int)r[1];
-    g.position = vec(r + 2);
+    g.position = vec3(r + 2);
     g.orientation = Eigen::Quaterniond(r[5], r[6], r[7], r[8]).normalized();
-    g.velocity = vec(r + 9);
-    g.angular_velocity = vec(r + 12);
-    g.force = ftm2v * vec(r + 15);
-    g.torque = ftm2v * vec(r + 18);
+    g.velocity = vec3(r + 9);
+    g.angular_velocity = vec3(r + 12);
+    g.force = ftm2v * vec3(r + 15);
+    g.torque = ftm2v * vec3(r + 18);
     g.mass = r[21];
-    g.inertia = vec(r + 22);
+    g.inertia = vec3(r + 22);
   }
   std::sort(grains.begin(), grains.end(),
             [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
@@ -545,13 +545,13 @@ void FixNSCDPolyhedra::restart(char *buf) {
   last_h_ = d[k++];
   const size_t nwalls = (size_t)d[k++];
   for (size_t w = 0; w < nwalls; w++, k += 3)
-    if (w < core_->walls.size()) core_->walls[w].point = vec(d + k);
+    if (w < core_->walls.size()) core_->walls[w].point = vec3(d + k);
   const size_t entries = (size_t)d[k++];
   core_->impulses.clear();
   for (size_t e = 0; e < entries; e++) {
     const wiregrain::GrainImpulseMemory::PairKey pair((long)d[k], (long)d[k + 1]);
     const size_t count = (size_t)d[k + 2];
     k += 3;
-    for (size_t c = 0; c < count; c++, k += 6) core_->impulses.add(pair, {vec(d + k), vec(d + k + 3)});
+    for (size_t c = 0; c < count; c++, k += 6) core_->impulses.add(pair, {vec3(d + k), vec3(d + k + 3)});
   }
 }
