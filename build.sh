@@ -24,7 +24,7 @@ PACKAGES=(
   libeigen3-dev libcgal-dev libgsl-dev libvtk9-dev
   libgtest-dev libgmock-dev
   libfclib-dev libsiconos-numerics-dev
-  python3 python3-numpy python3-matplotlib
+  python3 python3-numpy python3-matplotlib python3-vtk9
 )
 
 as_root() {
