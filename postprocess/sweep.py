@@ -14,7 +14,7 @@ finished runs are not repeated, so an interrupted sweep continues where it stopp
 failed run is tried again. --jobs runs that many at once (default: cores / NP).
 
 OUT/summary.csv: one row per finished run (param, value, seed, H_n, phi_p, U_s/L, z_wpc,
-H0, H, wall time in s), read by postprocess/plot_sweep.py. The observables: see
+H0, H, wall time in s), rewritten after every run, read by postprocess/plot_sweep.py. The observables: see
 input_scripts/README.md. Uses only Python's standard library."""
 
 import argparse
@@ -129,6 +129,9 @@ def main():
                 rows[(v, s)] = row
                 print(f"{args.param}={v} seed={s}: H_n {row['H_n']:.4f} phi_p {row['phi_p']:.4f} "
                       f"U_s/L {row['U_s/L']:.4g} z_wpc {row['z_wpc']:.4f} ({row['wall_s']:.0f} s)", flush=True)
+                # rewritten after every run: a sweep cut short still leaves the table of what finished
+                ordered = [rows[k] for k in todo if k in rows]
+                write_summary(os.path.join(args.out, "summary.csv"), ordered)
     ordered = [rows[k] for k in todo if k in rows]
     os.makedirs(args.out, exist_ok=True)
     write_summary(os.path.join(args.out, "summary.csv"), ordered)
