@@ -23,6 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib import cm, colors  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
@@ -101,7 +102,7 @@ def main():
     top = max((e.max() for e in energies), default=1.0)
     energy_norm = colors.Normalize(vmin=0.0, vmax=top if top > 0.0 else 1.0)
 
-    fig = plt.figure(figsize=(4 * len(files), 4.8), constrained_layout=True)
+    fig = plt.figure(figsize=(4.5 * len(files), 4.8), constrained_layout=True)
     axes, extents = [], []
     for k, (grains, wire) in enumerate(files):
         ax = fig.add_subplot(1, len(files), k + 1, projection="3d")
@@ -122,6 +123,7 @@ def main():
         ax.set_ylabel("y [a_max]", fontsize=8)
         ax.set_zlabel("z [a_max]", fontsize=8)
         ax.tick_params(labelsize=7)
+        ax.zaxis.set_major_locator(MaxNLocator(3))  # squat columns: few z ticks, no overlap
     if energies:
         bar = fig.colorbar(cm.ScalarMappable(norm=energy_norm, cmap="plasma"), ax=axes, shrink=0.6)
         bar.set_label("wire elastic energy per bead  [ρ₁ g a_max⁴]")
