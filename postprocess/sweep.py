@@ -4,14 +4,14 @@ side, resumable; collect the final observables in a table.
 
     postprocess/sweep.py PARAM VALUE [VALUE ...] [--seeds 1001 2002 3003]
         [--deck input_scripts/in.column] [--var NAME VALUE ...] [--out sweeps/PARAM]
-        [--jobs N] [--np 1] [--liggghts build/liggghts]
+        [--jobs N] [--np 1] [--liggghts build/liggghts] [--summary-only]
 
 Each run goes to OUT/PARAM=VALUE/seed=S/ (its log, column.obs, restart files, post/) and is
 run as `liggghts -in DECK -var PARAM VALUE -var seed S -var root REPOSITORY [--var ...]`,
 with `mpirun -np NP` when NP > 1. A run is finished when its directory holds final.json
 (written here once the deck printed its "in.column final: ..." line and exited cleanly):
 finished runs are not repeated, so an interrupted sweep continues where it stopped, and a
-failed run is tried again. --jobs runs that many at once (default: cores / NP).
+failed run is tried again. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
 
 OUT/summary.csv: one row per finished run (param, value, seed, H_n, phi_p, U_s/L, z_wpc,
 H0, H, wall time in s), rewritten after every run, read by postprocess/plot_sweep.py. The observables: see
@@ -104,6 +104,8 @@ def main():
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=None)
     parser.add_argument("--liggghts", default=os.path.join(REPOSITORY, "build", "liggghts"))
+    parser.add_argument("--summary-only", action="store_true",
+                        help="run nothing: tabulate the finished runs under --out into summary.csv")
     args = parser.parse_args()
     if args.np < 1:
         parser.error(f"--np must be >= 1, got {args.np}")
@@ -116,6 +118,8 @@ def main():
     jobs = args.jobs or max(1, (os.cpu_count() or 1) // args.np)
 
     todo = [(v, s) for v in args.values for s in args.seeds]
+    if args.summary_only:
+        todo = [(v, s) for v, s in todo if os.path.exists(os.path.join(run_directory(args.out, args.param, v, s), "final.json"))]
     rows, failures = {}, []
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = {pool.submit(run_one, args, v, s): (v, s) for v, s in todo}

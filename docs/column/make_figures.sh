@@ -1,0 +1,19 @@
+#!/bin/sh
+# The README's column figures from the runs kept in docs/column/runs (final observables,
+# column.obs and final VTK of every finished run of the reduced column,
+# input_scripts/in.column_reduced). Run from the repository's top directory:
+#   docs/column/make_figures.sh
+# To add runs: postprocess/sweep.py ... --out /some/dir, then copy each run's final.json,
+# column.obs, command.txt and post/*_final* under docs/column/runs/SWEEP/ and tabulate them:
+# postprocess/sweep.py PARAM VALUES --summary-only --out docs/column/runs/SWEEP
+set -e
+R=docs/column/runs
+P=postprocess
+/usr/bin/python3 $P/plot_sweep.py $R/mu_w/summary.csv -o docs/column/mu_w.png --label "μ_w" \
+    --legend "with wire" --baseline $R/wire/summary.csv --baseline-label "no wire" --table
+/usr/bin/python3 $P/plot_column.py "$R/wire/wire=0/seed=1001" "$R/mu_w/mu_w=0.1/seed=1001" \
+    "$R/mu_w/mu_w=0.6/seed=1001" -o docs/column/wall_removal.png \
+    --legend "no wire" "μ_w = 0.1" "μ_w = 0.6"
+/usr/bin/python3 $P/plot_columns.py "$R/wire/wire=0/seed=1001" "$R/mu_w/mu_w=0.1/seed=1001" \
+    "$R/mu_w/mu_w=0.6/seed=1001" -o docs/column/final_columns.png \
+    --legend "no wire" "μ_w = 0.1" "μ_w = 0.6"
