@@ -62,6 +62,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       held_version_(-1),
       segment_reach_(0.0),
       max_stretch_(0.5),
+      stretch_warned_(false),
       summed_steps_(0),
       bead_force_(NULL),
       output_(NULL),
@@ -237,11 +238,43 @@ void FixWireGrain::hold_grains() {
   box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   try {
-    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, segment_reach_));
+    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, held_reach()));
   } catch (const wiregrain::InvalidArgument &e) {  // the same on every rank
     fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
   }
   held_version_ = nscd_->pose_version();
+}
+
+// The reach of the contact search for the coming NSCD step: segment_reach_ (max_stretch),
+// or 1.25 × the largest ℓ/2 + r_w now when that is larger (a soft wire pinched by a grain
+// can stretch a segment by more than 50 %: Table 1's segment carries one grain's weight
+// at about 50 % strain), with a warning the first time. The ghost cutoff stays
+// (1 + max_stretch) × rest + skin: on several ranks a longer segment loses its far bead
+// and stops the run with an error naming it.
+double FixWireGrain::held_reach() {
+  const int *mask = atom->mask, *next = wire_->wire_next;
+  double local = 0.0, longest;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !next[i]) continue;
+    const int j = atom->map(next[i]);
+    if (j < 0) continue;  // reported by evaluate()
+    const wiregrain::WireSegmentState segment = segment_of(i, j);
+    local = std::max(local, 0.5 * (segment.x1 - segment.x0).norm() + segment.radius);
+  }
+  MPI_Allreduce(&local, &longest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double reach = 1.25 * longest;
+  if (reach <= segment_reach_) return segment_reach_;
+  if (!stretch_warned_ && comm->me == 0) {
+    const std::string text = "fix wire/grain (id " + std::string(id) + "): at step " +
+                             std::to_string(update->ntimestep) + " a segment reaches " +
+                             wiregrain::format_number(longest) + " (half its length + its radius), near " +
+                             wiregrain::format_number(segment_reach_) + " (max_stretch = " +
+                             wiregrain::format_number(max_stretch_) +
+                             "): the contact search widens to follow it; on several ranks raise max_stretch";
+    error->warning(FLERR, text.c_str());
+  }
+  stretch_warned_ = true;
+  return reach;
 }
 
 // The segment from owned bead i to its next bead j (the image nearest to i).
@@ -327,7 +360,7 @@ void FixWireGrain::evaluate(bool setup) {
       });
     } catch (const wiregrain::InvalidArgument &e) {
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
-               " (a segment stretched by more than max_stretch = " + wiregrain::format_number(max_stretch_) + "?)");
+               " (a segment that grew by a fifth of its reach within one NSCD step?)");
     }
   }
   history_->end_step();

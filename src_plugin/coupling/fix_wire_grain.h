@@ -102,6 +102,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   long held_version_;            // the NSCD fix's pose_version() of the held grains
   double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w
   double max_stretch_;           // keyword max_stretch: the strain the contact search allows
+  bool stretch_warned_;          // the warning of a segment beyond max_stretch was given
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
   double **output_;              // per-atom array (see above)
@@ -112,6 +113,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   bigint stats_step_;
 
   void hold_grains();
+  double held_reach();
   void evaluate(bool setup);
   wiregrain::WireSegmentState segment_of(int i, int j) const;
   void record_contact(const wiregrain::WireGrainContact &c, int i, long grain_tag);

@@ -135,6 +135,37 @@ run             16000
         np.testing.assert_allclose(carried, [0.5, 0.5], rtol=1e-6)
 
 
+    def test_a_segment_stretched_beyond_max_stretch_widens_the_search(self):
+        # the same sagging wire with max_stretch 1e-6: its segments stretch beyond that
+        # under their weight, the fix warns once and searches wider; nothing physical
+        # depends on the search, so the shares are those of the default run to round-off
+        made = scene([resting_cube(-1.5, 0), resting_cube(1.5, 0)],
+                     ["line -2.0 0.3 2.3 2.0 0.3 2.3 segment 0.5 radius 0.1"])
+        shares = {}
+        for stretch in ("0.5", "1e-6"):
+            r = run(full_precision(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra every 5 tolerance 1e-10 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains max_stretch {stretch}
+fix             calm wire viscous 0.02
+timestep        1e-3
+dump            d all custom 4000 dump.w id mass x f_wg[3]
+run             4000
+"""), "d"), workdir=made.workdir)
+            self.assertRanCleanly(r)
+            warned = "WARNING: fix wire/grain (id wg): at step" in r.output
+            self.assertEqual(warned, stretch == "1e-6", "warning given" if warned else "no warning")
+            if warned:
+                self.assertEqual(r.output.count("(max_stretch = 1e-06): the contact search widens to follow it"), 1)
+            d = read_dump(r.path("dump.w"))
+            shares[stretch] = -d["f_wg[3]"][d["id"] <= 2]
+        print(f"\nsagging wire: grain loads {shares['0.5']} (max_stretch 0.5) and {shares['1e-6']} (1e-6)")
+        self.assertGreater(shares["0.5"].min(), 0.0)
+        np.testing.assert_allclose(shares["1e-6"], shares["0.5"], rtol=1e-12)
+
+
 class Momentum(DeckTestCase):
     def test_free_grain_hitting_a_free_wire_conserves_momentum(self):
         # zero gravity, no walls: a cube flies into a straight wire; with the forces on
