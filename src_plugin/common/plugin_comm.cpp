@@ -4,6 +4,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "lammps.h"
+#include "memory.h"
 
 namespace wiregrain_lmp {
 
@@ -41,10 +42,25 @@ void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, c
   dv[2] = pbc[2] * h_rate[2];
 }
 
-const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth) {
-  const double *record = atom->extra[nlocal];
-  for (int i = 0; i < nth; i++) record += static_cast<int>(record[0]);
-  return record + 1;
+const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth, int length) {
+  if (!atom->extra || atom->nextra_store <= 0) return nullptr;
+  const double *row = atom->extra[nlocal];
+  int offset = 0;
+  // each record starts with its own length (length word included): walk the nth before ours
+  for (int i = 0; i <= nth; i++) {
+    const double words = row[offset];
+    if (!(words >= 1.0) || offset + words > atom->nextra_store) return nullptr;
+    if (i == nth) return length < 0 || static_cast<int>(words) == length + 1 ? row + offset + 1 : nullptr;
+    offset += static_cast<int>(words);
+  }
+  return nullptr;
+}
+
+void clear_restart_record(LAMMPS_NS::LAMMPS *lmp, int i) {
+  LAMMPS_NS::Atom *atom = lmp->atom;
+  if (!atom->extra || atom->nextra_store <= 0) return;
+  lmp->memory->grow(atom->extra, atom->nmax, atom->nextra_store, "atom:extra");
+  for (int k = 0; k < atom->nextra_store; k++) atom->extra[i][k] = 0.0;
 }
 
 std::vector<double> all_gather_records(MPI_Comm comm, const std::vector<double> &mine) {

@@ -31,8 +31,18 @@ void deforming_image_velocity(int pbc_flag, const int *pbc, int deform_vremap, c
                               double dv[3]);
 
 // A fix's per-atom restart record of atom nlocal (Fix::unpack_restart(nlocal, nth)): the
-// values after its length word, skipping the records of the nth fixes stored before it.
-const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth);
+// values after its length word, skipping the records of the nth fixes stored before it;
+// nullptr when the atom has no record (created after read_restart: see
+// clear_restart_record) or the record is not `length` values long. The caller then starts
+// the atom as new (its set_arrays). length < 0: a record of any length.
+const double *fix_restart_record(const LAMMPS_NS::Atom *atom, int nlocal, int nth, int length);
+
+// An atom created while read_restart's per-atom fix records are pending (atom->extra,
+// until the first run) has none: read_restart sized atom->extra for the atoms it read, so
+// the row of atom i is grown into existence and zeroed (a zero length word = no record).
+// Called by the plugin's atom styles' create_atom; a fix defined after read_restart and
+// create_atoms then starts such atoms as new instead of reading past atom->extra.
+void clear_restart_record(LAMMPS_NS::LAMMPS *lmp, int i);
 
 // Every rank's `mine` (fixed-size records of doubles, any number per rank) concatenated in
 // rank order, returned on every rank: MPI_Allgather of the lengths, then MPI_Allgatherv.

@@ -376,6 +376,7 @@ void AtomVecPolyhedron::create_atom(int itype, double *coord) {
   radius[nlocal] = 0.5;
   rmass[nlocal] = density[nlocal] = 1.0;
   shape[nlocal] = -1;
+  wiregrain_lmp::clear_restart_record(lmp, nlocal);
   atom->nlocal++;
 }
 

@@ -220,7 +220,10 @@ int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
 }
 
 void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
-  unpack_exchange(nlocal, const_cast<double *>(wiregrain_lmp::fix_restart_record(atom, nlocal, nth)));
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, 12);
+  if (!record) set_arrays(nlocal);  // created after read_restart: starts from its own state
+  else
+    unpack_exchange(nlocal, const_cast<double *>(record));
 }
 
 int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 13; }

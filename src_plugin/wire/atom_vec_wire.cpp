@@ -283,6 +283,7 @@ void AtomVecWire::create_atom(int itype, double *coord) {
   wire_prev[nlocal] = 0;
   wire_next[nlocal] = 0;
   wire_rest[nlocal] = 0.0;
+  wiregrain_lmp::clear_restart_record(lmp, nlocal);
   atom->nlocal++;
 }
 

@@ -168,8 +168,10 @@ int FixNVEGear::pack_restart(int i, double *buf) {
 }
 
 void FixNVEGear::unpack_restart(int nlocal, int nth) {
-  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth);
-  for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = record[k];
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, kPerAtom);
+  if (!record) set_arrays(nlocal);  // created after read_restart: starts as new
+  else
+    for (int k = 0; k < kPerAtom; k++) history_[nlocal][k] = record[k];
 }
 
 int FixNVEGear::size_restart(int /*nlocal*/) { return kPerAtom + 1; }

@@ -140,7 +140,9 @@ int FixWireContactHistory::pack_restart(int i, double *buf) {
 }
 
 void FixWireContactHistory::unpack_restart(int nlocal, int nth) {
-  unpack(nlocal, wiregrain_lmp::fix_restart_record(atom, nlocal, nth));
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, -1);
+  if (record) unpack(nlocal, record);
+  else set_arrays(nlocal);
 }
 
 int FixWireContactHistory::size_restart(int nlocal) { return 2 + count_[nlocal] * (1 + kValues); }
