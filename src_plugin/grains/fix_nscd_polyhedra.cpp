@@ -11,6 +11,7 @@
 #include "atom.h"
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "fix_wire_wall.h"
@@ -43,6 +44,13 @@ constexpr int kGrainRecord = 25;
 struct FixNSCDPolyhedra::CoreState {
   wiregrain::GrainStepOptions options;
   std::vector<wiregrain::PlaneWall> walls;
+  // per wall: its own 'wall_friction' given; the others take the grains' 'friction' (at
+  // init and on fix_modify friction), whatever the keyword order
+  std::vector<bool> own_wall_friction;
+  void walls_take_grain_friction() {
+    for (size_t w = 0; w < walls.size(); w++)
+      if (!own_wall_friction[w]) walls[w].friction = options.friction;
+  }
   wiregrain::GrainImpulseMemory impulses;
   wiregrain::ContactList published;
 };
@@ -123,19 +131,20 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       if (!(n > 0.0)) args.fail("wall " + std::to_string(core_->walls.size() + 1) + ": the normal (nx ny nz) must not be zero");
       for (int d = 0; d < 3; d++) w.normal[d] /= n;
       w.velocity.setZero();
-      w.friction = core_->options.friction;
       core_->walls.push_back(w);
+      core_->own_wall_friction.push_back(false);
     } else if (key == "wall_fix") {
-      wiregrain::PlaneWall w;
-      w.friction = core_->options.friction;
-      core_->walls.push_back(w);
+      core_->walls.push_back(wiregrain::PlaneWall());
+      core_->own_wall_friction.push_back(false);
       wall_fix_ids_.resize(core_->walls.size());
       wall_fix_ids_.back() = args.value_word(key);
     } else if (key == "wall_friction" || key == "wall_velocity") {
       if (core_->walls.empty()) args.fail("'" + key + "' must follow a 'wall' or 'wall_fix'");
       wall_fix_ids_.resize(core_->walls.size());
-      if (key == "wall_friction") core_->walls.back().friction = args.value_nonnegative(key);
-      else if (!wall_fix_ids_.back().empty())
+      if (key == "wall_friction") {
+        core_->walls.back().friction = args.value_nonnegative(key);
+        core_->own_wall_friction.back() = true;
+      } else if (!wall_fix_ids_.back().empty())
         args.fail("'wall_velocity' does not apply to 'wall_fix " + wall_fix_ids_.back() +
                   "' (the fix moves the plane: fix_modify " + wall_fix_ids_.back() + " velocity ...)");
       else
@@ -146,6 +155,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   }
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
   wall_fix_ids_.resize(core_->walls.size());
+  core_->walls_take_grain_friction();
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
@@ -236,6 +246,13 @@ int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNSCDPolyhedra::init() {
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nscd/polyhedra", "grains");
+  // detection works on the grains' coordinates as they are, without minimum image
+  for (int d = 0; d < 3; d++)
+    if (domain->periodicity[d])
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 std::string("periodic boundaries are not supported (boundary p along ") + "xyz"[d] +
+                                     "): contacts across them would not be found; use boundary f or m");
+  core_->walls_take_grain_friction();
   wall_fixes_.assign(wall_fix_ids_.size(), NULL);
   for (size_t w = 0; w < wall_fix_ids_.size(); w++) {
     if (wall_fix_ids_[w].empty()) continue;
@@ -506,7 +523,10 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
   else if (key == "overlap_recovery") core_->options.solver.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
   else if (key == "overlap_speed") core_->options.solver.overlap_speed = args.value_nonnegative(key);
   else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
-  else core_->options.friction = args.value_nonnegative(key);
+  else {
+    core_->options.friction = args.value_nonnegative(key);
+    core_->walls_take_grain_friction();
+  }
   return 2;
 }
 

@@ -146,6 +146,42 @@ run             3000
         self.assertAlmostEqual(travelled, 1.0, delta=0.005)
 
 
+class WallFriction(DeckTestCase):
+    # The same launch (v0 = 1) stops after v0²/(2 μ g) with the floor's μ: a wall takes the
+    # grains' 'friction' whatever the keyword order, follows fix_modify friction, and keeps
+    # its own 'wall_friction'.
+    def stop(self, fix_line, before_run=""):
+        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity {G} vector 0 0 -1
+{fix_line}
+timestep        1e-3
+variable        x1 equal x[1]
+thermo_style    custom step v_x1
+thermo_modify   format float %.15g
+thermo          100
+run             0
+{before_run}
+velocity        all set 1.0 0 0
+run             5000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        return r.thermo()["x1"][-1]
+
+    def test_order_and_fix_modify(self):
+        cases = [("friction after the wall", "fix nscd all nscd/polyhedra tolerance 1e-8 wall 0 0 0 0 0 1 friction 0.25",
+                  "", 0.25),
+                 ("fix_modify friction", "fix nscd all nscd/polyhedra tolerance 1e-8 wall 0 0 0 0 0 1",
+                  "fix_modify nscd friction 0.25", 0.25),
+                 ("own wall_friction", "fix nscd all nscd/polyhedra tolerance 1e-8 wall 0 0 0 0 0 1 wall_friction 0.5",
+                  "fix_modify nscd friction 0.25", 0.5)]
+        for name, fix_line, before_run, mu in cases:
+            travelled = self.stop(fix_line, before_run)
+            print(f"{name}: stopped after {travelled:.6f}, v0^2/(2 mu g) = {1 / (2 * mu * G):.6f}")
+            self.assertAlmostEqual(travelled, 1 / (2 * mu * G), delta=1e-3, msg=name)  # θ = 1 lags by h v0/2
+
+
 class Corner(DeckTestCase):
     # A cube in the corner of a floor and a frictionless wall, pushed into it by a tilted
     # gravity. Frictionless floor: floor force m g cos α, wall force m g sin α exactly.
@@ -573,6 +609,12 @@ class BadInput(DeckTestCase):
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
+        periodic = deck("fix nscd all nscd/polyhedra wall 0 0 0 0 0 1\nrun 1").replace("boundary        f f f",
+                                                                                        "boundary        f p f")
+        self.assertStopsWith(run(periodic, workdir=made.workdir),
+                             "fix nscd/polyhedra (id nscd): periodic boundaries are not supported (boundary p along y): "
+                             "contacts across them would not be found; use boundary f or m")
         wire = """
 units lj
 atom_style wire
