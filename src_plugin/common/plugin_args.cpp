@@ -32,12 +32,17 @@ std::string StyleArgs::value_word(const std::string& keyword) {
   return std::string(arg_[pos_++]);
 }
 
-double StyleArgs::value_double(const std::string& keyword) {
-  const std::string word = value_word(keyword);
+bool parse_finite_number(const char* word, double& value) {
   char* end = nullptr;
   errno = 0;
-  const double v = std::strtod(word.c_str(), &end);
-  if (end == word.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+  value = std::strtod(word, &end);
+  return end != word && *end == '\0' && errno != ERANGE && std::isfinite(value);
+}
+
+double StyleArgs::value_double(const std::string& keyword) {
+  const std::string word = value_word(keyword);
+  double v = 0.0;
+  if (!parse_finite_number(word.c_str(), v))
     fail("value of '" + keyword + "' must be a finite number, got '" + word + "'");
   return v;
 }

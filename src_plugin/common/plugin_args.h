@@ -45,6 +45,10 @@ class StyleArgs {
   int pos_;
 };
 
+// The whole word as a finite double (no trailing characters, no inf/nan, no overflow such as
+// 1e400); false otherwise. Used for every number read from the input and data files.
+bool parse_finite_number(const char* word, double& value);
+
 // "<kind> <style> (id <ID>): <what>" through error->all, for checks outside parsing.
 [[noreturn]] void style_error(LAMMPS_NS::Error* error, const std::string& kind,
                               const std::string& style, const std::string& id,

@@ -20,6 +20,7 @@
 
 #include "core/common/errors.h"
 #include "core/geometry/shape_library.h"
+#include "plugin_args.h"
 #include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
@@ -433,9 +434,16 @@ void AtomVecPolyhedron::omega_from_angmom(int i) {
 }
 
 namespace {
-[[noreturn]] void data_error(Error *error, const std::string &what) {
-  error->one(FLERR, ("atom_style polyhedron: Atoms section of data file: " + what).c_str());
+[[noreturn]] void data_error(Error *error, const std::string &what, const char *section = "Atoms") {
+  error->one(FLERR, (std::string("atom_style polyhedron: ") + section + " section of data file: " + what).c_str());
   std::abort();
+}
+// a finite number, else "<name> must be a finite number, got '<word>'"
+double data_number(Error *error, const char *word, const std::string &name, const char *section = "Atoms") {
+  double value = 0.0;
+  if (!wiregrain_lmp::parse_finite_number(word, value))
+    data_error(error, name + " must be a finite number, got '" + word + "'", section);
+  return value;
 }
 }  // namespace
 
@@ -473,11 +481,11 @@ int AtomVecPolyhedron::data_atom_hybrid(int nlocal, char **values) {
   if (end == values[0] || *end != '\0' || s < 0 || s >= library_->size())
     data_error(error, std::string("shape '") + values[0] + "' is not in the shape library (" +
                           std::to_string(library_->size()) + " shapes; a library comes from create_grains or a restart file)");
-  const double rho = std::strtod(values[1], &end);
-  if (end == values[1] || *end != '\0' || !(rho > 0.0))
-    data_error(error, std::string("density must be > 0, got '") + values[1] + "'");
+  double rho = 0.0;
+  if (!wiregrain_lmp::parse_finite_number(values[1], rho) || !(rho > 0.0))
+    data_error(error, std::string("density must be a finite number > 0, got '") + values[1] + "'");
   double q[4];
-  for (int d = 0; d < 4; d++) q[d] = std::strtod(values[2 + d], NULL);
+  for (int d = 0; d < 4; d++) q[d] = data_number(error, values[2 + d], std::string("q") + "wijk"[d]);
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (!(norm > 0.0)) data_error(error, "the quaternion qw qi qj qk must not be zero");
   for (int d = 0; d < 4; d++) quat[nlocal][d] = q[d] / norm;
@@ -486,12 +494,16 @@ int AtomVecPolyhedron::data_atom_hybrid(int nlocal, char **values) {
 }
 
 void AtomVecPolyhedron::data_vel(int m, char **values) {
-  for (int d = 0; d < 3; d++) v[m][d] = std::strtod(values[d], NULL);
+  for (int d = 0; d < 3; d++)
+    v[m][d] = data_number(error, values[d], "v" + std::string(1, "xyz"[d]) + " of atom " + std::to_string(tag[m]),
+                          "Velocities");
   data_vel_hybrid(m, &values[3]);
 }
 
 int AtomVecPolyhedron::data_vel_hybrid(int m, char **values) {
-  for (int d = 0; d < 3; d++) omega[m][d] = std::strtod(values[d], NULL);
+  for (int d = 0; d < 3; d++)
+    omega[m][d] = data_number(error, values[d],
+                              "omega" + std::string(1, "xyz"[d]) + " of atom " + std::to_string(tag[m]), "Velocities");
   angmom_from_omega(m);
   return 3;
 }

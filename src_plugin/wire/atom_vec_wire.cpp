@@ -13,6 +13,7 @@
 #include "memory.h"
 #include "modify.h"
 
+#include "plugin_args.h"
 #include "plugin_comm.h"
 
 using namespace LAMMPS_NS;
@@ -300,10 +301,9 @@ int data_tag(Error *error, const char *word, const char *name) {
   return (int)value;
 }
 double data_value(Error *error, const char *word, const char *name, bool positive) {
-  char *end = NULL;
-  const double value = std::strtod(word, &end);
-  if (end == word || *end != '\0' || !(positive ? value > 0.0 : value >= 0.0))
-    data_error(error, std::string(name) + (positive ? " must be > 0" : " must be >= 0") +
+  double value = 0.0;
+  if (!wiregrain_lmp::parse_finite_number(word, value) || !(positive ? value > 0.0 : value >= 0.0))
+    data_error(error, std::string(name) + (positive ? " must be a finite number > 0" : " must be a finite number >= 0") +
                           ", got '" + word + "'");
   return value;
 }
@@ -325,6 +325,20 @@ void AtomVecWire::data_atom(double *coord, tagint imagetmp, char **values) {
   image[nlocal] = imagetmp;
   mask[nlocal] = 1;
   atom->nlocal++;
+}
+
+// Velocities section: id vx vy vz, each a finite number (LIGGGHTS' own reader takes "1.0x"
+// as 1 and "abc" as 0)
+void AtomVecWire::data_vel(int m, char **values) {
+  for (int d = 0; d < 3; d++) {
+    double value = 0.0;
+    if (!wiregrain_lmp::parse_finite_number(values[d], value))
+      error->one(FLERR, ("atom_style wire: Velocities section of data file: v" + std::string(1, "xyz"[d]) +
+                         " of atom " + std::to_string(atom->tag[m]) + " must be a finite number, got '" + values[d] +
+                         "'")
+                            .c_str());
+    atom->v[m][d] = value;
+  }
 }
 
 int AtomVecWire::data_atom_hybrid(int nlocal, char **values) {

@@ -45,6 +45,7 @@ class AtomVecWire : public PluginAtomVec {
   void create_atom(int, double *);
   void data_atom(double *, tagint, char **);
   int data_atom_hybrid(int, char **);
+  void data_vel(int, char **);
   void pack_data(double **);
   int pack_data_hybrid(int, double *);
   void write_data(FILE *, int, double **);

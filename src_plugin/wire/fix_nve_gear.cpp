@@ -1,6 +1,11 @@
 #include "fix_nve_gear.h"
 
+#include <mpi.h>
+
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <string>
 
 #include "atom.h"
 #include "error.h"
@@ -8,6 +13,7 @@
 #include "memory.h"
 #include "update.h"
 
+#include "core/common/validation.h"
 #include "core/wire/gear_integrator.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
@@ -72,6 +78,33 @@ void FixNVEGear::init() {
         wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
                                    "mass of atom type " + std::to_string(t) + " is not set");
   }
+  // a = F/m needs a finite m > 0 (LIGGGHTS' set diameter 0 gives a sphere rmass 0, set mass 1e400 inf)
+  if (atom->rmass) {
+    // the lowest tag of a bad mass in the group over all ranks, and that mass
+    const int none = std::numeric_limits<int>::max();
+    int mine = none, lowest = none;
+    double mine_mass = 0.0, mass = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && !(std::isfinite(atom->rmass[i]) && atom->rmass[i] > 0.0) &&
+          atom->tag[i] < mine) {
+        mine = atom->tag[i];
+        mine_mass = atom->rmass[i];
+      }
+    MPI_Allreduce(&mine, &lowest, 1, MPI_INT, MPI_MIN, world);
+    if (lowest != none) {
+      const double owned = mine == lowest ? mine_mass : 0.0;  // only its owner adds a value
+      MPI_Allreduce(&owned, &mass, 1, MPI_DOUBLE, MPI_SUM, world);
+      wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                                 "atom " + std::to_string(lowest) + " has mass " + wiregrain::format_number(mass) +
+                                     " (must be a finite number > 0)");
+    }
+  } else {
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (!(std::isfinite(atom->mass[t]) && atom->mass[t] > 0.0))
+        wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                                   "mass of atom type " + std::to_string(t) + " is " +
+                                       wiregrain::format_number(atom->mass[t]) + " (must be a finite number > 0)");
+  }
   dt_ = update->dt;
 }
 
@@ -122,10 +155,12 @@ void FixNVEGear::final_integrate() {
                                                 ? wiregrain::GearCoefficients::velocity_forces()
                                                 : wiregrain::GearCoefficients::position_forces(),
                                             dt_);
+  int non_finite = -1;  // the first atom with a non-finite force, checked after the loop
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double inv_m = force->ftm2v / mass_of(i);
     const double a[3] = {f[i][0] * inv_m, f[i][1] * inv_m, f[i][2] * inv_m};
+    if (non_finite < 0 && !std::isfinite(a[0] + a[1] + a[2])) non_finite = i;
     if (scheme_ == VERLET) {
       wiregrain::verlet_kick(v[i], a, dt_);
     } else if (history_[i][kStartedFlag] == 0.0) {
@@ -137,6 +172,12 @@ void FixNVEGear::final_integrate() {
       wiregrain::gear5_correct(x[i], v[i], history_[i], a, corrector);
     }
   }
+  // a NaN or inf from any force style stops here instead of spreading through the positions
+  if (non_finite >= 0)
+    error->one(FLERR, ("fix nve/gear (id " + std::string(id) + "): atom " + std::to_string(atom->tag[non_finite]) +
+                       " has a non-finite force at step " + std::to_string(update->ntimestep) +
+                       " (from a force style or fix acting on it)")
+                          .c_str());
 }
 
 double FixNVEGear::memory_usage() { return double(atom->nmax) * kPerAtom * sizeof(double); }

@@ -22,6 +22,7 @@
 #include "update.h"
 
 #include "core/common/errors.h"
+#include "core/common/validation.h"
 #include "core/wire/gear_integrator.h"
 #include "core/wire/wire_elasticity.h"
 #include "plugin_args.h"
@@ -246,6 +247,12 @@ void FixWireElastic::post_force(int /*vflag*/) {
         bead_energy_[n][0] += 0.5 * s.energy;
       }
       bead_energy_[i][2] = (xn - xi).norm();
+      if (!(bead_energy_[i][2] > 0.0))  // the stretching force along (xn − xi)/|xn − xi| has no direction
+        error->one(FLERR, ("fix wire/elastic (id " + std::string(id) + "): the segment from bead " +
+                           std::to_string(tag[i]) + " to bead " + std::to_string(next[i]) + " has zero length at step " +
+                           std::to_string(update->ntimestep) + " (rest length " + wiregrain::format_number(rest[i]) +
+                           "): two beads at one position")
+                              .c_str());
     }
     if (p >= nlocal) {  // segment from a ghost previous bead: our share only
       const wiregrain::StretchResult s = wiregrain::wire_stretch(xp, xi, axial(p), rest[p]);

@@ -575,18 +575,37 @@ class BadInput(DeckTestCase):
         self.assertStopsWith(run(deck(f"fix nscd all nscd/polyhedra {options}\nrun 1"), workdir=made.workdir), message)
 
     def test_non_finite_state(self):
+        # the data reader refuses non-finite numbers (test_malformed_data_file); LIGGGHTS' set
+        # does not (atof: 1e400 = inf)
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0), (3, 0, 0.5, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
-        with open(made.path("grains.data")) as f:
-            lines = f.read().splitlines()
-        k = next(i for i, line in enumerate(lines) if line.startswith("Velocities")) + 3   # grain 2
-        words = lines[k].split()
-        words[1] = "nan"
-        lines[k] = " ".join(words)
-        with open(made.path("grains.data"), "w") as f:
-            f.write("\n".join(lines) + "\n")
-        self.assertStopsWith(run(deck("fix nscd all nscd/polyhedra wall 0 0 0 0 0 1\nrun 1"), workdir=made.workdir),
+        self.assertStopsWith(run(deck("set atom 2 vx 1e400\nfix nscd all nscd/polyhedra wall 0 0 0 0 0 1\nrun 1"),
+                                 workdir=made.workdir),
                              "fix nscd/polyhedra (id nscd): grain 2 has a non-finite velocity at step 0")
+
+    def test_malformed_data_file(self):
+        # non-finite and malformed numbers in the Atoms and Velocities sections of a grain data file
+        def stops(section, column, word, message):
+            made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
+            with open(made.path("grains.data")) as f:
+                lines = f.read().splitlines()
+            if section == "Velocities":
+                lines += ["", "Velocities", "", "1 0 0 0 0 0 0"]
+            k = next(i for i, line in enumerate(lines) if line.startswith(section)) + 2
+            words = lines[k].split()
+            words[column] = word
+            lines[k] = " ".join(words)
+            with open(made.path("grains.data"), "w") as f:
+                f.write("\n".join(lines) + "\n")
+            self.assertStopsWith(run(deck("run 0"), workdir=made.workdir), message)
+        atoms = "atom_style polyhedron: Atoms section of data file: "
+        stops("Atoms", 3, "inf", atoms + "density must be a finite number > 0, got 'inf'")
+        stops("Atoms", 3, "1e400", atoms + "density must be a finite number > 0, got '1e400'")
+        stops("Atoms", 4, "1.0x", atoms + "qw must be a finite number, got '1.0x'")
+        stops("Atoms", 7, "nan", atoms + "qk must be a finite number, got 'nan'")
+        velocities = "atom_style polyhedron: Velocities section of data file: "
+        stops("Velocities", 2, "abc", velocities + "vy of atom 1 must be a finite number, got 'abc'")
+        stops("Velocities", 6, "inf", velocities + "omegaz of atom 1 must be a finite number, got 'inf'")
 
     def test_messages(self):
         self.check("friction -0.1", "fix nscd/polyhedra (id nscd): value of 'friction' must be >= 0, got -0.1")

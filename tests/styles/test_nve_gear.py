@@ -173,6 +173,31 @@ class BadInput(DeckTestCase):
         self.check("forces both",
                    "fix nve/gear (id integr): value of 'forces' must be position or velocity")
 
+    def test_bad_mass(self):
+        # a sphere of diameter 0 has rmass 0 (LIGGGHTS' set accepts it); set mass 1e400 gives inf
+        spheres = """
+units           lj
+atom_style      sphere
+boundary        f f f
+region          box block -5 5 -5 5 -5 5
+create_box      1 box
+create_atoms    1 single 0 0 0
+create_atoms    1 single 1 0 0
+set             atom 2 {what}
+fix             integr all nve/gear
+run             1
+"""
+        self.assertStopsWith(run(spheres.format(what="diameter 0")),
+                             "fix nve/gear (id integr): atom 2 has mass 0 (must be a finite number > 0)")
+        self.assertStopsWith(run(spheres.format(what="mass 1e400")),
+                             "fix nve/gear (id integr): atom 2 has mass inf (must be a finite number > 0)")
+
+    def test_non_finite_force(self):
+        # an infinite force from another style (here fix addforce) stops at the step it appears
+        r = point_mass("variable big equal 1e300*(step>=3)*1e300\nfix push all addforce v_big 0 0", steps=10)
+        self.assertStopsWith(r, "fix nve/gear (id integr): atom 1 has a non-finite force at step 3 "
+                                "(from a force style or fix acting on it)")
+
 
 if __name__ == "__main__":
     main()

@@ -375,6 +375,32 @@ class BadInput(DeckTestCase):
     def test_zero_length_line(self):
         self.check("create_wire 1 line 1 1 1 1 1 1", "command create_wire (id -):")
 
+    def test_malformed_data_file(self):
+        # non-finite and malformed numbers in the Atoms and Velocities sections; two beads at
+        # one position (a zero-length segment has no stretching direction)
+        read = "\nunits lj\natom_style wire\nboundary f f f\nread_data chain.data\n"
+        chain = data_file([(0, 0, 0), (0.2, 0, 0), (0.4, 0, 0)], 0.2, 0.1, 1.0)
+        for column, word, message in (
+                (6, "1e400", "mass must be a finite number > 0, got '1e400'"),
+                (6, "inf", "mass must be a finite number > 0, got 'inf'"),
+                (5, "nan", "radius must be a finite number > 0, got 'nan'"),
+                (4, "inf", "rest-length must be a finite number >= 0, got 'inf'")):
+            lines = chain.splitlines()
+            k = lines.index("Atoms") + 2
+            words = lines[k].split()
+            words[column] = word
+            lines[k] = " ".join(words)
+            self.assertStopsWith(run(read + "run 0\n", files={"chain.data": "\n".join(lines) + "\n"}),
+                                 "atom_style wire: Atoms section of data file: " + message)
+        velocities = chain + "\nVelocities\n\n1 0 0 0\n2 1.0x 0 0\n3 0 0 0\n"
+        self.assertStopsWith(run(read + "run 0\n", files={"chain.data": velocities}),
+                             "atom_style wire: Velocities section of data file: vx of atom 2 must be a finite number, "
+                             "got '1.0x'")
+        same = data_file([(0, 0, 0), (0.2, 0, 0), (0.2, 0, 0)], 0.2, 0.1, 1.0)
+        self.assertStopsWith(run(read + "fix el all wire/elastic\nrun 0\n", files={"chain.data": same}),
+                             "fix wire/elastic (id el): the segment from bead 2 to bead 3 has zero length at step 0 "
+                             "(rest length 0.2): two beads at one position")
+
     def test_wire_outside_box(self):
         self.check("create_wire 1 line 0 0 0 50 0 0", "beads lie outside the simulation box")
 
