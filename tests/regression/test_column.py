@@ -76,6 +76,8 @@ class Column(DeckTestCase):
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (4 R = 4)"),
+                                   ({"E_w": -5}, "pair wire/contact (id -): youngsModulus of atom type 2 must be "
+                                                 "a finite number > 0, got -5"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)
