@@ -239,7 +239,7 @@ void FixWireGrain::hold_grains() {
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   try {
     core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, held_reach()));
-  } catch (const wiregrain::InvalidArgument &e) {  // the same on every rank
+  } catch (const std::exception &e) {  // the same on every rank
     fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
   }
   held_version_ = nscd_->pose_version();
@@ -358,7 +358,7 @@ void FixWireGrain::evaluate(bool setup) {
         loads.add(grain_tag, c.force_grain, c.torque_grain);
         record_contact(c, i, grain_tag);
       });
-    } catch (const wiregrain::InvalidArgument &e) {
+    } catch (const std::exception &e) {  // InvalidArgument, NumericalFailure of the geometry
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
                " (a segment that grew by a fifth of its reach within one NSCD step?)");
     }

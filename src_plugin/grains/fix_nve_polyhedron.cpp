@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -71,17 +72,26 @@ void FixNVEPolyhedron::initial_integrate(int /*vflag*/) {
       v[i][d] += half * f[i][d];
       x[i][d] += dt * v[i][d];
     }
-    wiregrain::RigidRotation body(Eigen::Vector3d(inertia[i][0], inertia[i][1], inertia[i][2]),
-                                  Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3]),
-                                  Eigen::Vector3d(angmom[i][0], angmom[i][1], angmom[i][2]));
-    body.kick(Eigen::Vector3d(torque[i][0], torque[i][1], torque[i][2]), 0.5 * dt * force->ftm2v);
-    body.rotate_free(dt, scheme);
-    const Eigen::Quaterniond &q = body.orientation();
+    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+    Eigen::Vector3d l = Eigen::Vector3d::Zero();
+    try {  // the core refuses non-finite inertia, orientation or time step: an ERROR, not std::terminate
+      wiregrain::RigidRotation body(Eigen::Vector3d(inertia[i][0], inertia[i][1], inertia[i][2]),
+                                    Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3]),
+                                    Eigen::Vector3d(angmom[i][0], angmom[i][1], angmom[i][2]));
+      body.kick(Eigen::Vector3d(torque[i][0], torque[i][1], torque[i][2]), 0.5 * dt * force->ftm2v);
+      body.rotate_free(dt, scheme);
+      q = body.orientation();
+      l = body.angular_momentum();
+    } catch (const std::exception &e) {
+      error->one(FLERR, ("fix nve/polyhedron (id " + std::string(id) + "): grain " + std::to_string(atom->tag[i]) +
+                         " at step " + std::to_string(update->ntimestep) + ": " + e.what())
+                            .c_str());
+    }
     quat[i][0] = q.w();
     quat[i][1] = q.x();
     quat[i][2] = q.y();
     quat[i][3] = q.z();
-    for (int d = 0; d < 3; d++) angmom[i][d] = body.angular_momentum()[d];
+    for (int d = 0; d < 3; d++) angmom[i][d] = l[d];
     grains_->omega_from_angmom(i);
   }
 }
