@@ -62,6 +62,80 @@ run             10000
             self.assertAlmostEqual(measured, e, delta=1e-3)
 
 
+class Stiffness(DeckTestCase):
+    # The contact stiffnesses of the paper (section 2.2), measured statically: two one-segment
+    # wires crossed at right angles at a known overlap ξ (no velocity: no damping) push each
+    # other with k_n ξ, k_n = E* l_w π/4, 1/E* = (1−ν_a²)/E_a + (1−ν_b²)/E_b (E_ww = E/2 for
+    # one material); the upper wire then moved by δ along x at a constant speed and stopped
+    # carries the tangential spring force k_t δ, k_t = E* r_w, below the slip limit μ_s k_n ξ.
+    # A bead on a rigid wall: k_n = E/(1−ν²) l π/4, k_t = E/(1−ν²) r per bead.
+    CROSSED = HEADER + """
+fix             mE all property/global youngsModulus peratomtype {E1} {E2}
+fix             mNu all property/global poissonsRatio peratomtype {nu1} {nu2}
+create_wire     1 line -0.1 0 {z} 0.1 0 {z}
+create_wire     2 line 0 -0.1 -{z} 0 0.1 -{z}
+group           upper type 1
+pair_style      wire/contact mu_s 0.5 mu_d 0.5
+pair_coeff      * *
+neighbor        0.1 bin
+timestep        1e-3
+compute         f upper reduce sum fx fy fz
+thermo_style    custom step c_f[1] c_f[2] c_f[3]
+thermo_modify   format float %.17g norm no
+thermo          1
+run             0
+fix             mv upper move linear {v} 0 0
+run             {steps}
+unfix           mv
+velocity        upper set 0 0 0
+run             0
+"""
+
+    def test_wire_wire(self):
+        r_w, l_w, xi, delta, steps = 0.1, 0.2, 1e-3, 4e-4, 100
+        for E1, E2, nu1, nu2 in ((100.0, 100.0, 0.0, 0.0), (100.0, 300.0, 0.3, 0.2)):
+            r = run(self.CROSSED.format(E1=E1, E2=E2, nu1=nu1, nu2=nu2, z=r_w - xi / 2, v=delta / (steps * 1e-3),
+                                        steps=steps))
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            E_star = 1.0 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+            k_n, k_t = E_star * l_w * math.pi / 4, E_star * r_w
+            normal, tangential = t["f[3]"][0], -t["f[1]"][-1]
+            print(f"crossed wires E {E1:g}/{E2:g} nu {nu1:g}/{nu2:g}: normal {normal:.12g} vs k_n xi "
+                  f"{k_n * xi:.12g}; tangential {tangential:.12g} vs k_t delta {k_t * delta:.12g}")
+            self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=1e-6)
+            self.assertLess(k_t * delta, 0.5 * k_n * xi)  # below the slip limit
+            self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=1e-6)
+
+    def test_wall(self):
+        r_w, l_w, xi, delta, steps, E, nu = 0.1, 0.2, 1e-3, 4e-4, 100, 100.0, 0.3
+        r = run(HEADER + f"""
+create_wire     1 line -0.1 0 {r_w - xi!r} 0.1 0 {r_w - xi!r}
+fix             wall all wire/wall plane 0 0 0 0 0 1 E {E} nu {nu} mu_s 0.5 mu_d 0.5
+atom_modify     sort 0 0.0
+timestep        1e-3
+compute         f all reduce sum fx fy fz
+thermo_style    custom step c_f[1] c_f[2] c_f[3]
+thermo_modify   format float %.17g norm no
+thermo          1
+run             0
+fix             mv all move linear {delta / (steps * 1e-3)!r} 0 0
+run             {steps}
+unfix           mv
+velocity        all set 0 0 0
+run             0
+""")
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        E_star = E / (1 - nu ** 2)
+        k_n, k_t = E_star * l_w * math.pi / 4, E_star * r_w
+        normal, tangential = t["f[3]"][0], -t["f[1]"][-1]
+        print(f"wire on a wall: normal {normal:.12g} vs 2 k_n xi {2 * k_n * xi:.12g}; tangential {tangential:.12g} "
+              f"vs 2 k_t delta {2 * k_t * delta:.12g}")
+        self.assertAlmostEqual(normal / (2 * k_n * xi), 1.0, delta=1e-6)
+        self.assertAlmostEqual(tangential / (2 * k_t * delta), 1.0, delta=1e-6)
+
+
 class Friction(DeckTestCase):
     # A straight 10-segment wire lying on a floor (μ_s = 0.6, μ_d = 0.4) under gravity g = 1.
     def floor_deck(self, extra, steps):

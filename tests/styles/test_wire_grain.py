@@ -4,6 +4,8 @@ sub-cycle, error messages."""
 
 import os
 
+import math
+
 import numpy as np
 
 from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
@@ -164,6 +166,43 @@ run             4000
         print(f"\nsagging wire: grain loads {shares['0.5']} (max_stretch 0.5) and {shares['1e-6']} (1e-6)")
         self.assertGreater(shares["0.5"].min(), 0.0)
         np.testing.assert_allclose(shares["1e-6"], shares["0.5"], rtol=1e-12)
+
+
+class Stiffness(DeckTestCase):
+    def test_segment_on_a_face_at_a_known_overlap(self):
+        # the paper's wire–grain stiffnesses, measured statically (no gravity, no velocity: no
+        # damping): a segment (l = 1) lying across the top face of a cube at overlap ξ pushes
+        # with k_n ξ, k_n = E_wp l π/4, 1/E_wp = (1−ν_w²)/E_w + (1−ν_p²)/E_p; then moved by δ
+        # along its length (the cube held by the floor's friction) and stopped, it carries
+        # k_t δ, k_t = E_wp r_w, below the slip limit μ_s k_n ξ.
+        E_w, nu_w, E_p, nu_p, r_w, l_w, xi, delta, steps = 100.0, 0.0, 1000.0, 0.3, 0.1, 1.0, 1e-3, 4e-4, 100
+        z = 2.1 + 0.1 + r_w - xi  # the sharp top face at 2.1 (the cube rests on its sweep 0.1), sweep 0.1
+        made = scene([resting_cube(0, 0)], [f"line -0.5 0.2 {z!r} 0.5 0.2 {z!r} segment {l_w} radius {r_w}"])
+        r = run(deck(f"""
+fix             nscd grains nscd/polyhedra tolerance 1e-12 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains E_w {E_w} nu_w {nu_w} E_p {E_p} nu_p {nu_p} mu_s 0.5 mu_d 0.5
+timestep        1e-3
+compute         f wire reduce sum fx fy fz
+thermo_style    custom step c_f[1] c_f[2] c_f[3]
+thermo_modify   format float %.17g norm no
+thermo          1
+run             0
+fix             mv wire move linear {delta / (steps * 1e-3)!r} 0 0
+run             {steps}
+unfix           mv
+velocity        wire set 0 0 0
+run             0
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        first, last = r.thermo(0), r.thermo()
+        E_wp = 1.0 / ((1 - nu_w ** 2) / E_w + (1 - nu_p ** 2) / E_p)
+        k_n, k_t = E_wp * l_w * math.pi / 4, E_wp * r_w
+        normal, tangential = first["f[3]"][0], -last["f[1]"][-1]
+        print(f"segment on a face: normal {normal:.12g} vs k_n xi {k_n * xi:.12g}; tangential {tangential:.12g} "
+              f"vs k_t delta {k_t * delta:.12g}")
+        self.assertLess(k_t * delta, 0.5 * k_n * xi)
+        self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=1e-6)
+        self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=1e-6)
 
 
 class Momentum(DeckTestCase):
