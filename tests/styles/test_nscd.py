@@ -121,7 +121,7 @@ run             2000
         expected = G * (math.sin(theta) - 0.5 * math.cos(theta))
         print(f"incline: sticks at atan(mu) - 0.5 deg (moved {np.max(np.abs(stick['x1'] - stick['x1'][0])):.1e}); "
               f"at +0.5 deg a = {a:.6f}, g(sin - mu cos) = {expected:.6f}")
-        self.assertAlmostEqual(a / expected, 1.0, delta=0.005)
+        self.assertAlmostEqual(a / expected, 1.0, delta=1e-6)
 
 
 class Launch(DeckTestCase):
