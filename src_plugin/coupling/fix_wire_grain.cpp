@@ -246,35 +246,36 @@ void FixWireGrain::hold_grains() {
 }
 
 // The reach of the contact search for the coming NSCD step: segment_reach_ (max_stretch),
-// or 1.25 × the largest ℓ/2 + r_w now when that is larger (a soft wire pinched by a grain
+// or 1.25 ℓ/2 + r_w of the longest segment now when that is larger, i.e. once a segment is
+// 20 % longer than its rest length at max_stretch 0.5 (a soft wire pinched by a grain
 // can stretch a segment by more than 50 %: Table 1's segment carries one grain's weight
 // at about 50 % strain), with a warning the first time. The ghost cutoff stays
 // (1 + max_stretch) × rest + skin: on several ranks a longer segment loses its far bead
 // and stops the run with an error naming it.
 double FixWireGrain::held_reach() {
   const int *mask = atom->mask, *next = wire_->wire_next;
-  double local = 0.0, longest;
+  double local = 0.0, needed;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || !next[i]) continue;
     const int j = atom->map(next[i]);
     if (j < 0) continue;  // reported by evaluate()
     const wiregrain::WireSegmentState segment = segment_of(i, j);
-    local = std::max(local, 0.5 * (segment.x1 - segment.x0).norm() + segment.radius);
+    // room for the segment to grow by a quarter within the NSCD step
+    local = std::max(local, 1.25 * 0.5 * (segment.x1 - segment.x0).norm() + segment.radius);
   }
-  MPI_Allreduce(&local, &longest, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double reach = 1.25 * longest;
-  if (reach <= segment_reach_) return segment_reach_;
+  MPI_Allreduce(&local, &needed, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (needed <= segment_reach_) return segment_reach_;
   if (!stretch_warned_ && comm->me == 0) {
     const std::string text = "fix wire/grain (id " + std::string(id) + "): at step " +
-                             std::to_string(update->ntimestep) + " a segment reaches " +
-                             wiregrain::format_number(longest) + " (half its length + its radius), near " +
+                             std::to_string(update->ntimestep) + " a segment needs a reach of " +
+                             wiregrain::format_number(needed) + " (1.25 × half its length + its radius), beyond " +
                              wiregrain::format_number(segment_reach_) + " (max_stretch = " +
                              wiregrain::format_number(max_stretch_) +
                              "): the contact search widens to follow it; on several ranks raise max_stretch";
     error->warning(FLERR, text.c_str());
   }
   stretch_warned_ = true;
-  return reach;
+  return needed;
 }
 
 // The segment from owned bead i to its next bead j (the image nearest to i).
