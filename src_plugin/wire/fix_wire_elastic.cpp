@@ -150,9 +150,10 @@ double FixWireElastic::critical_time_step() {
 }
 
 void FixWireElastic::setup(int vflag) {
-  if (!reported_time_step_) {
+  // reported at the first run that has a segment (a deck may lay its wire later)
+  const double dt_crit = reported_time_step_ ? 0.0 : critical_time_step();
+  if (!reported_time_step_ && dt_crit < 1e300) {
     reported_time_step_ = true;
-    const double dt_crit = critical_time_step();
     bool gear = false;
     for (int k = 0; k < modify->nfix; k++)
       if (FixNVEGear *g = dynamic_cast<FixNVEGear *>(modify->fix[k])) gear = gear || g->uses_gear();

@@ -339,6 +339,21 @@ run 10
                       "0.00218609 of the gear5 integrator", self.run_with("gear5", 0.003))
         self.assertNotIn("WARNING", self.run_with("verlet", 0.003))
 
+    def test_wire_laid_after_the_first_run(self):
+        # in.column lays its wire after the first run: the estimate waits for a segment
+        # (it printed 1e+300 for the empty group, and never again)
+        res = run(HEADER + """
+fix el all wire/elastic
+fix int all nve/gear
+timestep 1e-4
+run 0
+create_wire 1 line 0 0 0 4 0 0
+run 10
+""")
+        self.assertRanCleanly(res)
+        self.assertNotIn("1e+300", res.output)
+        self.assertEqual(res.output.count("elastic critical time step 0.0139686 (Verlet limit), gear5 limit 0.00218609"), 1)
+
 
 class BadInput(DeckTestCase):
     def check(self, body, message, files=None):
