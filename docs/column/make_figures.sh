@@ -19,3 +19,6 @@ P=postprocess
     --legend "no wire" "μ_w = 0.1" "μ_w = 0.6"
 /usr/bin/python3 $P/plot_columns.py "$R/R5/wire=0/seed=1001" "$R/R5/wire=1/seed=1001" \
     -o docs/column/final_columns_R5.png --legend "R = 5, no wire" "R = 5, μ_w = 0.5"
+/usr/bin/python3 $P/plot_columns.py "$R/wire/wire=0/seed=1001" "$R/mu_w/mu_w=0.6/seed=1001" \
+    "$R/E_w/E_w=1000/seed=1001" "$R/E_w/E_w=10000/seed=1001" -o docs/column/final_columns_E_w.png \
+    --legend "no wire" "E_w = 100" "E_w = 1000" "E_w = 10000"
