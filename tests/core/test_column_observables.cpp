@@ -17,7 +17,8 @@ TEST(ColumnObservables, GrainTopIsTheHighestCoreVertexPlusTheSweep) {
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(M_PI / 4, Vector3d::UnitX()));
   const PosedShape grain(cube, Vector3d(0.3, -1.0, 5.0), turn);
   EXPECT_NEAR(grain_top(grain), 5.0 + std::sqrt(2.0) + 0.1, 1e-14);
-  const PosedShape ball(ConvexShape::sphere(0.7), Vector3d(1, 2, 3), Eigen::Quaterniond::Identity());
+  const ConvexShape sphere = ConvexShape::sphere(0.7);
+  const PosedShape ball(sphere, Vector3d(1, 2, 3), Eigen::Quaterniond::Identity());
   EXPECT_NEAR(grain_top(ball), 3.7, 1e-15);
 }
 

@@ -64,6 +64,8 @@ class PosedShape {
   // orientation: body -> world, any non-zero finite quaternion (normalised here).
   PosedShape(const ConvexShape& shape, const Eigen::Vector3d& position,
              const Eigen::Quaterniond& orientation);
+  // it keeps a reference to the shape: a temporary would dangle (found by AddressSanitizer)
+  PosedShape(ConvexShape&&, const Eigen::Vector3d&, const Eigen::Quaterniond&) = delete;
 
   const ConvexShape& shape() const { return *shape_; }
   const Eigen::Vector3d& position() const { return position_; }
