@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, main, read_dump, run
+from liggghts_run import DeckTestCase, main, read_dump, run, static_contact_measurement
 
 HEADER = """
 units           lj
@@ -78,24 +78,13 @@ group           upper type 1
 pair_style      wire/contact mu_s 0.5 mu_d 0.5
 pair_coeff      * *
 neighbor        0.1 bin
-timestep        1e-3
-compute         f upper reduce sum fx fy fz
-thermo_style    custom step c_f[1] c_f[2] c_f[3]
-thermo_modify   format float %.17g norm no
-thermo          1
-run             0
-fix             mv upper move linear {v} 0 0
-run             {steps}
-unfix           mv
-velocity        upper set 0 0 0
-run             0
 """
 
     def test_wire_wire(self):
         r_w, l_w, xi, delta, steps = 0.1, 0.2, 1e-3, 4e-4, 100
         for E1, E2, nu1, nu2 in ((100.0, 100.0, 0.0, 0.0), (100.0, 300.0, 0.3, 0.2)):
-            r = run(self.CROSSED.format(E1=E1, E2=E2, nu1=nu1, nu2=nu2, z=r_w - xi / 2, v=delta / (steps * 1e-3),
-                                        steps=steps))
+            r = run(self.CROSSED.format(E1=E1, E2=E2, nu1=nu1, nu2=nu2, z=r_w - xi / 2) +
+                    static_contact_measurement("upper", delta, steps))
             self.assertRanCleanly(r)
             t = r.thermo()
             E_star = 1.0 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
@@ -113,18 +102,7 @@ run             0
 create_wire     1 line -0.1 0 {r_w - xi!r} 0.1 0 {r_w - xi!r}
 fix             wall all wire/wall plane 0 0 0 0 0 1 E {E} nu {nu} mu_s 0.5 mu_d 0.5
 atom_modify     sort 0 0.0
-timestep        1e-3
-compute         f all reduce sum fx fy fz
-thermo_style    custom step c_f[1] c_f[2] c_f[3]
-thermo_modify   format float %.17g norm no
-thermo          1
-run             0
-fix             mv all move linear {delta / (steps * 1e-3)!r} 0 0
-run             {steps}
-unfix           mv
-velocity        all set 0 0 0
-run             0
-""")
+""" + static_contact_measurement("all", delta, steps))
         self.assertRanCleanly(r)
         t = r.thermo()
         E_star = E / (1 - nu ** 2)

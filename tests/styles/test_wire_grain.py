@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
+from liggghts_run import DeckTestCase, full_precision, main, read_dump, run, static_contact_measurement
 
 G = 1.0
 HEADER = """
@@ -183,18 +183,7 @@ class Stiffness(DeckTestCase):
         r = run(deck(f"""
 fix             nscd grains nscd/polyhedra tolerance 1e-12 wall 0 0 0 0 0 1
 fix             wg wire wire/grain grains E_w {E_w} nu_w {nu_w} E_p {E_p} nu_p {nu_p} mu_s 0.5 mu_d 0.5
-timestep        1e-3
-compute         f wire reduce sum fx fy fz
-thermo_style    custom step c_f[1] c_f[2] c_f[3]
-thermo_modify   format float %.17g norm no
-thermo          1
-run             0
-fix             mv wire move linear {delta / (steps * 1e-3)!r} 0 0
-run             {steps}
-unfix           mv
-velocity        wire set 0 0 0
-run             0
-"""), workdir=made.workdir)
+""" + static_contact_measurement("wire", delta, steps)), workdir=made.workdir)
         self.assertRanCleanly(r)
         first, last = r.thermo(0), r.thermo()
         E_wp = 1.0 / ((1 - nu_w ** 2) / E_w + (1 - nu_p ** 2) / E_p)

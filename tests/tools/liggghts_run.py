@@ -122,6 +122,27 @@ def full_precision(text, dump_id):
     raise AssertionError(f"no custom dump {dump_id!r} in the deck")
 
 
+def static_contact_measurement(group, displacement, steps=100, dt=1e-3):
+    """Deck lines that measure a contact's stiffness statically on `group` (the atoms that
+    touch something at a known overlap, no gravity): the summed force at rest (first
+    thermo table, normal spring), then the group moved by `displacement` along x at a
+    constant speed with fix move and stopped (last table: tangential spring, no damping).
+    Thermo columns c_f[1..3] = the group's summed fx fy fz, not normalised."""
+    return f"""
+timestep        {dt!r}
+compute         f {group} reduce sum fx fy fz
+thermo_style    custom step c_f[1] c_f[2] c_f[3]
+thermo_modify   format float %.17g norm no
+thermo          1
+run             0
+fix             mv {group} move linear {displacement / (steps * dt)!r} 0 0
+run             {steps}
+unfix           mv
+velocity        {group} set 0 0 0
+run             0
+"""
+
+
 def deck(name):
     """Text of a deck shipped in the repository (path relative to the repository root)."""
     with open(os.path.join(SOURCE, name)) as f:
