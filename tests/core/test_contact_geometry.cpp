@@ -1397,3 +1397,24 @@ TEST(SegmentPolyhedron, FeatureGapLimitKeepsDistancesAndClosestPoints) {
     EXPECT_NEAR(fast.t_end, 0.375, 1e-12);
   }
 }
+
+// Two unit cubes stacked face on face, tilted by ~1e-13 rad (the pose reached by the 79th
+// and 80th boxes of a 100-box stack after 377 steps, bench/nscd_stack): the manifold is
+// the four corners of the common face with the vertical normal, and every normal is
+// finite (it was NaN: parallel vertical edges of the two cubes along the normal).
+TEST(ContactManifold, NearlyAlignedStackedCubesGiveFiniteNormals) {
+  const ConvexShape cube = ConvexShape::cube(1.0);
+  const PosedShape a(cube, Vector3d(-1.116220222764176e-11, 3.9193682649784572e-12, 78.500000000000412),
+                     Quaterniond(1, 4.9932801647295658e-13, -1.3124828810540053e-13, -3.3622917882442687e-15).normalized());
+  const PosedShape b(cube, Vector3d(-1.1198556209923648e-11, 4.5188922851255296e-12, 79.500000000000426),
+                     Quaterniond(1, 3.2661069140543906e-13, -2.34396231224576e-13, -1.3164640659096194e-14).normalized());
+  const ContactManifold m = contact_manifold(a, b, 1e-3);
+  ASSERT_EQ(m.points.size(), 4u);
+  for (const ContactPoint& p : m.points) {
+    EXPECT_TRUE(p.normal.allFinite());
+    EXPECT_NEAR((p.normal - Vector3d::UnitZ()).norm(), 0.0, 1e-9);
+    EXPECT_NEAR(p.gap, 0.0, 1e-9);
+    EXPECT_NEAR(std::fabs(p.position.x()), 0.5, 1e-9);
+    EXPECT_NEAR(std::fabs(p.position.y()), 0.5, 1e-9);
+  }
+}

@@ -984,7 +984,7 @@ CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
   }
   const SatAxis axis = sat_polytopes(a, b);
   out.normal = axis.normal;
-  if (!g.touching) {
+  if (!g.touching && g.distance > 0.0) {
     // Disjoint but nearly touching: exact closest points. The normal is the direction
     // of largest separation: the SAT axis (exact when the contact involves a face or two
     // crossing edges), unless the GJK direction separates more (vertex–vertex,
@@ -1002,6 +1002,8 @@ CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
     }
     return out;
   }
+  // Overlapping, or touching with coincident closest points (GJK distance exactly 0: no
+  // direction from the points; seen on stacked cubes tilted by 1e-13): the SAT.
   out.method = DistanceMethod::sat;
   out.distance = -axis.depth;
   const Vector3d& n = axis.normal;
@@ -1144,7 +1146,7 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
   } else {
     const SatAxis axis = sat_segment(grain, S.end, size);
     n = axis.normal;
-    if (g.touching) {
+    if (g.touching || !(g.distance > 0.0)) {  // coincident closest points: no direction
       out.method = DistanceMethod::sat;
       out.distance = -axis.depth;
     } else {

@@ -215,6 +215,8 @@ GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vec
   result.stats.max_overlap = solved.max_overlap;
   result.stats.max_predicted_penetration = solved.max_predicted_penetration;
   result.stats.hit_iteration_cap = report.hit_iteration_cap;
+  result.stats.subspace_solves = report.subspace_solves;
+  result.stats.subspace_accepted = report.subspace_accepted;
   return result;
 }
 

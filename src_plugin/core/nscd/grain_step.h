@@ -119,6 +119,7 @@ struct GrainStepStats {
   double max_overlap = 0.0;                // at the step start
   double max_predicted_penetration = 0.0;
   bool hit_iteration_cap = false;
+  int subspace_solves = 0, subspace_accepted = 0;  // method subspace (nscd_solver.h)
 };
 
 struct GrainStepResult {

@@ -1,6 +1,8 @@
 // NSCD Gauss–Seidel solver; the formulation is in core/nscd_solver.h.
 #include "core/nscd/nscd_solver.h"
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -50,6 +52,10 @@ void NscdOptions::validate() const {
   if (!(overlap_speed >= 0.0)) {
     throw InvalidArgument("overlap_speed", "overlap_speed must be >= 0, got " + format_number(overlap_speed));
   }
+  if (!(subspace_regularization > 0.0 && subspace_regularization < 1.0)) {
+    throw InvalidArgument("subspace_regularization", "subspace_regularization must be in (0, 1), got " +
+                                                         format_number(subspace_regularization));
+  }
   if (!(overlap_recovery >= 0.0 && overlap_recovery <= 1.0)) {
     throw InvalidArgument("overlap_recovery", "overlap_recovery must be in [0, 1], got " +
                                                   format_number(overlap_recovery));
@@ -72,6 +78,96 @@ double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3
   const double error = std::sqrt(sum);
   return scale > DBL_EPSILON ? error / scale : error;
 }
+
+namespace {
+
+// One subspace correction (header): solve the sticking contacts together, keep the result
+// if it lowers the Siconos error `error_before`. Returns whether it was kept.
+bool subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
+                         const std::vector<ContactState>& states, double regularization,
+                         double error_before) {
+  const int n = op.contact_count();
+  std::vector<int> index(n, -1), solved;
+  // closing or touching (u_n ≤ 0 up to rounding): e.g. the interfaces of a stack falling
+  // as one body in the first sweeps, which Gauss–Seidel loads one interface per sweep
+  const double closing = 1e-12 * op.free_velocity_norm();
+  for (int c = 0; c < n; ++c) {
+    if ((states[c] != ContactState::open && impulses[c][0] > 0.0) || op.velocity(c)[0] <= closing) {
+      index[c] = static_cast<int>(solved.size());
+      solved.push_back(c);
+    }
+  }
+  if (solved.empty()) return false;
+  const BlockSparseMatrix3& W = op.delassus_matrix();
+  const int m = 3 * static_cast<int>(solved.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
+    for (const BlockSparseMatrix3::Entry& e : W.row(solved[i])) {
+      const int j = index[e.column];
+      if (j < 0) continue;
+      for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) entries.emplace_back(3 * i + a, 3 * j + b, e.block(a, b));
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> A(m, m);
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseMatrix<double> regularized = A;
+  for (int k = 0; k < m; ++k) regularized.coeffRef(k, k) *= 1.0 + regularization;
+  regularized.makeCompressed();
+  // The fill-reducing ordering (AMD) costs ~20 times the numerical factorisation; it is
+  // kept from the last solve of this thread while the pattern of W_SS is unchanged (a
+  // resting stack or pile: the same contacts step after step).
+  struct FactorCache {
+    std::vector<int> outer, inner;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
+  };
+  thread_local FactorCache cache;
+  const auto same_pattern = [&]() {
+    const int* outer = regularized.outerIndexPtr();
+    const int* inner = regularized.innerIndexPtr();
+    return cache.outer.size() == static_cast<std::size_t>(m + 1) &&
+           std::equal(cache.outer.begin(), cache.outer.end(), outer) &&
+           cache.inner.size() == static_cast<std::size_t>(regularized.nonZeros()) &&
+           std::equal(cache.inner.begin(), cache.inner.end(), inner);
+  };
+  if (!same_pattern()) {
+    cache.outer.assign(regularized.outerIndexPtr(), regularized.outerIndexPtr() + m + 1);
+    cache.inner.assign(regularized.innerIndexPtr(), regularized.innerIndexPtr() + regularized.nonZeros());
+    cache.factor.analyzePattern(regularized);
+  }
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& factor = cache.factor;
+  factor.factorize(regularized);
+  if (factor.info() != Eigen::Success) return false;
+  Eigen::VectorXd rhs(m);
+  Eigen::VectorXd current(m);
+  for (int i = 0; i < static_cast<int>(solved.size()); ++i) current.segment<3>(3 * i) = impulses[solved[i]];
+  for (int i = 0; i < static_cast<int>(solved.size()); ++i) rhs.segment<3>(3 * i) = -op.velocity(solved[i]);
+  rhs += A * current;  // −(u_S without the impulses of S)
+  Eigen::VectorXd x = factor.solve(rhs);
+  for (int refinement = 0; refinement < 2; ++refinement) x += factor.solve(rhs - A * x);
+  if (!x.allFinite()) return false;
+  x -= current;
+
+  std::vector<Eigen::Vector3d> delta(solved.size());
+  for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
+    const int c = solved[i];
+    const Eigen::Vector3d updated =
+        project_on_coulomb_cone(impulses[c] + x.segment<3>(3 * i), op.friction_coefficient(c));
+    delta[i] = updated - impulses[c];
+    op.add_impulse(c, delta[i]);
+    impulses[c] = updated;
+  }
+  const double error_after = siconos_error(op, impulses);
+  if (error_after < error_before) return true;
+  for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
+    op.add_impulse(solved[i], -delta[i]);
+    impulses[solved[i]] -= delta[i];
+  }
+  return false;
+}
+
+}  // namespace
 
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
                                          const std::vector<Eigen::Vector3d>& warm_start) {
@@ -102,6 +198,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   std::mt19937_64 generator(options.seed);
   const double omega = options.relaxation;
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
+  int subspace_wait = 2, next_subspace = 2;       // method subspace
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     if (options.order == SweepOrder::random) {
@@ -179,6 +276,24 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         break;
     }
     if (converged) break;
+    if (options.method == SolverMethod::subspace && iteration >= next_subspace &&
+        iteration < options.max_iterations) {
+      const double error_before = siconos_error(op, result.impulses);
+      ++report.subspace_solves;
+      if (subspace_correction(op, result.impulses, result.states, options.subspace_regularization,
+                              error_before)) {
+        ++report.subspace_accepted;
+        subspace_wait = 2;
+        const double error = siconos_error(op, result.impulses);
+        if (options.measure != ConvergenceMeasure::increment && error <= options.tolerance) {
+          report.residual = error;
+          break;
+        }
+      } else {
+        subspace_wait *= 2;
+      }
+      next_subspace = iteration + subspace_wait;
+    }
     if (iteration == options.max_iterations) report.hit_iteration_cap = true;
   }
   report.siconos_error = siconos_error(op, result.impulses);
@@ -303,6 +418,30 @@ class BodyContactOperator final : public ContactOperator {
     if (link.body_b >= 0) velocities_[link.body_b].noalias() += link.response_b * delta;
   }
   double free_velocity_norm() const override { return norm_q_; }
+  // W = H M⁻¹ Hᵀ: a block between every two contacts that share a body.
+  const BlockSparseMatrix3& delassus_matrix() override {
+    if (delassus_.block_count() == contact_count()) return delassus_;
+    const int n = contact_count();
+    delassus_ = BlockSparseMatrix3(n);
+    // per body, the contacts touching it with that side's H and M⁻¹ Hᵀ
+    struct Touch {
+      int contact;
+      const ContactJacobian* H;
+      const Eigen::Matrix<double, 6, 3>* response;
+    };
+    std::vector<std::vector<Touch>> touches(velocities_.size());
+    for (int c = 0; c < n; ++c) {
+      const Link& link = links_[c];
+      if (link.body_a >= 0) touches[link.body_a].push_back({c, &link.jacobian_a, &link.response_a});
+      if (link.body_b >= 0) touches[link.body_b].push_back({c, &link.jacobian_b, &link.response_b});
+    }
+    for (const std::vector<Touch>& body : touches) {
+      for (const Touch& row : body) {
+        for (const Touch& column : body) delassus_.add(row.contact, column.contact, *row.H * *column.response);
+      }
+    }
+    return delassus_;
+  }
 
   const std::vector<Vector6d>& body_velocities() const { return velocities_; }
   double start_normal_velocity(int c) const { return start_normal_velocity_[c]; }
@@ -325,6 +464,7 @@ class BodyContactOperator final : public ContactOperator {
   std::vector<Eigen::Matrix<double, 6, 6>> inverse_mass_;
   std::vector<double> start_normal_velocity_;
   double norm_q_ = 0.0;
+  BlockSparseMatrix3 delassus_;  // assembled on demand
 };
 
 }  // namespace
@@ -498,6 +638,7 @@ class ReducedOperator final : public ContactOperator {
   }
   void add_impulse(int c, const Eigen::Vector3d& delta) override { impulses_[c] += delta; }
   double free_velocity_norm() const override { return norm_q_; }
+  const BlockSparseMatrix3& delassus_matrix() override { return problem_.W; }
 
  private:
   const ReducedProblem& problem_;
@@ -525,46 +666,15 @@ double siconos_error(const ReducedProblem& problem, const std::vector<Eigen::Vec
 
 ReducedProblem assemble_reduced(const NscdStep& step, const NscdOptions& options) {
   options.validate();
-  const BodyContactOperator op(step, options);  // validates, gives q
+  BodyContactOperator op(step, options);  // validates, gives q and W
   const int n = op.contact_count();
-  const int body_count = static_cast<int>(step.bodies.size());
   ReducedProblem problem;
-  problem.W = BlockSparseMatrix3(n);
+  problem.W = op.delassus_matrix();
   problem.q.resize(3 * n);
   problem.mu.resize(n);
-
-  // Per body: the contacts touching it, with that side's H and M⁻¹ Hᵀ.
-  struct Touch {
-    int contact;
-    ContactJacobian H;
-    Eigen::Matrix<double, 6, 3> response;
-  };
-  std::vector<std::vector<Touch>> touches(body_count);
-  std::vector<Eigen::Matrix<double, 6, 6>> inverse_mass(body_count);
-  for (int b = 0; b < body_count; ++b) {
-    inverse_mass[b].setZero();
-    inverse_mass[b].topLeftCorner<3, 3>().diagonal().setConstant(step.bodies[b].inverse_mass);
-    inverse_mass[b].bottomRightCorner<3, 3>() = step.bodies[b].inverse_inertia;
-  }
   for (int c = 0; c < n; ++c) {
-    const NscdContact& contact = step.contacts[c];
-    if (contact.body_a >= 0) {
-      touches[contact.body_a].push_back(
-          {c, contact.jacobian_a, inverse_mass[contact.body_a] * contact.jacobian_a.transpose()});
-    }
-    if (contact.body_b >= 0) {
-      touches[contact.body_b].push_back(
-          {c, contact.jacobian_b, inverse_mass[contact.body_b] * contact.jacobian_b.transpose()});
-    }
     problem.q.segment<3>(3 * c) = op.velocity(c);
-    problem.mu[c] = contact.friction;
-  }
-  for (int b = 0; b < body_count; ++b) {
-    for (const Touch& row : touches[b]) {
-      for (const Touch& column : touches[b]) {
-        problem.W.add(row.contact, column.contact, row.H * column.response);
-      }
-    }
+    problem.mu[c] = step.contacts[c].friction;
   }
   return problem;
 }

@@ -49,6 +49,26 @@
 //                     twentieth of the sweeps done).
 // or the iteration cap (hit_iteration_cap = true; both numbers are reported).
 //
+// Subspace correction (method subspace; the idea of the projected Gauss–Seidel subspace
+// minimisation of Silcowitz, Niebe & Erleben, 2010). Gauss–Seidel settles which contacts
+// are closed within a few sweeps but needs ~N² (a compressed chain) to ~N⁴ (welded
+// interfaces: a bent beam) sweeps to carry a load through N bodies. So, between sweeps,
+// the closed contacts S (loaded, r_n > 0 and not open in the last sweep, or closing or
+// touching, u_n ≤ 1e-12 ‖q‖) are solved together as if they stuck, the impulses of the
+// others held:
+//     (W_SS + ε D_S) r_S = −(u_S − W_SS r_S^old),   D_S = diag(W_SS),
+// ε = subspace_regularization, by a sparse LDLᵀ factorisation (Eigen's SimplicialLDLT,
+// AMD ordering, kept while the pattern of W_SS does not change) and two steps of
+// iterative refinement on W_SS. W_SS is singular where a face touches at more than three
+// points; ε picks the least-norm split of the load among them (no velocity depends on
+// it), which also drops the self-equilibrated tangential impulses that Gauss–Seidel
+// leaves on the cone's edge. The candidate, projected on the Coulomb cones (a contact
+// that slides comes out of the stick solve outside its cone), is kept if it lowers the
+// Siconos error, else dropped; the sweeps go on either way. Schedule: a first solve
+// after sweep 2, the next 2 sweeps after a kept solve and twice the last wait after a
+// dropped one (2, 4, 8, …: a logarithmic number of factorisations where it does not
+// help).
+//
 // Siconos error (fc3d_compute_error of Siconos numerics 4.4 as fc3d_nsgs calls it, with
 // the De Saxcé modified velocity, natural_map_residual in core/coulomb_local.h):
 //     error = sqrt(Σ_c ‖r_c − proj_{K_μc}(r_c − u_c − μ_c ‖u_t,c‖ e_n)‖²)
@@ -78,6 +98,10 @@ enum class SweepOrder {
 
 enum class ConvergenceMeasure { increment, natural_map, increment_then_natural_map };
 
+// gauss_seidel: sweeps only. subspace: sweeps, and between them a direct solve on the
+// sticking contacts (see "Subspace correction" at the top of this file).
+enum class SolverMethod { gauss_seidel, subspace };
+
 // Defaults: random order and the increment-then-natural-map measure. Measured on a
 // column of 20 frictional cubes (4 points per interface, docs/core_nscd.md): to a Siconos
 // error of 1e-6 the forward order needs ~230000 sweeps, alternating ~17000, random ~6500;
@@ -90,6 +114,9 @@ struct NscdOptions {
   std::uint64_t seed = 1;  // random order
   double relaxation = 1.0;  // ω in (0, 2): r ← ω r_local + (1 − ω) r
   ConvergenceMeasure measure = ConvergenceMeasure::increment_then_natural_map;
+  SolverMethod method = SolverMethod::gauss_seidel;
+  // subspace: Tikhonov weight ε of the stick solve, relative to each row's diagonal of W
+  double subspace_regularization = 1e-9;
   // Moreau–Jean law (solve_nscd_step and assemble_reduced only; see above).
   double theta = 1.0;        // [0.5, 1]
   double restitution = 0.0;  // [0, 1]
@@ -110,6 +137,36 @@ struct NscdReport {
   int open = 0, stick = 0, slide = 0;  // contact states in the last sweep
   long newton_iterations = 0;          // all local slide Newton steps
   long slide_fallbacks = 0;            // local slide solves that needed the scan
+  int subspace_solves = 0;             // stick solves tried (method subspace)
+  int subspace_accepted = 0;           // of which lowered the Siconos error and were kept
+};
+
+// n × n blocks of 3×3, stored by block row (each row sorted by column).
+class BlockSparseMatrix3 {
+ public:
+  struct Entry {
+    int column;
+    Eigen::Matrix3d block;
+  };
+
+  BlockSparseMatrix3() = default;
+  explicit BlockSparseMatrix3(int block_count);
+
+  int block_count() const { return static_cast<int>(rows_.size()); }
+  long stored_blocks() const;
+  // Adds `block` to block (row, column), creating it if absent.
+  void add(int row, int column, const Eigen::Matrix3d& block);
+  // nullptr when the block is not stored.
+  const Eigen::Matrix3d* find(int row, int column) const;
+  const std::vector<Entry>& row(int row) const { return rows_[row]; }
+
+  // Keeps the blocks with at least one non-zero entry. dense: 3n × 3n.
+  static BlockSparseMatrix3 from_dense(const Eigen::MatrixXd& dense);
+  Eigen::MatrixXd to_dense() const;
+  Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+
+ private:
+  std::vector<std::vector<Entry>> rows_;
 };
 
 // What the Gauss–Seidel solver needs from a problem. The operator starts in the state
@@ -126,6 +183,8 @@ class ContactOperator {
   virtual void add_impulse(int contact, const Eigen::Vector3d& delta) = 0;
   // ‖q‖ (all contacts), the Siconos error's normalisation.
   virtual double free_velocity_norm() const = 0;
+  // W itself (method subspace only; may be assembled on the first call).
+  virtual const BlockSparseMatrix3& delassus_matrix() = 0;
 };
 
 struct ContactSolution {
@@ -207,34 +266,6 @@ inline Eigen::Vector3d theta_method_displacement(const Eigen::Vector3d& v_begin,
 
 // ---------------------------------------------------------------------------------------
 // Reduced ("local" in FCLib's words) problem: u = W r + q, W given as 3×3 blocks.
-
-// n × n blocks of 3×3, stored by block row (each row sorted by column).
-class BlockSparseMatrix3 {
- public:
-  struct Entry {
-    int column;
-    Eigen::Matrix3d block;
-  };
-
-  BlockSparseMatrix3() = default;
-  explicit BlockSparseMatrix3(int block_count);
-
-  int block_count() const { return static_cast<int>(rows_.size()); }
-  long stored_blocks() const;
-  // Adds `block` to block (row, column), creating it if absent.
-  void add(int row, int column, const Eigen::Matrix3d& block);
-  // nullptr when the block is not stored.
-  const Eigen::Matrix3d* find(int row, int column) const;
-  const std::vector<Entry>& row(int row) const { return rows_[row]; }
-
-  // Keeps the blocks with at least one non-zero entry. dense: 3n × 3n.
-  static BlockSparseMatrix3 from_dense(const Eigen::MatrixXd& dense);
-  Eigen::MatrixXd to_dense() const;
-  Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
-
- private:
-  std::vector<std::vector<Entry>> rows_;
-};
 
 struct ReducedProblem {
   BlockSparseMatrix3 W;
