@@ -83,6 +83,15 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       else if (v == "alternating") core_->options.solver.order = wiregrain::SweepOrder::alternating;
       else if (v == "random") core_->options.solver.order = wiregrain::SweepOrder::random;
       else args.fail("value of 'order' must be forward, alternating or random, got '" + v + "'");
+    } else if (key == "method") {
+      const std::string v = args.value_word(key);
+      if (v == "gauss_seidel") core_->options.solver.method = wiregrain::SolverMethod::gauss_seidel;
+      else if (v == "subspace") core_->options.solver.method = wiregrain::SolverMethod::subspace;
+      else args.fail("value of 'method' must be gauss_seidel or subspace, got '" + v + "'");
+    } else if (key == "subspace_regularization") {
+      const double v = args.value_positive(key);
+      if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + std::to_string(v));
+      core_->options.solver.subspace_regularization = v;
     } else if (key == "seed") {
       const long seed = args.value_int(key);
       if (seed < 1) args.fail("value of 'seed' must be >= 1");

@@ -283,12 +283,13 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
       if (subspace_correction(op, result.impulses, result.states, options.subspace_regularization,
                               error_before)) {
         ++report.subspace_accepted;
-        subspace_wait = 2;
         const double error = siconos_error(op, result.impulses);
         if (options.measure != ConvergenceMeasure::increment && error <= options.tolerance) {
           report.residual = error;
           break;
         }
+        // soon again only after a solve that cut the error tenfold (header)
+        subspace_wait = error <= 0.1 * error_before ? 2 : 2 * subspace_wait;
       } else {
         subspace_wait *= 2;
       }

@@ -65,9 +65,9 @@
 // leaves on the cone's edge. The candidate, projected on the Coulomb cones (a contact
 // that slides comes out of the stick solve outside its cone), is kept if it lowers the
 // Siconos error, else dropped; the sweeps go on either way. Schedule: a first solve
-// after sweep 2, the next 2 sweeps after a kept solve and twice the last wait after a
-// dropped one (2, 4, 8, …: a logarithmic number of factorisations where it does not
-// help).
+// after sweep 2, the next 2 sweeps after a solve that cut the error tenfold, else twice
+// the last wait (2, 4, 8, …: a logarithmic number of factorisations where the solve does
+// not help, e.g. where many contacts slide or open).
 //
 // Siconos error (fc3d_compute_error of Siconos numerics 4.4 as fc3d_nsgs calls it, with
 // the De Saxcé modified velocity, natural_map_residual in core/coulomb_local.h):

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""Benchmark: does an undamped pile come to rest? 500 Table 1 grains poured into a 10 x 10
+box (examples/grain_deposit without its damping), integrated by fix nscd/polyhedra with
+each solver setting side by side; prints the kinetic energy per grain (translation +
+rotation, in m g a_max with m the mean grain mass) at several times, the mean and largest
+sweeps per step, the steps that hit the sweep cap and the wall time.
+
+    bench/nscd_pile_rest.py [--liggghts build/liggghts] [--steps 20000] [--every 2000]
+        [--config "method gauss_seidel tolerance 1e-4" ...]
+
+The grains are created at random in the box from z = 1.1 to 38 and fall under g = 1; the
+pile is complete by t ~ 12. Issue 13's bar: kinetic energy below 1e-8 m g a_max per grain
+and staying there."""
+
+import argparse
+import os
+import re
+import subprocess
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+DECK = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -5 5 -5 5 0 40
+create_box      1 box
+region          fill block -3.9 3.9 -3.9 3.9 1.1 38
+create_grains   1 500 random fill seed 2718
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra {config} &
+                wall 0 0 0 0 0 1 &
+                wall -5 0 0 1 0 0 wall_friction 0 wall 5 0 0 -1 0 0 wall_friction 0 &
+                wall 0 -5 0 0 1 0 wall_friction 0 wall 0 5 0 0 -1 0 wall_friction 0
+timestep        1e-3
+compute         rot all grain/rotation
+compute         ket all ke
+variable        mg equal mass(all)/count(all)
+variable        ke equal (c_ket+c_rot[1])/count(all)/v_mg
+variable        sweeps equal f_nscd[1]
+thermo_style    custom step v_ke v_sweeps f_nscd[3] f_nscd[6]
+thermo_modify   norm no format float %.6g
+thermo          {every}
+run             {steps}
+"""
+
+
+def run(liggghts, config, steps, every):
+    work = tempfile.mkdtemp(prefix="wiregrain-pile-")
+    with open(os.path.join(work, "in.pile"), "w") as f:
+        f.write(DECK.format(config=config, steps=steps, every=every))
+    start = time.time()
+    out = subprocess.run([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode()
+    seconds = time.time() - start
+    rows = re.findall(r"^\s*(\d+)\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s*$", out, re.M)
+    if not rows:
+        raise SystemExit(f"no thermo output for '{config}':\n{out[-2000:]}")
+    return rows, seconds
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--liggghts", default=os.path.join(HERE, "..", "build", "liggghts"))
+    parser.add_argument("--steps", type=int, default=20000)
+    parser.add_argument("--every", type=int, default=2000)
+    parser.add_argument("--config", nargs="*", default=[
+        "method gauss_seidel tolerance 1e-4", "method subspace tolerance 1e-4",
+        "method subspace tolerance 1e-6", "method subspace tolerance 1e-8"])
+    args = parser.parse_args()
+    for config in args.config:
+        rows, seconds = run(args.liggghts, config, args.steps, args.every)
+        capped = float(rows[-1][4])
+        print(f"{config}: {seconds:.0f} s, steps at the cap {capped:.0f}")
+        print(f"  {'t':>6} {'KE per grain':>13} {'sweeps (last step)':>19} {'contacts':>9}")
+        for step, ke, sweeps, contacts, _ in rows:
+            print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}")
+
+
+if __name__ == "__main__":
+    main()
