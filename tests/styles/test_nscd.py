@@ -183,6 +183,42 @@ run             5000
             self.assertAlmostEqual(travelled, 1 / (2 * mu * G), delta=1e-3, msg=name)  # θ = 1 lags by h v0/2
 
 
+class TallStack(DeckTestCase):
+    # 20 unit cubes (density 1: m = 1) stacked on a frictional floor, at rest, g = 1, 500
+    # steps. Statics: the floor carries 20 m g, and every cube stays where it is (top
+    # centre at 19.5). With method subspace at tolerance 1e-8 the floor force is 20 to
+    # 2e-6 on every printed step and the top cube moves less than 1e-9; plain Gauss-Seidel
+    # at its defaults hits the sweep cap on nearly every step (the comparison is printed).
+    def stack(self, solver):
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(20)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra {solver} wall 0 0 0 0 0 1
+timestep        1e-3
+variable        ztop equal bound(all,zmax)
+thermo_style    custom step f_nscd[9] f_nscd[1] f_nscd[6] v_ztop
+thermo_modify   format float %.15g
+thermo          50
+run             500
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        return r.thermo()
+
+    def test_floor_carries_the_stack(self):
+        t = self.stack("method subspace tolerance 1e-8")
+        plain = self.stack("")
+        floor, top = -t["nscd[9]"], t["ztop"]
+        print(f"20-cube stack, subspace: floor force {floor[-1]:.12f} (20), top moved {abs(top[-1] - 19.5):.1e}, "
+              f"sweeps {t['nscd[1]'][-1]:.0f}, capped steps {t['nscd[6]'][-1]:.0f}; gauss_seidel: floor force "
+              f"{-plain['nscd[9]'][-1]:.6f}, top moved {abs(plain['ztop'][-1] - 19.5):.1e}, capped steps "
+              f"{plain['nscd[6]'][-1]:.0f}")
+        self.assertLess(np.max(np.abs(floor[1:] - 20.0)), 5e-6)
+        self.assertLess(np.max(np.abs(top - 19.5)), 1e-9)
+        self.assertEqual(t["nscd[6]"][-1], 0)
+        self.assertGreater(plain["nscd[6]"][-1], 0)
+
+
 class Corner(DeckTestCase):
     # A cube in the corner of a floor and a frictionless wall, pushed into it by a tilted
     # gravity. Frictionless floor: floor force m g cos α, wall force m g sin α exactly.
@@ -627,6 +663,9 @@ class BadInput(DeckTestCase):
         self.check("every 0", "fix nscd/polyhedra (id nscd): value of 'every' must be >= 1, got 0")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
+        self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")
+        self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1")
+        self.check("subspace_regularization 0", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be > 0, got 0")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
