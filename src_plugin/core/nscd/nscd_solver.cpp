@@ -81,8 +81,8 @@ double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3
 
 namespace {
 
-// One subspace correction (header): solve the sticking contacts together, keep the result
-// if it lowers the Siconos error `error_before`. Returns whether it was kept.
+// One subspace correction (header): solve the closed contacts together, keep the result
+// if it halves the Siconos error `error_before`. Returns whether it was kept.
 bool subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
                          const std::vector<ContactState>& states, double regularization,
                          double error_before) {
@@ -159,7 +159,7 @@ bool subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impu
     impulses[c] = updated;
   }
   const double error_after = siconos_error(op, impulses);
-  if (error_after < error_before) return true;
+  if (error_after < 0.5 * error_before) return true;
   for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
     op.add_impulse(solved[i], -delta[i]);
     impulses[solved[i]] -= delta[i];
@@ -198,7 +198,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   std::mt19937_64 generator(options.seed);
   const double omega = options.relaxation;
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
-  int subspace_wait = 2, next_subspace = 2;       // method subspace
+  int subspace_wait = 2, next_subspace = 2, subspace_dropped = 0;  // method subspace
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     if (options.order == SweepOrder::random) {
@@ -290,10 +290,13 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         }
         // soon again only after a solve that cut the error tenfold (header)
         subspace_wait = error <= 0.1 * error_before ? 2 : 2 * subspace_wait;
+        subspace_dropped = 0;
       } else {
         subspace_wait *= 2;
+        ++subspace_dropped;
       }
-      next_subspace = iteration + subspace_wait;
+      // after three dropped solves in a row, none for the rest of this solve
+      next_subspace = subspace_dropped >= 3 ? options.max_iterations : iteration + subspace_wait;
     }
     if (iteration == options.max_iterations) report.hit_iteration_cap = true;
   }
