@@ -42,7 +42,11 @@
 //
 // Stopping: after each sweep, one of
 //   increment         ‖Δr‖₂ / ‖r‖₂ over the sweep (absolute when r = 0) < tolerance;
-//   natural_map       the Siconos error below < tolerance (costs one more pass per sweep);
+//   natural_map       the Siconos error below < tolerance; its pass costs half a sweep, so
+//                     it is made after each of the first 20 sweeps, then at doubling
+//                     intervals of at most a twentieth of the sweeps done (the stop comes
+//                     at most ~5 % late; on a 3×3×3 lattice pile 1042 sweeps at 68 µs
+//                     instead of 1001 at 90 µs, fclib_nscd);
 //   increment_then_natural_map   (default; after Siconos' default for fc3d_nsgs) once
 //                     the increment is below the tolerance, the Siconos error must be too;
 //                     while it is not, it is re-checked at doubling intervals (at most a
