@@ -74,10 +74,10 @@ def main():
     for config in args.config:
         rows, seconds = run(args.liggghts, config, args.steps, args.every)
         capped = float(rows[-1][4])
-        print(f"{config}: {seconds:.0f} s, steps at the cap {capped:.0f}")
+        print(f"{config}: {seconds:.0f} s, steps at the cap {capped:.0f}", flush=True)
         print(f"  {'t':>6} {'KE per grain':>13} {'sweeps (last step)':>19} {'contacts':>9}")
         for step, ke, sweeps, contacts, _ in rows:
-            print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}")
+            print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}", flush=True)
 
 
 if __name__ == "__main__":
