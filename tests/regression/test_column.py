@@ -40,10 +40,13 @@ class Column(DeckTestCase):
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], b[name], name)
         # the wire's energy after 35 000 steps: the forces on a bead are summed in another
-        # order on 2 ranks and the round-off grows in the wire's contacts (measured 1.2e-9
-        # and 5e-7 relative in two versions of the release heights); the grains' solve is
-        # replicated, so H_n, φ_p and z_wpc agree to the last bit
-        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-5)
+        # order on 2 ranks and the round-off grows in the wire's frictional contacts by an
+        # amount that depends on the trajectory (measured 1.2e-9 and 5e-7 relative in two
+        # versions of the release heights, 1.2e-5 after the NSCD convergence check was
+        # made less often, which changes the sweeps each step stops at); the grains' solve
+        # is replicated, so H_n, φ_p and z_wpc agree to the last printed digit. A rank
+        # that lost or doubled a force would be off by O(1).
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-4)
 
     def test_continue_from_the_relaxed_column(self):
         resumed = run(COLUMN, variables=dict(TINY, resume=1), workdir=self.straight.workdir)
