@@ -105,7 +105,7 @@ enum class SweepOrder {
 enum class ConvergenceMeasure { increment, natural_map, increment_then_natural_map };
 
 // gauss_seidel: sweeps only. subspace: sweeps, and between them a direct solve on the
-// sticking contacts (see "Subspace correction" at the top of this file).
+// closed contacts (see "Subspace correction" at the top of this file).
 enum class SolverMethod { gauss_seidel, subspace };
 
 // Defaults: random order and the increment-then-natural-map measure. Measured on a
@@ -144,7 +144,7 @@ struct NscdReport {
   long newton_iterations = 0;          // all local slide Newton steps
   long slide_fallbacks = 0;            // local slide solves that needed the scan
   int subspace_solves = 0;             // stick solves tried (method subspace)
-  int subspace_accepted = 0;           // of which lowered the Siconos error and were kept
+  int subspace_accepted = 0;           // of which halved the Siconos error and were kept
 };
 
 // n × n blocks of 3×3, stored by block row (each row sorted by column).
