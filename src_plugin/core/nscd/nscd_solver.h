@@ -73,7 +73,10 @@
 // go on either way. Schedule: a first solve after sweep 2, the next 2 sweeps after a
 // solve that cut the error tenfold, else twice the last wait (2, 4, 8, …), and none
 // after three dropped in a row: where many contacts slide or open, at most three
-// factorisations per step.
+// factorisations per step. A solve that converges without a kept stick solve (a warm
+// start already within the tolerance) gets one at the end: errors left within the
+// tolerance otherwise add up step after step (a 20-box stack at tolerance 1e-4 drifts
+// and falls; with it the loads stay exact to 1e-13).
 //
 // Siconos error (fc3d_compute_error of Siconos numerics 4.4 as fc3d_nsgs calls it, with
 // the De Saxcé modified velocity, natural_map_residual in core/coulomb_local.h):
