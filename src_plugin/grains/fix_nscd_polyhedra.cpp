@@ -90,7 +90,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       else args.fail("value of 'method' must be gauss_seidel or subspace, got '" + v + "'");
     } else if (key == "subspace_regularization") {
       const double v = args.value_positive(key);
-      if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + std::to_string(v));
+      if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + wiregrain::format_number(v));
       core_->options.solver.subspace_regularization = v;
     } else if (key == "seed") {
       const long seed = args.value_int(key);

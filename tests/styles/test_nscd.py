@@ -664,7 +664,7 @@ class BadInput(DeckTestCase):
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")
-        self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1")
+        self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1 (")
         self.check("subspace_regularization 0", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be > 0, got 0")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
