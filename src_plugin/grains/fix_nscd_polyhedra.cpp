@@ -168,7 +168,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 3;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 5;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -475,6 +475,8 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   stats_[2] = stats.contact_points;
   stats_[3] = stats.max_overlap;
   largest_overlap_ = std::max(largest_overlap_, stats.max_overlap);
+  stick_solves_[0] += stats.subspace_solves;
+  stick_solves_[1] += stats.subspace_accepted;
   stats_[4] = stats.max_predicted_penetration;
   for (size_t w = 0; w < result.wall_forces.size(); w++)
     for (int d = 0; d < 3; d++) wall_forces_[3 * w + d] = result.wall_forces[w][d];
@@ -543,11 +545,12 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k < 6) return stats_[k];
   if (k < 6 + (int)wall_forces_.size()) return wall_forces_[k - 6];
   if (k < 8 + (int)wall_forces_.size()) return timings_[k - 6 - (int)wall_forces_.size()];
-  return largest_overlap_;
+  if (k == 8 + (int)wall_forces_.size()) return largest_overlap_;
+  return stick_solves_[k - 9 - (int)wall_forces_.size()];
 }
 
 // restart: whether a solve happened, the sub-cycle state (steps summed, a pending move
-// and its h), the wall positions and the warm-start impulses
+// and its h), the wall positions, the warm-start impulses and the stick-solve backoff
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   if (comm->me != 0) return;
   std::vector<double> data = {solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
@@ -563,6 +566,8 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
       data.insert(data.end(), s.impulse.data(), s.impulse.data() + 3);
     }
   }
+  data.push_back(core_->impulses.backoff.skip);
+  data.push_back(core_->impulses.backoff.wait);
   const int size = (int)(data.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(data.data(), sizeof(double), data.size(), fp);
@@ -586,4 +591,6 @@ void FixNSCDPolyhedra::restart(char *buf) {
     k += 3;
     for (size_t c = 0; c < count; c++, k += 6) core_->impulses.add(pair, {vec3(d + k), vec3(d + k + 3)});
   }
+  core_->impulses.backoff.skip = (int)d[k++];
+  core_->impulses.backoff.wait = (int)d[k++];
 }

@@ -121,6 +121,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   bool solved_once_;                        // a contact solve happened (setup of the first run)
   double stats_[6];
   double largest_overlap_ = 0.0;            // over all steps since the fix was made
+  double stick_solves_[2] = {0.0, 0.0};     // method subspace: tried, kept, since the fix was made
   double timings_[2];                       // wall-clock seconds of the last solve: gather+detection, solve
   std::vector<double> wall_forces_;         // 3 per wall
   double **contact_force_;                  // per grain: force, torque

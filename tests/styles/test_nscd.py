@@ -186,9 +186,9 @@ run             5000
 class TallStack(DeckTestCase):
     # 20 unit cubes (density 1: m = 1) stacked on a frictional floor, at rest, g = 1, 500
     # steps. Statics: the floor carries 20 m g, and every cube stays where it is (top
-    # centre at 19.5). With method subspace (default tolerance) the floor force is 20 to
-    # 1e-10 on every printed step and the top cube moves less than 1e-9; plain
-    # Gauss-Seidel hits the sweep cap on nearly every step (the comparison is printed).
+    # centre at 19.5). With the fix's defaults (method subspace, tolerance 1e-4) the floor
+    # force is 20 to 1e-10 on every printed step and the top cube moves less than 1e-9;
+    # method gauss_seidel hits the sweep cap on nearly every step (the comparison is printed).
     def stack(self, solver):
         made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(20)])
         self.assertRanCleanly(made)
@@ -206,8 +206,8 @@ run             500
         return r.thermo()
 
     def test_floor_carries_the_stack(self):
-        t = self.stack("method subspace")
-        plain = self.stack("")
+        t = self.stack("")
+        plain = self.stack("method gauss_seidel")
         floor, top = -t["nscd[9]"], t["ztop"]
         print(f"20-cube stack, subspace: floor force {floor[-1]:.12f} (20), top moved {abs(top[-1] - 19.5):.1e}, "
               f"sweeps {t['nscd[1]'][-1]:.0f}, capped steps {t['nscd[6]'][-1]:.0f}; gauss_seidel: floor force "

@@ -15,6 +15,7 @@ NscdOptions grain_solver_defaults() {
   NscdOptions options;
   options.order = SweepOrder::forward;
   options.measure = ConvergenceMeasure::natural_map;
+  options.method = SolverMethod::subspace;
   options.overlap_speed = 0.1;
   return options;
 }
@@ -172,7 +173,7 @@ GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vec
                                  const GrainStepOptions& options, std::uint64_t step_number,
                                  GrainImpulseMemory& memory) {
   const NscdStepResult solved =
-      solve_nscd_step(problem.step, options.solver_for_step(step_number), problem.warm_start);
+      solve_nscd_step(problem.step, options.solver_for_step(step_number), problem.warm_start, &memory.backoff);
   const double h = problem.step.time_step;
   const int n = static_cast<int>(grains.size());
   GrainStepResult result;

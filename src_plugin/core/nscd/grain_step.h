@@ -88,9 +88,10 @@ class GrainImpulseMemory {
   // the pair's stored point nearest to `position` if its squared distance is below
   // `radius2`, else nullptr
   const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2) const;
-  void clear() { pairs_.clear(); }
+  void clear() { pairs_.clear(); }  // the impulses; the backoff stays
   void add(const PairKey& pair, const Impulse& impulse) { pairs_[pair].push_back(impulse); }
   const std::map<PairKey, std::vector<Impulse>>& pairs() const { return pairs_; }
+  StickSolveBackoff backoff;  // method subspace, from step to step (nscd_solver.h)
 
  private:
   std::map<PairKey, std::vector<Impulse>> pairs_;

@@ -81,32 +81,42 @@ double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3
 
 namespace {
 
+// What one subspace correction did: kept (halved the Siconos error), dropped as
+// harmless (the error neither halved nor doubled: a stack already exact to round-off),
+// or dropped as harmful (the error more than doubled: a pile where contacts slide).
+enum class StickSolveOutcome { kept, harmless, harmful };
+
 // One subspace correction (header): solve the closed contacts together, keep the result
-// if it halves the Siconos error `error_before`. Returns whether it was kept.
-bool subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
-                         const std::vector<ContactState>& states, double regularization,
-                         double error_before) {
+// if it halves the Siconos error `error_before`.
+StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
+                                      const std::vector<ContactState>& states, double regularization,
+                                      double error_before) {
   const int n = op.contact_count();
-  std::vector<int> index(n, -1), solved;
+  // Unknowns: the three components of each closed contact, only the normal one of a
+  // frictionless contact (its tangential impulse is 0 and stays so).
+  std::vector<int> unknown(3 * n, -1), components;
   // closing or touching (u_n ≤ 0 up to rounding): e.g. the interfaces of a stack falling
   // as one body in the first sweeps, which Gauss–Seidel loads one interface per sweep
   const double closing = 1e-12 * op.free_velocity_norm();
   for (int c = 0; c < n; ++c) {
-    if ((states[c] != ContactState::open && impulses[c][0] > 0.0) || op.velocity(c)[0] <= closing) {
-      index[c] = static_cast<int>(solved.size());
-      solved.push_back(c);
+    const bool loaded = states[c] != ContactState::open && impulses[c][0] > 0.0;
+    if (!loaded && op.velocity(c)[0] > closing) continue;
+    const int count = op.friction_coefficient(c) == 0.0 ? 1 : 3;
+    for (int a = 0; a < count; ++a) {
+      unknown[3 * c + a] = static_cast<int>(components.size());
+      components.push_back(3 * c + a);
     }
   }
-  if (solved.empty()) return false;
+  if (components.empty()) return StickSolveOutcome::harmless;
   const BlockSparseMatrix3& W = op.delassus_matrix();
-  const int m = 3 * static_cast<int>(solved.size());
+  const int m = static_cast<int>(components.size());
   std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
-    for (const BlockSparseMatrix3::Entry& e : W.row(solved[i])) {
-      const int j = index[e.column];
-      if (j < 0) continue;
-      for (int a = 0; a < 3; ++a) {
-        for (int b = 0; b < 3; ++b) entries.emplace_back(3 * i + a, 3 * j + b, e.block(a, b));
+  for (int i = 0; i < m; ++i) {
+    const int c = components[i] / 3, a = components[i] % 3;
+    for (const BlockSparseMatrix3::Entry& e : W.row(c)) {
+      for (int b = 0; b < 3; ++b) {
+        const int j = unknown[3 * e.column + b];
+        if (j >= 0) entries.emplace_back(i, j, e.block(a, b));
       }
     }
   }
@@ -138,39 +148,45 @@ bool subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impu
   }
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& factor = cache.factor;
   factor.factorize(regularized);
-  if (factor.info() != Eigen::Success) return false;
+  if (factor.info() != Eigen::Success) return StickSolveOutcome::harmful;
   Eigen::VectorXd rhs(m);
   Eigen::VectorXd current(m);
-  for (int i = 0; i < static_cast<int>(solved.size()); ++i) current.segment<3>(3 * i) = impulses[solved[i]];
-  for (int i = 0; i < static_cast<int>(solved.size()); ++i) rhs.segment<3>(3 * i) = -op.velocity(solved[i]);
-  rhs += A * current;  // −(u_S without the impulses of S)
-  Eigen::VectorXd x = factor.solve(rhs);
-  for (int refinement = 0; refinement < 2; ++refinement) x += factor.solve(rhs - A * x);
-  if (!x.allFinite()) return false;
-  x -= current;
+  for (int i = 0; i < m; ++i) {
+    current[i] = impulses[components[i] / 3][components[i] % 3];
+    rhs[i] = -op.velocity(components[i] / 3)[components[i] % 3];
+  }
+  // the increment closest to the current impulses: (W_SS + ε D) Δr_S = −u_S (header)
+  Eigen::VectorXd increment = factor.solve(rhs);
+  for (int refinement = 0; refinement < 2; ++refinement) increment += factor.solve(rhs - A * increment);
+  if (!increment.allFinite()) return StickSolveOutcome::harmful;
+  const Eigen::VectorXd x = current + increment;
 
-  std::vector<Eigen::Vector3d> delta(solved.size());
-  for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
-    const int c = solved[i];
-    const Eigen::Vector3d updated =
-        project_on_coulomb_cone(impulses[c] + x.segment<3>(3 * i), op.friction_coefficient(c));
-    delta[i] = updated - impulses[c];
-    op.add_impulse(c, delta[i]);
+  std::vector<int> solved;
+  std::vector<Eigen::Vector3d> delta;
+  for (int i = 0; i < m;) {
+    const int c = components[i] / 3;
+    Eigen::Vector3d candidate = impulses[c];
+    for (; i < m && components[i] / 3 == c; ++i) candidate[components[i] % 3] = x[i];
+    const Eigen::Vector3d updated = project_on_coulomb_cone(candidate, op.friction_coefficient(c));
+    solved.push_back(c);
+    delta.push_back(updated - impulses[c]);
+    op.add_impulse(c, delta.back());
     impulses[c] = updated;
   }
   const double error_after = siconos_error(op, impulses);
-  if (error_after < 0.5 * error_before) return true;
+  if (error_after < 0.5 * error_before) return StickSolveOutcome::kept;
   for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
     op.add_impulse(solved[i], -delta[i]);
     impulses[solved[i]] -= delta[i];
   }
-  return false;
+  return error_after > 2.0 * error_before ? StickSolveOutcome::harmful : StickSolveOutcome::harmless;
 }
 
 }  // namespace
 
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
-                                         const std::vector<Eigen::Vector3d>& warm_start) {
+                                         const std::vector<Eigen::Vector3d>& warm_start,
+                                         StickSolveBackoff* backoff) {
   options.validate();
   const int n = op.contact_count();
   ContactSolution result;
@@ -198,7 +214,14 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   std::mt19937_64 generator(options.seed);
   const double omega = options.relaxation;
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
-  int subspace_wait = 2, next_subspace = 2, subspace_dropped = 0;  // method subspace
+  // method subspace: schedule within this solve, and whether the backoff allows any
+  int subspace_wait = 2, next_subspace = 2, subspace_dropped = 0;
+  bool stick_solves = options.method == SolverMethod::subspace;
+  if (stick_solves && backoff != nullptr && backoff->skip > 0) {
+    --backoff->skip;
+    stick_solves = false;
+  }
+  bool stick_solve_harmed = false;
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     if (options.order == SweepOrder::random) {
@@ -285,21 +308,25 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     }
     // method subspace, converged without a kept stick solve: one more (header), which
     // makes a resting stack exact every step instead of merely within the tolerance
-    if (converged && options.method == SolverMethod::subspace && report.subspace_accepted == 0) {
+    if (converged && stick_solves && report.subspace_accepted == 0) {
       const double error_before = siconos_error(op, result.impulses);
       ++report.subspace_solves;
-      if (subspace_correction(op, result.impulses, result.states, options.subspace_regularization, error_before)) {
+      const StickSolveOutcome outcome = subspace_correction(
+          op, result.impulses, result.states, options.subspace_regularization, error_before);
+      stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
+      if (outcome == StickSolveOutcome::kept) {
         ++report.subspace_accepted;
         report.residual = siconos_error(op, result.impulses);
       }
     }
     if (converged) break;
-    if (options.method == SolverMethod::subspace && iteration >= next_subspace &&
-        iteration < options.max_iterations) {
+    if (stick_solves && iteration >= next_subspace && iteration < options.max_iterations) {
       const double error_before = siconos_error(op, result.impulses);
       ++report.subspace_solves;
-      if (subspace_correction(op, result.impulses, result.states, options.subspace_regularization,
-                              error_before)) {
+      const StickSolveOutcome outcome = subspace_correction(
+          op, result.impulses, result.states, options.subspace_regularization, error_before);
+      stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
+      if (outcome == StickSolveOutcome::kept) {
         ++report.subspace_accepted;
         const double error = siconos_error(op, result.impulses);
         if (options.measure != ConvergenceMeasure::increment && error <= options.tolerance) {
@@ -317,6 +344,14 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
       next_subspace = subspace_dropped >= 3 ? options.max_iterations : iteration + subspace_wait;
     }
     if (iteration == options.max_iterations) report.hit_iteration_cap = true;
+  }
+  if (stick_solves && backoff != nullptr) {
+    if (report.subspace_accepted > 0) {
+      backoff->wait = 0;
+    } else if (stick_solve_harmed) {
+      backoff->wait = std::min(std::max(1, 2 * backoff->wait), 64);
+      backoff->skip = backoff->wait;
+    }
   }
   report.siconos_error = siconos_error(op, result.impulses);
   return result;
@@ -492,11 +527,12 @@ class BodyContactOperator final : public ContactOperator {
 }  // namespace
 
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
-                               const std::vector<Eigen::Vector3d>& warm_start) {
+                               const std::vector<Eigen::Vector3d>& warm_start,
+                               StickSolveBackoff* backoff) {
   options.validate();
   BodyContactOperator op(step, options);
   NscdStepResult result;
-  result.contacts = solve_frictional_contact(op, options, warm_start);
+  result.contacts = solve_frictional_contact(op, options, warm_start, backoff);
   const int body_count = static_cast<int>(step.bodies.size());
   result.velocities.resize(body_count);
   result.angular_velocities.resize(body_count);

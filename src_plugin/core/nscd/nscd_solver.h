@@ -196,6 +196,14 @@ class ContactOperator {
   virtual const BlockSparseMatrix3& delassus_matrix() = 0;
 };
 
+// method subspace from one solve to the next (a time step to the next; header): after a
+// solve whose stick solves did harm and none was kept, the next `wait` solves make none,
+// wait doubling 1, 2, 4, … up to 64 while that goes on; a kept one sets it back to 0.
+struct StickSolveBackoff {
+  int skip = 0;  // solves left to make without stick solves
+  int wait = 0;  // the last skip
+};
+
 struct ContactSolution {
   std::vector<Eigen::Vector3d> impulses;  // r_c in the local frame
   std::vector<ContactState> states;
@@ -205,8 +213,10 @@ struct ContactSolution {
 // The Gauss–Seidel solver on any operator. warm_start: empty, or one impulse per contact
 // (e.g. the last step's impulses on persistent contacts, zero on new ones), applied to the
 // operator before the first sweep. InvalidArgument("warm_start", ...) on a size mismatch.
+// backoff: the state carried between the solves of a run (method subspace), or nullptr.
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
-                                         const std::vector<Eigen::Vector3d>& warm_start = {});
+                                         const std::vector<Eigen::Vector3d>& warm_start = {},
+                                         StickSolveBackoff* backoff = nullptr);
 
 // Siconos error of impulses r on an operator in the state r (see the top of this file).
 double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses);
@@ -255,7 +265,8 @@ struct NscdStepResult {
 // (body index out of range, a contact whose Delassus block has W_nn ≤ 0, e.g. between two
 // infinite masses; negative inverse mass; μ < 0; non-finite data).
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
-                               const std::vector<Eigen::Vector3d>& warm_start = {});
+                               const std::vector<Eigen::Vector3d>& warm_start = {},
+                               StickSolveBackoff* backoff = nullptr);
 
 // Local frame from a unit normal n (normalised here): columns (n, t1, t2), right-handed,
 // t1 ⟂ n chosen from the coordinate axis least aligned with n.
