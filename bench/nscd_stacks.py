@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Benchmark: stacks of boxes at rest (bench/nscd_stack, box_stack.h), Gauss-Seidel at the
-fix's defaults against the subspace method (both at the default tolerance 1e-4), side by side in one run; prints one line per
+"""Benchmark: stacks of boxes at rest (bench/nscd_stack, box_stack.h), method gauss_seidel
+against the fix's default method subspace (both at the default tolerance 1e-4, the other
+settings the fix's defaults), side by side in one run; prints one line per
 stack and method (worst relative interface-load error over all steps, steps over 1e-4,
 steps at the sweep cap, sweeps, wall time).
 

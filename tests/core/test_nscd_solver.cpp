@@ -311,6 +311,30 @@ TEST(NscdSubspace, InclineSlidesAndSticksAsGaussSeidel) {
   }
 }
 
+// The backoff carried between solves: while skip > 0 a solve makes no stick solve and
+// counts skip down; a kept stick solve (a 20-cube column from a cold start) sets the
+// wait back to 0.
+TEST(NscdSubspace, BackoffSkipsSolvesAndAKeptOneResetsIt) {
+  const double h = 1e-3, g = 9.81;
+  NscdOptions options;
+  options.method = SolverMethod::subspace;
+  options.max_iterations = 10000;
+  StickSolveBackoff backoff;
+  backoff.skip = 2;
+  backoff.wait = 2;
+  for (int expected_skip : {1, 0}) {
+    const NscdStepResult skipped = solve_nscd_step(cube_column(20, h, g, 0.5), options, {}, &backoff);
+    EXPECT_EQ(skipped.contacts.report.subspace_solves, 0);
+    EXPECT_EQ(backoff.skip, expected_skip);
+    EXPECT_EQ(backoff.wait, 2);
+  }
+  const NscdStepResult solved = solve_nscd_step(cube_column(20, h, g, 0.5), options, {}, &backoff);
+  EXPECT_GE(solved.contacts.report.subspace_accepted, 1);
+  EXPECT_EQ(backoff.skip, 0);
+  EXPECT_EQ(backoff.wait, 0);
+  EXPECT_LT(worst_column_load_error(solved, 20, g, h), 1e-10);
+}
+
 TEST(NscdSubspace, RegularizationOutOfRangeNamesTheKeyword) {
   for (double bad : {0.0, -1e-9, 1.0, std::nan("")}) {
     NscdOptions options;

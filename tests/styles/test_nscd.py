@@ -197,7 +197,7 @@ fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra {solver} wall 0 0 0 0 0 1
 timestep        1e-3
 variable        ztop equal bound(all,zmax)
-thermo_style    custom step f_nscd[9] f_nscd[1] f_nscd[6] v_ztop
+thermo_style    custom step f_nscd[9] f_nscd[1] f_nscd[6] v_ztop f_nscd[13] f_nscd[14]
 thermo_modify   format float %.15g
 thermo          50
 run             500
@@ -217,6 +217,12 @@ run             500
         self.assertLess(np.max(np.abs(top - 19.5)), 1e-9)
         self.assertEqual(t["nscd[6]"][-1], 0)
         self.assertGreater(plain["nscd[6]"][-1], 0)
+        # stick solves tried / kept (f_ID[6+3W+4], [6+3W+5]): at least one per step with
+        # the default method (the closing one), none with gauss_seidel
+        self.assertGreaterEqual(t["nscd[13]"][-1], 500)
+        self.assertGreater(t["nscd[14]"][-1], 0)
+        self.assertLessEqual(t["nscd[14]"][-1], t["nscd[13]"][-1])
+        self.assertEqual(plain["nscd[13]"][-1], 0)
 
 
 class Corner(DeckTestCase):
