@@ -62,28 +62,37 @@ def main():
     parser.add_argument("--keep", help="directory for the deck, problems and FCLib files")
     args = parser.parse_args()
     work = args.keep or tempfile.mkdtemp(prefix="wiregrain-siconos-")
+    for hdf5 in pile_problems(args.liggghts, args.fclib_nscd, work, args.grains, args.settle, args.relax,
+                              args.every):
+        result = subprocess.run([args.fclib_nscd, "solve", hdf5, "--repeat", "1"],
+                                stdout=subprocess.PIPE, check=True).stdout.decode()
+        print(result)
+
+
+def pile_problems(liggghts, fclib_nscd, work, grains=915, settle=10000, relax=4000, every=7000):
+    """Runs the pile deck in `work` and returns the FCLib files of the last two problems
+    written (the pile still moving, and settled); prints the deck's thermo table."""
     os.makedirs(work, exist_ok=True)
-    layers, left, z, seed = [], args.grains, 1.0, 4242
+    layers, left, z, seed = [], grains, 1.0, 4242
     while left > 0:
         n = min(221, left)
         layers.append(f"create_grains   1 {n} layer inside {z} seed {seed}")
         left, z, seed = left - n, z + 4.6, seed + 2
     with open(os.path.join(work, "in.pile"), "w") as f:
-        f.write(DECK.format(top=z + 4, layers="\n".join(layers), every=args.every, settle=args.settle,
-                            relax=args.relax))
-    out = subprocess.run([args.liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
+        f.write(DECK.format(top=z + 4, layers="\n".join(layers), every=every, settle=settle, relax=relax))
+    out = subprocess.run([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode()
     tables = re.findall(r"^\s*Step .*?(?=^Loop time)", out, re.M | re.S)
-    print(f"pile of {args.grains} grains in {work}:")
-    print("".join(tables) if tables else out[-3000:])
+    print(f"pile of {grains} grains in {work}:")
+    print("".join(tables) if tables else out[-3000:], flush=True)
     problems = sorted(glob.glob(os.path.join(work, "problem_*.txt")),
                       key=lambda p: int(re.search(r"problem_(\d+)", p).group(1)))[-2:]
+    files = []
     for text in problems:
         hdf5 = text[:-4] + ".hdf5"
-        subprocess.run([args.fclib_nscd, "convert", text, hdf5], check=True)
-        result = subprocess.run([args.fclib_nscd, "solve", hdf5, "--repeat", "1"],
-                                stdout=subprocess.PIPE, check=True).stdout.decode()
-        print(result)
+        subprocess.run([fclib_nscd, "convert", text, hdf5], check=True, stdout=subprocess.DEVNULL)
+        files.append(hdf5)
+    return files
 
 
 if __name__ == "__main__":
