@@ -6,6 +6,9 @@ of them and gathers the rows).
 
     bench/nscd_methods.py [--build build] [--repeat 3] [--skip-pile] [--keep DIR]
 
+(--keep DIR keeps the 915-grain pile's deck and problems there, and takes them from there
+when an earlier run left them.)
+
 Problems:
   - a column of 20 unit cubes at rest (fclib_nscd generate column 20: a tall stack),
   - a generated lattice pile of 10 x 10 x 9 cubes (fclib_nscd generate pile 10 10 9:
@@ -56,7 +59,11 @@ def main():
                 ("lattice pile 10x10x9", ["generate", "pile", "10", "10", "9"])]
     if not args.skip_pile:
         work = args.keep or tempfile.mkdtemp(prefix="wiregrain-methods-")
-        moving, settled = siconos_pile.pile_problems(os.path.join(args.build, "liggghts"), fclib_nscd, work)
+        made = [os.path.join(work, f"problem_{step}.hdf5") for step in (7000, 14000)]
+        if all(os.path.exists(path) for path in made):  # --keep DIR of an earlier run
+            moving, settled = made
+        else:
+            moving, settled = siconos_pile.pile_problems(os.path.join(args.build, "liggghts"), fclib_nscd, work)
         problems += [("915-grain pile, step 7000 (moving)", ["solve", moving]),
                      ("915-grain pile, step 14000 (settled)", ["solve", settled])]
     print(f"{'problem':<38} {'solver':<42} {'sweeps':>7} {'Siconos error':>13} {'time [s]':>10} "
