@@ -5,12 +5,13 @@
 //   nscd_body_sweep NX NY NZ [--sweeps S (200)] [--repeat R (5: best wall time of R)]
 //                   [--seed N (1)] [--mu M (0.5)] [--impulses FILE]
 //
-// Rows: method gauss_seidel, forward order with the check schedule of the Siconos error
+// Per row: the Siconos error and Σ|r| at the end, the time, the contact states in the
+// last sweep and the local slide Newton steps per contact update. Rows: method gauss_seidel, forward order with the check schedule of the Siconos error
 // (natural_map; fix nscd/polyhedra's settings, grain_solver_defaults), and the random order
 // with the core's default measure (fclib_nscd's row "on bodies"). Tolerance 0: every solve
 // makes exactly S sweeps, so the time per contact update is time / (S × contacts) (the
-// Siconos error checks of the schedule included). The Siconos error and Σ|r| of the
-// impulses, printed in full, tell whether a change of the sweep changed the result;
+// Siconos error checks of the schedule included). The Siconos error and Σ|r|, printed in
+// full, tell whether a change of the sweep changed the result;
 // --impulses writes the forward row's impulses (one contact a line, %.17g) for a closer
 // comparison.
 #include <algorithm>
@@ -67,8 +68,8 @@ int main(int argc, char** argv) {
   const int n = static_cast<int>(step.contacts.size());
   std::printf("pile %dx%dx%d: %zu bodies, %d contacts; %d sweeps, best of %d\n", nx, ny, nz,
               step.bodies.size(), n, sweeps, repeat);
-  std::printf("%-44s %16s %24s %10s %12s %10s\n", "sweep", "siconos error", "sum |r|",
-              "time [s]", "us/sweep", "ns/update");
+  std::printf("%-44s %16s %24s %10s %12s %10s %18s %8s\n", "sweep", "siconos error", "sum |r|",
+              "time [s]", "us/sweep", "ns/update", "open/stick/slide", "newton");
   const Row rows[] = {
       {"forward, natural map (fix, gauss_seidel)", SweepOrder::forward, ConvergenceMeasure::natural_map},
       {"random, increment then natural map", SweepOrder::random,
@@ -92,9 +93,13 @@ int main(int argc, char** argv) {
     double sum = 0.0;
     for (const Eigen::Vector3d& r : result.contacts.impulses) sum += r.cwiseAbs().sum();
     const int done = result.contacts.report.iterations;
-    std::printf("%-44s %16.10e %24.17g %10.4f %12.2f %10.1f\n", row.name,
-                result.contacts.report.siconos_error, sum, seconds, 1e6 * seconds / done,
-                1e9 * seconds / (static_cast<double>(done) * n));
+    const NscdReport& report = result.contacts.report;
+    const std::string states = std::to_string(report.open) + "/" + std::to_string(report.stick) +
+                               "/" + std::to_string(report.slide);
+    std::printf("%-44s %16.10e %24.17g %10.4f %12.2f %10.1f %18s %8.2f\n", row.name,
+                report.siconos_error, sum, seconds, 1e6 * seconds / done,
+                1e9 * seconds / (static_cast<double>(done) * n), states.c_str(),
+                static_cast<double>(report.newton_iterations) / (static_cast<double>(done) * n));
     if (row.order == SweepOrder::forward && !impulses_path.empty()) {
       std::FILE* out = std::fopen(impulses_path.c_str(), "w");
       if (out == nullptr) {
