@@ -23,7 +23,8 @@
 //          admissible when a(φ) > 0 (so r_n > 0, as q_n < 0) and v(φ)·t(φ) ≤ 0 (λ ≥ 0).
 //          g is a trigonometric polynomial of degree 2 in φ (at most 4 roots). It is
 //          solved by Newton's method in φ from a guess (the previous impulse direction,
-//          else the direction of the rejected stick impulse); if that fails or gives an
+//          else the direction of the rejected stick impulse), carried out on t(φ) itself,
+//          rotated by each step (no sin, cos or atan2 per solve); if that fails or gives an
 //          inadmissible root, by a scan of g over [0, 2π) with Brent's method (GSL) in
 //          every bracket, and if no bracket holds an admissible root
 //          (a double root, or two roots closer than the sampling), by Newton from each
@@ -106,10 +107,10 @@ class SlideEquation {
     a_floor_ = 1e-14 * w_size;
   }
 
-  // With c = cos φ, s = sin φ: a = W_nn + μ (W_n1 c + W_n2 s), b_i = W_i0 + μ (W_i1 c + W_i2 s)
-  // (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c.
-  Value at(double phi) const {
-    const double c = std::cos(phi), s = std::sin(phi);
+  Value at(double phi) const { return at(std::cos(phi), std::sin(phi)); }
+  // At the direction t(φ) = (c, s) = (cos φ, sin φ): a = W_nn + μ (W_n1 c + W_n2 s),
+  // b_i = W_i0 + μ (W_i1 c + W_i2 s) (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c.
+  Value at(double c, double s) const {
     const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
     const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
     const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
@@ -147,6 +148,12 @@ class SlideEquation {
 // `iterations` is increased by the number of steps.
 bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
                               int max_iterations);
+// The same iteration on the direction t(φ) = (cos φ, sin φ) itself, which it rotates by
+// each step δ (cos δ and sin δ of a small step by their Taylor series, no call to the
+// library's sin and cos): the iterates of the form above to round-off. `direction` is a
+// unit vector on entry and, renormalised, on return; `turned` (optional) gets Σ δ.
+bool slide_newton_unbracketed(const SlideEquation& equation, Eigen::Vector2d& direction,
+                              int& iterations, int max_iterations, double* turned = nullptr);
 
 // A root of g in the bracket [lo, hi], g(lo) g(hi) < 0, by Brent's method (GSL's
 // gsl_root_fsolver_brent), stopping when the bracket is below 1e-14 rad (at most 100
