@@ -78,6 +78,9 @@ bool slide_newton_unbracketed(const SlideEquation& eq, Eigen::Vector2d& directio
     }
     if (value.dg == 0.0 || !std::isfinite(value.dg)) break;
     const double step = std::clamp(-value.g / value.dg, -0.5, 0.5);
+    const bool last = std::abs(step) <= 1e-13 ||
+                      (std::abs(step) <= 1e-6 &&
+                       std::abs(value.d2g) * step * step <= 2e-17 * std::abs(value.dg));
     // t(φ + δ) = R(δ) t(φ). For |δ| ≤ 1/32 the series below are exact to below 1e-17
     // (first terms left out: δ⁹/9! relative to δ, δ¹⁰/10!).
     double c, s;
@@ -92,7 +95,7 @@ bool slide_newton_unbracketed(const SlideEquation& eq, Eigen::Vector2d& directio
     direction = Eigen::Vector2d(c * direction[0] - s * direction[1], s * direction[0] + c * direction[1]);
     total += step;
     ++iterations;
-    if (std::abs(step) <= 1e-13) {
+    if (last) {
       converged = true;
       break;
     }
@@ -258,7 +261,7 @@ LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3
 }
 
 Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
-  const double r_t = std::hypot(r[1], r[2]);
+  const double r_t = r.tail<2>().norm();
   if (r_t <= mu * r[0]) return r;                       // inside K_μ
   if (mu * r_t <= -r[0]) return Eigen::Vector3d::Zero();  // inside the polar cone
   const double r_n = (r[0] + mu * r_t) / (1.0 + mu * mu);
@@ -268,7 +271,7 @@ Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
 
 Eigen::Vector3d natural_map_residual(const Eigen::Vector3d& r, const Eigen::Vector3d& u,
                                      double mu) {
-  const Eigen::Vector3d modified(u[0] + mu * std::hypot(u[1], u[2]), u[1], u[2]);
+  const Eigen::Vector3d modified(u[0] + mu * u.tail<2>().norm(), u[1], u[2]);
   return r - project_on_coulomb_cone(r - modified, mu);
 }
 

@@ -96,6 +96,7 @@ class SlideEquation {
   struct Value {
     double g;    // v × t
     double dg;   // dg/dφ = v' × t + v·t
+    double d2g;  // d²g/dφ² = v'' × t + 2 v'·t − g
     double a;    // (W c(φ))_n; r_n = −q_n / a
     double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
   };
@@ -120,10 +121,14 @@ class SlideEquation {
     const double qn = q_[0];
     const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
     const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
+    // a'' = W_nn − a, b_i'' = W_i0 − b_i
+    const double d2v1 = (W_(0, 0) - a) * q_[1] - qn * (W_(1, 0) - b1);
+    const double d2v2 = (W_(0, 0) - a) * q_[2] - qn * (W_(2, 0) - b2);
     Value value;
     value.g = v1 * s - v2 * c;
     value.dot = v1 * c + v2 * s;
     value.dg = dv1 * s - dv2 * c + value.dot;
+    value.d2g = d2v1 * s - d2v2 * c + 2.0 * (dv1 * c + dv2 * s) - value.g;
     value.a = a;
     return value;
   }
@@ -144,7 +149,9 @@ class SlideEquation {
 };
 
 // Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
-// Returns true on convergence (step below 1e-13 rad, or g = 0); phi is not wrapped.
+// Returns true on convergence: g = 0, a step below 1e-13 rad, or a step δ (≤ 1e-6 rad)
+// after which the root is within round-off, |g''| δ² / (2 |g'|) ≤ 1e-17 rad (the error
+// of a Newton step, which saves the step below 1e-13 that would only confirm it); phi is not wrapped.
 // `iterations` is increased by the number of steps.
 bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
                               int max_iterations);
