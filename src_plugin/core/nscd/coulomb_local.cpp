@@ -81,11 +81,15 @@ bool slide_newton_unbracketed(const SlideEquation& eq, Eigen::Vector2d& directio
     const bool last = std::abs(step) <= 1e-13 ||
                       (std::abs(step) <= 1e-6 &&
                        std::abs(value.d2g) * step * step <= 2e-17 * std::abs(value.dg));
-    // t(φ + δ) = R(δ) t(φ). For |δ| ≤ 1/32 the series below are exact to below 1e-17
-    // (first terms left out: δ⁹/9! relative to δ, δ¹⁰/10!).
+    // t(φ + δ) = R(δ) t(φ). The series below are exact to below 1e-17 (first terms left
+    // out: δ⁴/5! relative and δ⁴/4! for |δ| ≤ 1e-4, δ⁸/9! relative and δ¹⁰/10! for
+    // |δ| ≤ 1/32).
     double c, s;
-    if (std::abs(step) <= 1.0 / 32.0) {
-      const double d2 = step * step;
+    const double d2 = step * step;
+    if (std::abs(step) <= 1e-4) {
+      s = step * (1.0 - d2 * (1.0 / 6.0));
+      c = 1.0 - 0.5 * d2;
+    } else if (std::abs(step) <= 1.0 / 32.0) {
       s = step * (1.0 + d2 * (-1.0 / 6.0 + d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
       c = 1.0 + d2 * (-0.5 + d2 * (1.0 / 24.0 + d2 * (-1.0 / 720.0 + d2 * (1.0 / 40320.0))));
     } else {
