@@ -101,35 +101,34 @@ class SlideEquation {
     double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
   };
 
-  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
-      : W_(W), q_(q), mu_(mu) {
+  // With c = cos φ, s = sin φ: a = W_nn + μ (W_n1 c + W_n2 s), b_i = W_i0 + μ (W_i1 c +
+  // W_i2 s) (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c. The v_i are linear in
+  // (1, c, s); their coefficients are formed here, once per solve.
+  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu) {
     const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
     v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
     a_floor_ = 1e-14 * w_size;
+    for (int k = 0; k < 3; ++k) {
+      const double m = k == 0 ? 1.0 : mu;  // coefficient of 1, c, s in a and b_i
+      a_[k] = m * W(0, k);
+      v1_[k] = q[1] * a_[k] - q[0] * (m * W(1, k));
+      v2_[k] = q[2] * a_[k] - q[0] * (m * W(2, k));
+    }
   }
 
   Value at(double phi) const { return at(std::cos(phi), std::sin(phi)); }
-  // At the direction t(φ) = (c, s) = (cos φ, sin φ): a = W_nn + μ (W_n1 c + W_n2 s),
-  // b_i = W_i0 + μ (W_i1 c + W_i2 s) (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c.
+  // At the direction t(φ) = (c, s) = (cos φ, sin φ).
   Value at(double c, double s) const {
-    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
-    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
-    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
-    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
-    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
-    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
-    const double qn = q_[0];
-    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
-    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
-    // a'' = W_nn − a, b_i'' = W_i0 − b_i
-    const double d2v1 = (W_(0, 0) - a) * q_[1] - qn * (W_(1, 0) - b1);
-    const double d2v2 = (W_(0, 0) - a) * q_[2] - qn * (W_(2, 0) - b2);
+    const double v1 = v1_[0] + (v1_[1] * c + v1_[2] * s);
+    const double v2 = v2_[0] + (v2_[1] * c + v2_[2] * s);
+    const double dv1 = v1_[2] * c - v1_[1] * s, dv2 = v2_[2] * c - v2_[1] * s;
     Value value;
     value.g = v1 * s - v2 * c;
     value.dot = v1 * c + v2 * s;
     value.dg = dv1 * s - dv2 * c + value.dot;
-    value.d2g = d2v1 * s - d2v2 * c + 2.0 * (dv1 * c + dv2 * s) - value.g;
-    value.a = a;
+    // v_i'' = −(v_i − v_i(0 terms))
+    value.d2g = (v2 - v2_[0]) * c - (v1 - v1_[0]) * s + 2.0 * (dv1 * c + dv2 * s) - value.g;
+    value.a = a_[0] + (a_[1] * c + a_[2] * s);
     return value;
   }
 
@@ -141,9 +140,7 @@ class SlideEquation {
   bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
 
  private:
-  Eigen::Matrix3d W_;
-  Eigen::Vector3d q_;
-  double mu_;
+  double a_[3], v1_[3], v2_[3];  // coefficients of 1, c, s
   double v_scale_;
   double a_floor_;
 };
