@@ -146,16 +146,16 @@ class SlideEquation {
 };
 
 // Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
-// Returns true on convergence: g = 0, a step below 1e-13 rad, or a step δ (≤ 1e-6 rad)
-// after which the root is within round-off, |g''| δ² / (2 |g'|) ≤ 1e-17 rad (the error
-// of a Newton step, which saves the step below 1e-13 that would only confirm it); phi is not wrapped.
-// `iterations` is increased by the number of steps.
+// Returns true on convergence: g = 0, a step below 1e-13 rad, or a step δ ≤ 1e-6 rad whose
+// Newton error |g''| δ² / (2 |g'|) is below 1e-17 rad (the root to round-off; the step
+// below 1e-13 that would follow only confirms it); phi is not wrapped. `iterations` is
+// increased by the number of steps.
 bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
                               int max_iterations);
-// The same iteration on the direction t(φ) = (cos φ, sin φ) itself, which it rotates by
-// each step δ (cos δ and sin δ of a small step by their Taylor series, no call to the
-// library's sin and cos): the iterates of the form above to round-off. `direction` is a
-// unit vector on entry and, renormalised, on return; `turned` (optional) gets Σ δ.
+// The same iteration carried out on the direction t(φ) = (cos φ, sin φ), which each step δ
+// rotates (cos δ and sin δ of a step below 1/32 rad by their series: no call to sin or
+// cos); the φ form above runs through it. `direction`: a unit vector on entry and,
+// renormalised, on return; `turned` (optional) gets Σ δ.
 bool slide_newton_unbracketed(const SlideEquation& equation, Eigen::Vector2d& direction,
                               int& iterations, int max_iterations, double* turned = nullptr);
 
