@@ -53,6 +53,7 @@
 
 #include "core/nscd/nscd_solver.h"
 #include "core/nscd/reduced_problem_io.h"
+#include "cube_lattice.h"
 #include "fclib_io.h"
 
 using namespace wiregrain;
@@ -71,63 +72,8 @@ struct Options {
 };
 
 // ---------------------------------------------------------------------------------------
-// Generated problems: unit cubes (mass 1, inertia 1/6) on a lattice, g = 1, h = 1e-3
-// (DESIGN.md §2 units), assembled into the reduced problem of one Moreau–Jean step.
-
-NscdStep cube_lattice(int nx, int ny, int nz, const Options& options, bool perturb) {
-  const double h = 1e-3, g = 1.0;
-  std::mt19937_64 rng(options.seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  NscdStep step;
-  step.time_step = h;
-  auto index = [&](int i, int j, int k) { return (k * ny + j) * nx + i; };
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        NscdBody body;
-        body.inverse_mass = 1.0;
-        body.inverse_inertia = 6.0 * Matrix3d::Identity();
-        if (perturb) {
-          body.velocity_begin = 0.1 * g * h * Vector3d(unit(rng), unit(rng), unit(rng));
-          body.angular_velocity_begin = 0.1 * g * h * Vector3d(unit(rng), unit(rng), unit(rng));
-        }
-        body.velocity_free = body.velocity_begin + Vector3d(0.0, 0.0, -g * h);
-        body.angular_velocity_free = body.angular_velocity_begin;
-        step.bodies.push_back(body);
-      }
-    }
-  }
-  // Four points at the corners of the unit face between `lower` (−1: ground) and `upper`,
-  // normal along `axis` from lower to upper.
-  auto add_face = [&](int lower, int upper, int axis) {
-    const Vector3d n = Vector3d::Unit(axis);
-    const Vector3d e1 = Vector3d::Unit((axis + 1) % 3), e2 = Vector3d::Unit((axis + 2) % 3);
-    const Matrix3d frame = contact_frame(n);
-    for (double s1 : {-0.5, 0.5}) {
-      for (double s2 : {-0.5, 0.5}) {
-        NscdContact contact;
-        contact.body_a = lower;
-        contact.body_b = upper;
-        contact.friction = options.mu;
-        contact.gap = perturb ? 2e-7 * unit(rng) : 0.0;
-        const Vector3d in_face = s1 * e1 + s2 * e2;
-        contact.jacobian_b = contact_jacobian(frame, -0.5 * n + in_face, 1.0);
-        if (lower >= 0) contact.jacobian_a = contact_jacobian(frame, 0.5 * n + in_face, -1.0);
-        step.contacts.push_back(contact);
-      }
-    }
-  };
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        add_face(k == 0 ? -1 : index(i, j, k - 1), index(i, j, k), 2);
-        if (i > 0) add_face(index(i - 1, j, k), index(i, j, k), 0);
-        if (j > 0) add_face(index(i, j - 1, k), index(i, j, k), 1);
-      }
-    }
-  }
-  return step;
-}
+// Generated problems (cube_lattice.h; random bodies below), assembled into the reduced
+// problem of one Moreau–Jean step.
 
 NscdStep random_bodies(int bodies, int contacts, const Options& options) {
   std::mt19937_64 rng(options.seed);
@@ -179,13 +125,13 @@ ReducedProblem generate(int argc, char** argv, int& next, const Options& options
   if (kind == "pile") {
     const int nx = integer("NX"), ny = integer("NY"), nz = integer("NZ");
     label = "pile " + std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
-    step = cube_lattice(nx, ny, nz, options, true);
+    step = wiregrain_bench::cube_lattice(nx, ny, nz, options.seed, options.mu, true);
     return assemble_reduced(step, law);
   }
   if (kind == "column") {
     const int n = integer("N");
     label = "column of " + std::to_string(n) + " cubes";
-    step = cube_lattice(1, 1, n, options, false);
+    step = wiregrain_bench::cube_lattice(1, 1, n, options.seed, options.mu, false);
     return assemble_reduced(step, law);
   }
   if (kind == "random") {

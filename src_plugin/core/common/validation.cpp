@@ -25,10 +25,9 @@ void require_positive(const char* name, double value) {
                                     format_number(value));
 }
 
-void require_nonnegative(const char* name, double value) {
-  if (!(value >= 0.0) || !std::isfinite(value))
-    throw InvalidArgument(name, std::string(name) + " must be a finite number >= 0, got " +
-                                    format_number(value));
+void throw_not_nonnegative(const char* name, double value) {
+  throw InvalidArgument(name, std::string(name) + " must be a finite number >= 0, got " +
+                                  format_number(value));
 }
 
 }  // namespace wiregrain

@@ -59,17 +59,54 @@ struct Candidate {
 // Newton from a guess, step limited to 0.5 rad (coulomb_local.h).
 bool slide_newton_unbracketed(const SlideEquation& eq, double& phi, int& iterations,
                               int max_iterations) {
+  Eigen::Vector2d direction(std::cos(phi), std::sin(phi));
+  double turned = 0.0;
+  const bool converged = slide_newton_unbracketed(eq, direction, iterations, max_iterations, &turned);
+  phi += turned;
+  return converged;
+}
+
+bool slide_newton_unbracketed(const SlideEquation& eq, Eigen::Vector2d& direction,
+                              int& iterations, int max_iterations, double* turned) {
+  bool converged = false;
+  double total = 0.0;
   for (int it = 0; it < max_iterations; ++it) {
-    const SlideEquation::Value value = eq.at(phi);
-    if (value.g == 0.0) return true;
-    if (value.dg == 0.0 || !std::isfinite(value.dg)) return false;
-    double step = -value.g / value.dg;
-    step = std::clamp(step, -0.5, 0.5);
-    phi += step;
+    const SlideEquation::Value value = eq.at(direction[0], direction[1]);
+    if (value.g == 0.0) {
+      converged = true;
+      break;
+    }
+    if (value.dg == 0.0 || !std::isfinite(value.dg)) break;
+    const double step = std::clamp(-value.g / value.dg, -0.5, 0.5);
+    const bool last = std::abs(step) <= 1e-13 ||
+                      (std::abs(step) <= 1e-6 &&
+                       std::abs(value.d2g) * step * step <= 2e-17 * std::abs(value.dg));
+    // t(φ + δ) = R(δ) t(φ). The series below are exact to below 1e-17 (first terms left
+    // out: δ⁴/5! relative and δ⁴/4! for |δ| ≤ 1e-4, δ⁸/9! relative and δ¹⁰/10! for
+    // |δ| ≤ 1/32).
+    double c, s;
+    const double d2 = step * step;
+    if (std::abs(step) <= 1e-4) {
+      s = step * (1.0 - d2 * (1.0 / 6.0));
+      c = 1.0 - 0.5 * d2;
+    } else if (std::abs(step) <= 1.0 / 32.0) {
+      s = step * (1.0 + d2 * (-1.0 / 6.0 + d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
+      c = 1.0 + d2 * (-0.5 + d2 * (1.0 / 24.0 + d2 * (-1.0 / 720.0 + d2 * (1.0 / 40320.0))));
+    } else {
+      c = std::cos(step);
+      s = std::sin(step);
+    }
+    direction = Eigen::Vector2d(c * direction[0] - s * direction[1], s * direction[0] + c * direction[1]);
+    total += step;
     ++iterations;
-    if (std::abs(step) <= 1e-13) return true;
+    if (last) {
+      converged = true;
+      break;
+    }
   }
-  return false;
+  direction /= direction.norm();
+  if (turned != nullptr) *turned = total;
+  return converged;
 }
 
 // Brent's method (GSL gsl_root_fsolver_brent: inverse quadratic interpolation, secant
@@ -127,11 +164,11 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
     return solution;
   }
 
-  // Stick: u = 0.
+  // Stick: u = 0. (‖r_t‖ ≤ μ r_n compared in squares, r_n ≥ 0.)
   Eigen::Vector3d stick = Eigen::Vector3d::Zero();
   if (delassus.invertible()) {
     stick = -(delassus.inverse() * q);
-    if (stick[0] >= 0.0 && std::hypot(stick[1], stick[2]) <= mu * stick[0]) {
+    if (stick[0] >= 0.0 && stick.tail<2>().squaredNorm() <= (mu * stick[0]) * (mu * stick[0])) {
       solution.impulse = stick;
       solution.velocity = W * stick + q;
       solution.state = ContactState::stick;
@@ -139,25 +176,25 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
     }
   }
 
-  // Slide. Starting direction: the guess if it lies on the cone boundary, else the
-  // direction of the rejected stick impulse, else the direction opposing q_t.
+  // Slide. Starting direction t0 of r_t: the guess's if it lies on the cone boundary, else
+  // that of the rejected stick impulse, else −q_t.
   const SlideEquation equation(W, q, mu);
-  double phi0 = 0.0;
-  const double guess_t = std::hypot(guess[1], guess[2]);
+  Eigen::Vector2d t0(1.0, 0.0);
+  const double guess_t = guess.tail<2>().norm();
   if (guess[0] > 0.0 && guess_t > 0.0 && guess_t >= (1.0 - 1e-6) * mu * guess[0]) {
-    phi0 = std::atan2(guess[2], guess[1]);
-  } else if (std::hypot(stick[1], stick[2]) > 0.0) {
-    phi0 = std::atan2(stick[2], stick[1]);
-  } else if (std::hypot(q[1], q[2]) > 0.0) {
-    phi0 = std::atan2(-q[2], -q[1]);
+    t0 = guess.tail<2>() / guess_t;
+  } else if (!stick.tail<2>().isZero(0.0)) {
+    t0 = stick.tail<2>().normalized();
+  } else if (!q.tail<2>().isZero(0.0)) {
+    t0 = -q.tail<2>().normalized();
   }
 
   int iterations = 0;
-  double phi = phi0;
+  Eigen::Vector2d t = t0;
+  SlideEquation::Value value;
   bool found = false;
-  if (slide_newton_unbracketed(equation, phi, iterations, 30)) {
-    phi = wrap_angle(phi);
-    const SlideEquation::Value value = equation.at(phi);
+  if (slide_newton_unbracketed(equation, t, iterations, 30)) {
+    value = equation.at(t[0], t[1]);
     found = equation.is_root(value) && equation.admissible(value);
     if (found) solution.slide_method = SlideMethod::newton;
   }
@@ -165,6 +202,7 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
   if (!found) {
     // Scan g on 24 angles from phi0; refine every sign change; keep the admissible root
     // nearest to phi0.
+    const double phi0 = std::atan2(t0[1], t0[0]);
     constexpr int kSamples = 24;
     std::array<double, kSamples + 1> angle{};
     std::array<double, kSamples + 1> g{};
@@ -204,16 +242,17 @@ LocalSolution solve_coulomb_local(const LocalDelassus& delassus, const Eigen::Ve
       throw NumericalFailure(
           "coulomb_local: no admissible sliding solution (W not positive definite?)");
     }
-    phi = std::min_element(roots.begin(), roots.end(),
-                           [](const Candidate& x, const Candidate& y) {
-                             return x.distance < y.distance;
-                           })
-              ->phi;
+    const double phi = std::min_element(roots.begin(), roots.end(),
+                                        [](const Candidate& x, const Candidate& y) {
+                                          return x.distance < y.distance;
+                                        })
+                           ->phi;
+    t = Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    value = equation.at(phi);
   }
 
-  const SlideEquation::Value value = equation.at(phi);
   const double r_n = -q[0] / value.a;
-  solution.impulse = Eigen::Vector3d(r_n, mu * r_n * std::cos(phi), mu * r_n * std::sin(phi));
+  solution.impulse = Eigen::Vector3d(r_n, mu * r_n * t[0], mu * r_n * t[1]);
   solution.velocity = W * solution.impulse + q;
   solution.state = ContactState::slide;
   solution.newton_iterations = iterations;
@@ -226,7 +265,7 @@ LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3
 }
 
 Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
-  const double r_t = std::hypot(r[1], r[2]);
+  const double r_t = r.tail<2>().norm();
   if (r_t <= mu * r[0]) return r;                       // inside K_μ
   if (mu * r_t <= -r[0]) return Eigen::Vector3d::Zero();  // inside the polar cone
   const double r_n = (r[0] + mu * r_t) / (1.0 + mu * mu);
@@ -236,7 +275,7 @@ Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
 
 Eigen::Vector3d natural_map_residual(const Eigen::Vector3d& r, const Eigen::Vector3d& u,
                                      double mu) {
-  const Eigen::Vector3d modified(u[0] + mu * std::hypot(u[1], u[2]), u[1], u[2]);
+  const Eigen::Vector3d modified(u[0] + mu * u.tail<2>().norm(), u[1], u[2]);
   return r - project_on_coulomb_cone(r - modified, mu);
 }
 

@@ -23,7 +23,8 @@
 //          admissible when a(φ) > 0 (so r_n > 0, as q_n < 0) and v(φ)·t(φ) ≤ 0 (λ ≥ 0).
 //          g is a trigonometric polynomial of degree 2 in φ (at most 4 roots). It is
 //          solved by Newton's method in φ from a guess (the previous impulse direction,
-//          else the direction of the rejected stick impulse); if that fails or gives an
+//          else the direction of the rejected stick impulse), carried out on t(φ) itself,
+//          rotated by each step (no sin, cos or atan2 per solve); if that fails or gives an
 //          inadmissible root, by a scan of g over [0, 2π) with Brent's method (GSL) in
 //          every bracket, and if no bracket holds an admissible root
 //          (a double root, or two roots closer than the sampling), by Newton from each
@@ -95,35 +96,39 @@ class SlideEquation {
   struct Value {
     double g;    // v × t
     double dg;   // dg/dφ = v' × t + v·t
+    double d2g;  // d²g/dφ² = v'' × t + 2 v'·t − g
     double a;    // (W c(φ))_n; r_n = −q_n / a
     double dot;  // v·t; at a root v = a u_t = −a λ r_t, so v·t = −a λ μ r_n ≤ 0
   };
 
-  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu)
-      : W_(W), q_(q), mu_(mu) {
+  // With c = cos φ, s = sin φ: a = W_nn + μ (W_n1 c + W_n2 s), b_i = W_i0 + μ (W_i1 c +
+  // W_i2 s) (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c. The v_i are linear in
+  // (1, c, s); their coefficients are formed here, once per solve.
+  SlideEquation(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu) {
     const double w_size = W.cwiseAbs().maxCoeff() * (1.0 + mu);
     v_scale_ = 2.0 * w_size * q.cwiseAbs().maxCoeff();
     a_floor_ = 1e-14 * w_size;
+    for (int k = 0; k < 3; ++k) {
+      const double m = k == 0 ? 1.0 : mu;  // coefficient of 1, c, s in a and b_i
+      a_[k] = m * W(0, k);
+      v1_[k] = q[1] * a_[k] - q[0] * (m * W(1, k));
+      v2_[k] = q[2] * a_[k] - q[0] * (m * W(2, k));
+    }
   }
 
-  // With c = cos φ, s = sin φ: a = W_nn + μ (W_n1 c + W_n2 s), b_i = W_i0 + μ (W_i1 c + W_i2 s)
-  // (i = 1, 2), v_i = a q_i − q_n b_i, g = v_1 s − v_2 c.
-  Value at(double phi) const {
-    const double c = std::cos(phi), s = std::sin(phi);
-    const double a = W_(0, 0) + mu_ * (W_(0, 1) * c + W_(0, 2) * s);
-    const double b1 = W_(1, 0) + mu_ * (W_(1, 1) * c + W_(1, 2) * s);
-    const double b2 = W_(2, 0) + mu_ * (W_(2, 1) * c + W_(2, 2) * s);
-    const double da = mu_ * (-W_(0, 1) * s + W_(0, 2) * c);
-    const double db1 = mu_ * (-W_(1, 1) * s + W_(1, 2) * c);
-    const double db2 = mu_ * (-W_(2, 1) * s + W_(2, 2) * c);
-    const double qn = q_[0];
-    const double v1 = a * q_[1] - qn * b1, v2 = a * q_[2] - qn * b2;
-    const double dv1 = da * q_[1] - qn * db1, dv2 = da * q_[2] - qn * db2;
+  Value at(double phi) const { return at(std::cos(phi), std::sin(phi)); }
+  // At the direction t(φ) = (c, s) = (cos φ, sin φ).
+  Value at(double c, double s) const {
+    const double v1 = v1_[0] + (v1_[1] * c + v1_[2] * s);
+    const double v2 = v2_[0] + (v2_[1] * c + v2_[2] * s);
+    const double dv1 = v1_[2] * c - v1_[1] * s, dv2 = v2_[2] * c - v2_[1] * s;
     Value value;
     value.g = v1 * s - v2 * c;
     value.dot = v1 * c + v2 * s;
     value.dg = dv1 * s - dv2 * c + value.dot;
-    value.a = a;
+    // v_i'' = −(v_i − v_i(0 terms))
+    value.d2g = (v2 - v2_[0]) * c - (v1 - v1_[0]) * s + 2.0 * (dv1 * c + dv2 * s) - value.g;
+    value.a = a_[0] + (a_[1] * c + a_[2] * s);
     return value;
   }
 
@@ -135,18 +140,24 @@ class SlideEquation {
   bool is_root(const Value& value) const { return std::abs(value.g) <= 1e-12 * v_scale_; }
 
  private:
-  Eigen::Matrix3d W_;
-  Eigen::Vector3d q_;
-  double mu_;
+  double a_[3], v1_[3], v2_[3];  // coefficients of 1, c, s
   double v_scale_;
   double a_floor_;
 };
 
 // Newton's method on g from phi, without bracket; the step is limited to 0.5 rad.
-// Returns true on convergence (step below 1e-13 rad, or g = 0); phi is not wrapped.
-// `iterations` is increased by the number of steps.
+// Returns true on convergence: g = 0, a step below 1e-13 rad, or a step δ ≤ 1e-6 rad whose
+// Newton error |g''| δ² / (2 |g'|) is below 1e-17 rad (the root to round-off; the step
+// below 1e-13 that would follow only confirms it); phi is not wrapped. `iterations` is
+// increased by the number of steps.
 bool slide_newton_unbracketed(const SlideEquation& equation, double& phi, int& iterations,
                               int max_iterations);
+// The same iteration carried out on the direction t(φ) = (cos φ, sin φ), which each step δ
+// rotates (cos δ and sin δ of a step below 1/32 rad by their series: no call to sin or
+// cos); the φ form above runs through it. `direction`: a unit vector on entry and,
+// renormalised, on return; `turned` (optional) gets Σ δ.
+bool slide_newton_unbracketed(const SlideEquation& equation, Eigen::Vector2d& direction,
+                              int& iterations, int max_iterations, double* turned = nullptr);
 
 // A root of g in the bracket [lo, hi], g(lo) g(hi) < 0, by Brent's method (GSL's
 // gsl_root_fsolver_brent), stopping when the bracket is below 1e-14 rad (at most 100

@@ -462,12 +462,14 @@ class BodyContactOperator final : public ContactOperator {
   int contact_count() const override { return static_cast<int>(links_.size()); }
   const LocalDelassus& delassus_block(int c) const override { return links_[c].delassus; }
   double friction_coefficient(int c) const override { return links_[c].mu; }
+  // The sums in a tree, not one chain: the sweep waits for u of each contact (its bodies'
+  // velocities were changed by the contact before).
   Eigen::Vector3d velocity(int c) const override {
     const Link& link = links_[c];
-    Eigen::Vector3d u = link.constant;
-    if (link.body_a >= 0) u.noalias() += link.jacobian_a * velocities_[link.body_a];
-    if (link.body_b >= 0) u.noalias() += link.jacobian_b * velocities_[link.body_b];
-    return u;
+    Eigen::Vector3d side_a = Eigen::Vector3d::Zero(), side_b = Eigen::Vector3d::Zero();
+    if (link.body_a >= 0) side_a = side_velocity(link.jacobian_a, velocities_[link.body_a]);
+    if (link.body_b >= 0) side_b = side_velocity(link.jacobian_b, velocities_[link.body_b]);
+    return link.constant + (side_a + side_b);
   }
   void add_impulse(int c, const Eigen::Vector3d& delta) override {
     const Link& link = links_[c];
@@ -516,6 +518,13 @@ class BodyContactOperator final : public ContactOperator {
     double mu = 0.0;
     LocalDelassus delassus;
   };
+  // H V = H_v v + H_ω ω
+  static Eigen::Vector3d side_velocity(const ContactJacobian& H, const Vector6d& V) {
+    const Eigen::Vector3d linear = H.leftCols<3>() * V.head<3>();
+    const Eigen::Vector3d angular = H.rightCols<3>() * V.tail<3>();
+    return linear + angular;
+  }
+
   std::vector<Link> links_;
   std::vector<Vector6d> velocities_;
   std::vector<Eigen::Matrix<double, 6, 6>> inverse_mass_;
