@@ -215,7 +215,7 @@ void PairWireContact::compute(int eflag, int vflag) {
   for (int i = 0; i < nall; i++) {
     segment_next_[i] = -1;
     if (!next[i]) continue;
-    const int j = atom->map(next[i]);
+    const int j = wire_->linked_bead(next[i]);
     if (j < 0) {
       if (i < nlocal)
         error->one(FLERR, ("pair wire/contact (id -): bead " + std::to_string(tag[i]) + " links to bead " +

@@ -1,0 +1,119 @@
+"""Bad input across the plugin's styles and commands, table-driven: each case is a tiny
+deck (a few atoms, run 0 or run 1) and the exact ERROR text it must stop with, naming the
+style, its ID and the argument. Cases that the code handled badly before (a crash, a
+silent acceptance, a misleading or generic message) say so in a comment."""
+
+from liggghts_run import DeckTestCase, main, run
+
+WIRE = """
+units           lj
+atom_style      wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -2 2 -2 2 -2 2
+create_box      2 box
+"""
+WIRE_LINE = WIRE + "create_wire 1 line 0 0 0 1 0 0\n"
+
+POLY = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -6 6 -6 6 -6 6
+create_box      1 box
+"""
+ONE_CUBE = POLY + "create_grains 1 1 random box seed 5 shape cube 1 sweep 0\n"
+
+# one cube grain (type 1) and a wire (type 2) above it
+HYBRID = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -4 4 -4 4 -1 6
+create_box      2 box
+create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
+create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
+group           grains type 1
+group           wire type 2
+"""
+
+# a tetrahedron: the smallest hull
+SHAPES = "wiregrain shapes 1 mass dilated\nshape 0 sweep 0.1 vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+
+
+def wire_data(rows, velocities=None):
+    """A data file of wire beads: Atoms lines 'id type prev next rest radius mass x y z'."""
+    lines = ["wire beads", "", f"{len(rows)} atoms", "2 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi",
+             "-5 5 zlo zhi", "", "Atoms", ""] + rows
+    if velocities:
+        lines += ["", "Velocities", ""] + velocities
+    return "\n".join(lines) + "\n"
+
+
+CHAIN = ["1 1 0 2 0.2 0.1 1.0 0 0 0", "2 1 1 3 0.2 0.1 1.0 0.2 0 0", "3 1 2 0 0 0.1 1.0 0.4 0 0"]
+
+
+def chain_with(k, row):
+    """The 3-bead chain with line k replaced."""
+    rows = list(CHAIN)
+    rows[k] = row
+    return {"c.data": wire_data(rows)}
+
+
+READ_WIRE = """
+units           lj
+atom_style      wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+read_data       c.data
+"""
+
+
+def grain_data(row):
+    """A one-grain data file (Atoms line 'id type shape density qw qi qj qk x y z') read with
+    the tetrahedron library."""
+    text = "\n".join(["grains", "", "1 atoms", "1 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi", "-5 5 zlo zhi",
+                      "", "Atoms", "", row]) + "\n"
+    return {"g.data": text, "s.shapes": SHAPES}
+
+
+READ_GRAIN = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+grain_shapes    read s.shapes
+read_data       g.data
+"""
+
+
+class Table(DeckTestCase):
+    """CASES: (deck, expected ERROR text[, files]); every deck must stop with it."""
+    CASES = ()
+
+    def test_cases(self):
+        for case in self.CASES:
+            deck, message = case[0], case[1]
+            files = case[2] if len(case) > 2 else None
+            with self.subTest(message=message):
+                self.assertStopsWith(run(deck + "\n", files=files), message)
+
+
+class WireLinks(Table):
+    # A link to a bead ID beyond the largest atom ID used to read past the end of
+    # LIGGGHTS' array map: bead 99 was taken as some other atom and the run went on
+    # silently; bead 7 gave "the segment from bead 1 to bead 7 has zero length".
+    CASES = (
+        (READ_WIRE + "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): bead 3 links to bead 99, "
+         "which is neither owned nor a ghost here", chain_with(2, "3 1 2 99 0.2 0.1 1.0 0.4 0 0")),
+        (READ_WIRE + "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): bead 1 links to bead 7, "
+         "which is neither owned nor a ghost here", chain_with(0, "1 1 0 7 0.2 0.1 1.0 0 0 0")),
+        (READ_WIRE + "pair_style wire/contact\npair_coeff * *\nrun 0", "pair wire/contact (id -): bead 3 links to "
+         "bead 99, which is neither owned nor a ghost here", chain_with(2, "3 1 2 99 0.2 0.1 1.0 0.4 0 0")),
+    )
+
+
+if __name__ == "__main__":
+    main()
