@@ -115,5 +115,25 @@ class WireLinks(Table):
     )
 
 
+class NscdCounts(Table):
+    # Counts beyond an int used to wrap: max_iterations 3000000000 stopped at the first
+    # solve with "max_iterations must be >= 1, got -1294967296", every 3000000000 with
+    # "h must be > 0", write_problems 3000000000 was accepted (and never wrote), and a
+    # 'timestep' of more than 2^31 LIGGGHTS steps silently solved every step.
+    NSCD = ONE_CUBE + "fix nscd all nscd/polyhedra "
+    CASES = (
+        (NSCD + "max_iterations 3000000000\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be <= 2147483647, got 3000000000"),
+        (NSCD + "every 3000000000\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'every' must be <= 2147483647, got 3000000000"),
+        (NSCD + "write_problems 3000000000 p_*.txt\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be <= 2147483647, "
+         "got 3000000000"),
+        (NSCD + "seed 0\nrun 1", "fix nscd/polyhedra (id nscd): value of 'seed' must be >= 1, got 0"),
+        (NSCD + "timestep 1e300\nrun 1", "fix nscd/polyhedra (id nscd): value of 'timestep' (1e+300) must be at "
+         "most 2147483647 LIGGGHTS timesteps (0.005)"),
+    )
+
+
 if __name__ == "__main__":
     main()
