@@ -135,5 +135,24 @@ class NscdCounts(Table):
     )
 
 
+class GrainShapesFile(Table):
+    # A non-finite vertex coordinate used to be reported as "too few vertex coordinates"; a
+    # negative shape count was read as an empty library; reading a library while grains
+    # exist replaced the shapes under them (grains 1 and 2 kept indices beyond the new
+    # one-shape library: out-of-bounds reads, the run went on).
+    READ = POLY + "grain_shapes read s.shapes\n"
+    CASES = (
+        (READ, "command grain_shapes (id -): 's.shapes': shape 0: vertex coordinate 'nan' must be a finite number",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "0 0 nan\n")}),
+        (READ, "command grain_shapes (id -): 's.shapes': shape 0: vertex coordinate '1e400' must be a finite number",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "0 0 1e400\n")}),
+        (READ, "command grain_shapes (id -): 's.shapes': the number of shapes N must be >= 0, got -1",
+         {"s.shapes": SHAPES.replace("shapes 1", "shapes -1")}),
+        (POLY + "create_grains 1 3 random box seed 1\ngrain_shapes read s.shapes\nfix n all nve/polyhedron\nrun 1",
+         "command grain_shapes (id -): read must come before any grain exists (3 grains use the current shape "
+         "library): read the shapes before read_data", {"s.shapes": SHAPES}),
+    )
+
+
 if __name__ == "__main__":
     main()
