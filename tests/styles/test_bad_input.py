@@ -154,5 +154,19 @@ class GrainShapesFile(Table):
     )
 
 
+class PairCoeffTypes(Table):
+    # Ranges used to pass unchecked: '3*' of 2 types selected nothing and stopped with
+    # LIGGGHTS' "All pair coeffs are not set", '*5' with "Numeric index is out of bounds".
+    PAIR = WIRE_LINE + "pair_style wire/contact\n"
+    CASES = (
+        (PAIR + "pair_coeff 3* *\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '3*' is not one of 1..2 (nor a range of them)"),
+        (PAIR + "pair_coeff * *5\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '*5' is not one of 1..2 (nor a range of them)"),
+        (PAIR + "pair_coeff 2*1 *\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '2*1' is not one of 1..2 (nor a range of them)"),
+    )
+
+
 if __name__ == "__main__":
     main()
