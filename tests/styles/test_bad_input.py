@@ -168,5 +168,16 @@ class PairCoeffTypes(Table):
     )
 
 
+class DumpCannotWrite(Table):
+    # VTK's writer returns success when it cannot open the file: the snapshot went
+    # missing and only the series file's failure stopped the run, naming that file.
+    CASES = (
+        (ONE_CUBE + "shell touch blocker\ndump d all polyhedron/vtk 10 blocker/g_*.vtp\nrun 0",
+         "dump polyhedron/vtk (id d): cannot write file 'blocker/g_0.vtp'"),
+        (WIRE_LINE + "shell touch blocker\ndump d all wire/vtk 10 blocker/w_*.vtp\nrun 0",
+         "dump wire/vtk (id d): cannot write file 'blocker/w_0.vtp'"),
+    )
+
+
 if __name__ == "__main__":
     main()
