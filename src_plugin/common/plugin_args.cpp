@@ -57,6 +57,14 @@ long StyleArgs::value_int(const std::string& keyword) {
   return v;
 }
 
+long StyleArgs::value_int_in_range(const std::string& keyword, long lo, long hi, const std::string& label) {
+  const long v = value_int(keyword);
+  const std::string name = label.empty() ? "'" + keyword + "'" : label;
+  if (v < lo) fail("value of " + name + " must be >= " + std::to_string(lo) + ", got " + std::to_string(v));
+  if (v > hi) fail("value of " + name + " must be <= " + std::to_string(hi) + ", got " + std::to_string(v));
+  return v;
+}
+
 double StyleArgs::value_positive(const std::string& keyword) {
   const double v = value_double(keyword);
   if (!(v > 0.0)) fail("value of '" + keyword + "' must be > 0, got " + arg_[pos_ - 1]);

@@ -27,6 +27,11 @@ class StyleArgs {
   std::string value_word(const std::string& keyword);
   double value_double(const std::string& keyword);
   long value_int(const std::string& keyword);
+  // value_int in [lo, hi], e.g. "value of 'every' must be >= 1, got 0"; hi defaults to the
+  // largest int, so the value fits the int it is stored in ("must be <= 2147483647, got
+  // 3000000000" instead of a wrapped negative count). label replaces "'keyword'" in the text.
+  long value_int_in_range(const std::string& keyword, long lo, long hi = 2147483647L,
+                          const std::string& label = "");
   // value_double with a domain check, e.g. "value of 'E' must be > 0, got -1"
   double value_positive(const std::string& keyword);
   double value_nonnegative(const std::string& keyword);

@@ -257,7 +257,7 @@ double FixWireGrain::held_reach() {
   double local = 0.0, needed;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || !next[i]) continue;
-    const int j = atom->map(next[i]);
+    const int j = wire_->linked_bead(next[i]);
     if (j < 0) continue;  // reported by evaluate()
     const wiregrain::WireSegmentState segment = segment_of(i, j);
     // room for the segment to grow by a quarter within the NSCD step
@@ -335,7 +335,7 @@ void FixWireGrain::evaluate(bool setup) {
   history_->begin_step();
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || !next[i]) continue;
-    const int j = atom->map(next[i]);
+    const int j = wire_->linked_bead(next[i]);
     if (j < 0)
       fail_one("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
                ", which is neither owned nor a ghost here");

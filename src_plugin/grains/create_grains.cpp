@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <climits>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -153,9 +154,7 @@ void CreateGrains::command(int narg, char **arg) {
   const long type = args.value_int("type");
   if (type < 1 || type > atom->ntypes)
     args.fail("atom type " + std::to_string(type) + " is outside 1.." + std::to_string(atom->ntypes));
-  const long n_grains = args.value_int("N");
-  if (n_grains < 1) args.fail("value of 'N' must be >= 1, got " + std::to_string(n_grains));
-  if (n_grains > 100000000L) args.fail("value of 'N' must be <= 100000000, got " + std::to_string(n_grains));
+  const long n_grains = args.value_int_in_range("N", 1, 100000000L);
   const std::string mode = args.next_keyword();
   if (mode != "layer" && mode != "random") args.fail("unknown mode '" + mode + "' (layer or random)");
   const bool layer = mode == "layer";
@@ -192,10 +191,7 @@ void CreateGrains::command(int narg, char **arg) {
     } else if (key == "c_over_a") {
       c_over_a = args.value_double(key);
     } else if (key == "vertices") {
-      n_vertices = args.value_int(key);
-      if (n_vertices < 4) args.fail("value of 'vertices' must be >= 4, got " + std::to_string(n_vertices));
-      if (n_vertices > 1000000L)
-        args.fail("value of 'vertices' must be <= 1000000, got " + std::to_string(n_vertices));
+      n_vertices = args.value_int_in_range(key, 4, 1000000L);
     } else if (key == "sweep") {
       sweep = args.value_nonnegative(key);
       have_sweep = true;
@@ -205,8 +201,7 @@ void CreateGrains::command(int narg, char **arg) {
       if (!layer) args.fail("keyword 'spacing' applies to 'layer' only");
       spacing = args.value_positive(key);
     } else if (key == "attempts") {
-      attempts = args.value_int(key);
-      if (attempts < 1) args.fail("value of 'attempts' must be >= 1, got " + std::to_string(attempts));
+      attempts = args.value_int_in_range(key, 1, LONG_MAX);
     } else if (key == "write_shapes") {
       shapes_file = args.value_word(key);
     } else if (key == "shape") {

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -74,9 +75,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     if (key == "friction") core_->options.friction = args.value_nonnegative(key);
     else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
     else if (key == "max_iterations") {
-      const long n = args.value_int(key);
-      if (n < 1) args.fail("value of 'max_iterations' must be >= 1, got " + std::to_string(n));
-      core_->options.solver.max_iterations = (int)n;
+      core_->options.solver.max_iterations = (int)args.value_int_in_range(key, 1);
     } else if (key == "order") {
       const std::string v = args.value_word(key);
       if (v == "forward") core_->options.solver.order = wiregrain::SweepOrder::forward;
@@ -93,9 +92,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + wiregrain::format_number(v));
       core_->options.solver.subspace_regularization = v;
     } else if (key == "seed") {
-      const long seed = args.value_int(key);
-      if (seed < 1) args.fail("value of 'seed' must be >= 1");
-      core_->options.solver.seed = (std::uint64_t)seed;
+      core_->options.solver.seed = (std::uint64_t)args.value_int_in_range(key, 1, LONG_MAX);
     } else if (key == "warm_start") {
       const std::string v = args.value_word(key);
       if (v != "yes" && v != "no") args.fail("value of 'warm_start' must be yes or no, got '" + v + "'");
@@ -117,18 +114,14 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     } else if (key == "damping") {
       core_->options.damping = args.value_nonnegative(key);
     } else if (key == "write_problems") {
-      const long every = args.value_int(key);
-      if (every < 1) args.fail("value of 'write_problems' (every N steps) must be >= 1, got " + std::to_string(every));
-      problem_every_ = (int)every;
+      problem_every_ = (int)args.value_int_in_range(key, 1, INT_MAX, "'write_problems' (every N steps)");
       problem_file_ = args.value_word(key);
       if (problem_file_.find('*') == std::string::npos)
         args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" + problem_file_ + "'");
     } else if (key == "margin") {
       core_->options.margin = args.value_nonnegative(key);
     } else if (key == "every") {
-      const long every = args.value_int(key);
-      if (every < 1) args.fail("value of 'every' must be >= 1, got " + std::to_string(every));
-      every_ = (int)every;
+      every_ = (int)args.value_int_in_range(key, 1);
       every_given_ = true;
     } else if (key == "timestep") {
       nscd_timestep_ = args.value_positive(key);
@@ -281,6 +274,11 @@ void FixNSCDPolyhedra::init() {
       wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                  "value of 'timestep' (" + wiregrain::format_number(nscd_timestep_) +
                                      ") must be an integer multiple of the LIGGGHTS timestep (" +
+                                     wiregrain::format_number(update->dt) + ")");
+    if (ratio > INT_MAX)  // the solve interval is an int step count
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                 "value of 'timestep' (" + wiregrain::format_number(nscd_timestep_) + ") must be at most " +
+                                     std::to_string(INT_MAX) + " LIGGGHTS timesteps (" +
                                      wiregrain::format_number(update->dt) + ")");
   }
   const int missing = grains_->count_without_shape(groupbit);

@@ -48,6 +48,15 @@ void GrainShapes::command(int narg, char **arg) {
     return;
   }
   if (mode != "read") args.fail("first argument must be write or read, got '" + mode + "'");
+  // the grains index the library they were made with: replacing it under them would give
+  // them other shapes (or none: an index beyond the new library)
+  long local_grains = 0, grains_before = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->shapetype[i] >= 0) local_grains++;
+  MPI_Allreduce(&local_grains, &grains_before, 1, MPI_LONG, MPI_SUM, world);
+  if (grains_before > 0)
+    args.fail("read must come before any grain exists (" + std::to_string(grains_before) +
+              " grains use the current shape library): read the shapes before read_data");
 
   // rank 0 parses into the library's flat image, every rank rebuilds from it
   std::vector<double> data;
@@ -60,6 +69,8 @@ void GrainShapes::command(int narg, char **arg) {
     else if (!(in >> word) || word != "wiregrain" || !(in >> word) || word != "shapes" || !(in >> count) ||
              !(in >> word) || word != "mass" || !(in >> model) || (model != "dilated" && model != "sharp"))
       problem = "'" + path + "' is not a grain shape file (header 'wiregrain shapes N mass dilated|sharp')";
+    else if (count < 0)
+      problem = "'" + path + "': the number of shapes N must be >= 0, got " + std::to_string(count);
     else {
       data = {model == "dilated" ? 1.0 : 0.0, double(count)};
       for (long s = 0; s < count && problem.empty(); s++) {
@@ -75,8 +86,13 @@ void GrainShapes::command(int narg, char **arg) {
         data.push_back(double(n));
         for (long v = 0; v < 3 * n; v++) {
           double c;
-          if (!(in >> c)) {
+          if (!(in >> word)) {
             problem = "'" + path + "': shape " + std::to_string(s) + " has too few vertex coordinates";
+            break;
+          }
+          if (!wiregrain_lmp::parse_finite_number(word.c_str(), c)) {
+            problem = "'" + path + "': shape " + std::to_string(s) + ": vertex coordinate '" + word +
+                      "' must be a finite number";
             break;
           }
           data.push_back(c);

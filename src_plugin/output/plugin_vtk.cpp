@@ -8,6 +8,7 @@
 #include <sstream>
 
 #ifdef LAMMPS_VTK
+#include <vtkErrorCode.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -135,7 +136,8 @@ bool write_vtp(vtkPolyData* poly, const std::string& path, bool ascii) {
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();  // raw binary
   }
-  return writer->Write() == 1;
+  // Write() returns 1 even when the file cannot be opened; the error code tells
+  return writer->Write() == 1 && writer->GetErrorCode() == vtkErrorCode::NoError;
 #else
   (void)poly;
   (void)path;

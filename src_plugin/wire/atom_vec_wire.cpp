@@ -57,6 +57,11 @@ AtomVecWire *AtomVecWire::of(Atom *atom) {
   return NULL;
 }
 
+int AtomVecWire::linked_bead(int link_tag) const {
+  if (link_tag <= 0 || link_tag > atom->map_tag_max) return -1;
+  return atom->map(link_tag);
+}
+
 // Beads find their chain neighbours by tag, so the style needs an atom map; it turns
 // the array map on unless the user chose one (atom_modify map hash).
 void AtomVecWire::settings(int narg, char ** /*arg*/) {

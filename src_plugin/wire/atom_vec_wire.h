@@ -60,6 +60,11 @@ class AtomVecWire : public PluginAtomVec {
   // The wire style of this system (plain or inside atom_style hybrid), or NULL.
   static AtomVecWire *of(class Atom *);
 
+  // Local index (owned or ghost) of the bead a link names, -1 when this rank has no atom
+  // with that tag: every style follows links through here, since LIGGGHTS' array map is
+  // not bounds-checked (a link beyond the largest atom ID would read past its end).
+  int linked_bead(int link_tag) const;
+
  private:
   int *tag, *type, *mask;
   tagint *image;

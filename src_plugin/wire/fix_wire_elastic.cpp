@@ -185,7 +185,7 @@ void FixWireElastic::min_setup(int vflag) { post_force(vflag); }
 void FixWireElastic::min_post_force(int vflag) { post_force(vflag); }
 
 int FixWireElastic::bead_index(int tag, int from_tag) {
-  const int j = atom->map(tag);
+  const int j = wire_->linked_bead(tag);
   if (j < 0) {
     const std::string msg = "fix wire/elastic (id " + std::string(id) + "): bead " +
                             std::to_string(from_tag) + " links to bead " + std::to_string(tag) +

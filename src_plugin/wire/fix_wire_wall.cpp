@@ -148,7 +148,7 @@ void FixWireWall::post_force(int /*vflag*/) {
     // the segment length the bead stands for: its own, its previous bead's, or 2 r
     double previous_rest = 0.0;
     if (rest[i] <= 0.0 && prev[i]) {
-      const int j = atom->map(prev[i]);
+      const int j = wire_->linked_bead(prev[i]);
       if (j >= 0) previous_rest = rest[j];
     }
     const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(

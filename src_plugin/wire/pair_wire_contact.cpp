@@ -115,20 +115,25 @@ void PairWireContact::coeff(int narg, char **arg) {
   if (narg < 2) error->all(FLERR, "pair_coeff wire/contact (id -): expected: pair_coeff I J [keywords]");
   if (!allocated) allocate();
   // atom types as LIGGGHTS writes them (N, *, N*, *N, M*N), checked here for a clear message
-  int ilo, ihi, jlo, jhi;
-  for (int k = 0; k < 2; k++) {
-    const std::string word = arg[k];
-    const bool star = word.find('*') != std::string::npos;
-    if (!star) {
+  // a type N, or a range *, N*, *N, M*N that must select types within 1..ntypes
+  const auto type_range = [&](const std::string &word, int &lo, int &hi) {
+    const std::string::size_type star = word.find('*');
+    const auto number = [&](const std::string &text, int otherwise) {
+      if (text.empty()) return otherwise;
       char *end = NULL;
-      const long t = std::strtol(word.c_str(), &end, 10);
-      if (end == word.c_str() || *end != '\0' || t < 1 || t > atom->ntypes)
-        error->all(FLERR, ("pair_coeff wire/contact (id -): atom type '" + word + "' is not one of 1.." +
-                           std::to_string(atom->ntypes)).c_str());
-    }
-  }
-  force->bounds(arg[0], atom->ntypes, ilo, ihi);
-  force->bounds(arg[1], atom->ntypes, jlo, jhi);
+      const long t = std::strtol(text.c_str(), &end, 10);
+      return end == text.c_str() || *end != '\0' || t < 1 || t > atom->ntypes ? -1 : (int)t;
+    };
+    lo = number(star == std::string::npos ? word : word.substr(0, star), 1);
+    hi = star == std::string::npos ? lo : number(word.substr(star + 1), atom->ntypes);
+    if (lo < 1 || hi < 1 || lo > hi || word.find('*', star == std::string::npos ? 0 : star + 1) != std::string::npos)
+      error->all(FLERR, ("pair_coeff wire/contact (id -): atom type '" + word + "' is not one of 1.." +
+                         std::to_string(atom->ntypes) + (star == std::string::npos ? "" : " (nor a range of them)"))
+                            .c_str());
+  };
+  int ilo, ihi, jlo, jhi;
+  type_range(arg[0], ilo, ihi);
+  type_range(arg[1], jlo, jhi);
   Coefficients c = defaults_;
   parse(narg, arg, 2, c, "pair_coeff");
   for (int i = ilo; i <= ihi; i++)
@@ -215,7 +220,7 @@ void PairWireContact::compute(int eflag, int vflag) {
   for (int i = 0; i < nall; i++) {
     segment_next_[i] = -1;
     if (!next[i]) continue;
-    const int j = atom->map(next[i]);
+    const int j = wire_->linked_bead(next[i]);
     if (j < 0) {
       if (i < nlocal)
         error->one(FLERR, ("pair wire/contact (id -): bead " + std::to_string(tag[i]) + " links to bead " +

@@ -1,0 +1,415 @@
+"""Bad input across the plugin's styles and commands, table-driven: each case is a tiny
+deck (a few atoms, run 0 or run 1) and the exact ERROR text it must stop with, naming the
+style, its ID and the argument. Cases that the code handled badly before (a crash, a
+silent acceptance, a misleading or generic message) say so in a comment."""
+
+from liggghts_run import DeckTestCase, main, run
+
+WIRE = """
+units           lj
+atom_style      wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -2 2 -2 2 -2 2
+create_box      2 box
+"""
+WIRE_LINE = WIRE + "create_wire 1 line 0 0 0 1 0 0\n"
+
+POLY = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -6 6 -6 6 -6 6
+create_box      1 box
+"""
+ONE_CUBE = POLY + "create_grains 1 1 random box seed 5 shape cube 1 sweep 0\n"
+
+# one cube grain (type 1) and a wire (type 2) above it
+HYBRID = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -4 4 -4 4 -1 6
+create_box      2 box
+create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
+create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
+group           grains type 1
+group           wire type 2
+"""
+
+# a tetrahedron: the smallest hull
+SHAPES = "wiregrain shapes 1 mass dilated\nshape 0 sweep 0.1 vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+
+
+def wire_data(rows, velocities=None):
+    """A data file of wire beads: Atoms lines 'id type prev next rest radius mass x y z'."""
+    lines = ["wire beads", "", f"{len(rows)} atoms", "2 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi",
+             "-5 5 zlo zhi", "", "Atoms", ""] + rows
+    if velocities:
+        lines += ["", "Velocities", ""] + velocities
+    return "\n".join(lines) + "\n"
+
+
+CHAIN = ["1 1 0 2 0.2 0.1 1.0 0 0 0", "2 1 1 3 0.2 0.1 1.0 0.2 0 0", "3 1 2 0 0 0.1 1.0 0.4 0 0"]
+
+
+def chain_with(k, row):
+    """The 3-bead chain with line k replaced."""
+    rows = list(CHAIN)
+    rows[k] = row
+    return {"c.data": wire_data(rows)}
+
+
+READ_WIRE = """
+units           lj
+atom_style      wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+read_data       c.data
+"""
+
+
+def grain_data(row):
+    """A one-grain data file (Atoms line 'id type shape density qw qi qj qk x y z') read with
+    the tetrahedron library."""
+    text = "\n".join(["grains", "", "1 atoms", "1 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi", "-5 5 zlo zhi",
+                      "", "Atoms", "", row]) + "\n"
+    return {"g.data": text, "s.shapes": SHAPES}
+
+
+READ_GRAIN = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+grain_shapes    read s.shapes
+read_data       g.data
+"""
+
+
+class Table(DeckTestCase):
+    """CASES: (deck, expected ERROR text[, files]); every deck must stop with it."""
+    CASES = ()
+
+    def test_cases(self):
+        for case in self.CASES:
+            deck, message = case[0], case[1]
+            files = case[2] if len(case) > 2 else None
+            with self.subTest(message=message):
+                self.assertStopsWith(run(deck + "\n", files=files), message)
+
+
+class WireLinks(Table):
+    # A link to a bead ID beyond the largest atom ID used to read past the end of
+    # LIGGGHTS' array map: bead 99 was taken as some other atom and the run went on
+    # silently; bead 7 gave "the segment from bead 1 to bead 7 has zero length".
+    CASES = (
+        (READ_WIRE + "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): bead 3 links to bead 99, "
+         "which is neither owned nor a ghost here", chain_with(2, "3 1 2 99 0.2 0.1 1.0 0.4 0 0")),
+        (READ_WIRE + "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): bead 1 links to bead 7, "
+         "which is neither owned nor a ghost here", chain_with(0, "1 1 0 7 0.2 0.1 1.0 0 0 0")),
+        (READ_WIRE + "pair_style wire/contact\npair_coeff * *\nrun 0", "pair wire/contact (id -): bead 3 links to "
+         "bead 99, which is neither owned nor a ghost here", chain_with(2, "3 1 2 99 0.2 0.1 1.0 0.4 0 0")),
+    )
+
+
+class NscdCounts(Table):
+    # Counts beyond an int used to wrap: max_iterations 3000000000 stopped at the first
+    # solve with "max_iterations must be >= 1, got -1294967296", every 3000000000 with
+    # "h must be > 0", write_problems 3000000000 was accepted (and never wrote), and a
+    # 'timestep' of more than 2^31 LIGGGHTS steps silently solved every step.
+    NSCD = ONE_CUBE + "fix nscd all nscd/polyhedra "
+    CASES = (
+        (NSCD + "max_iterations 3000000000\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'max_iterations' must be <= 2147483647, got 3000000000"),
+        (NSCD + "every 3000000000\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'every' must be <= 2147483647, got 3000000000"),
+        (NSCD + "write_problems 3000000000 p_*.txt\nrun 1",
+         "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be <= 2147483647, "
+         "got 3000000000"),
+        (NSCD + "seed 0\nrun 1", "fix nscd/polyhedra (id nscd): value of 'seed' must be >= 1, got 0"),
+        (NSCD + "timestep 1e300\nrun 1", "fix nscd/polyhedra (id nscd): value of 'timestep' (1e+300) must be at "
+         "most 2147483647 LIGGGHTS timesteps (0.005)"),
+    )
+
+
+class GrainShapesFile(Table):
+    # A non-finite vertex coordinate used to be reported as "too few vertex coordinates"; a
+    # negative shape count was read as an empty library; reading a library while grains
+    # exist replaced the shapes under them (grains 1 and 2 kept indices beyond the new
+    # one-shape library: out-of-bounds reads, the run went on).
+    READ = POLY + "grain_shapes read s.shapes\n"
+    CASES = (
+        (READ, "command grain_shapes (id -): 's.shapes': shape 0: vertex coordinate 'nan' must be a finite number",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "0 0 nan\n")}),
+        (READ, "command grain_shapes (id -): 's.shapes': shape 0: vertex coordinate '1e400' must be a finite number",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "0 0 1e400\n")}),
+        (READ, "command grain_shapes (id -): 's.shapes': the number of shapes N must be >= 0, got -1",
+         {"s.shapes": SHAPES.replace("shapes 1", "shapes -1")}),
+        (POLY + "create_grains 1 3 random box seed 1\ngrain_shapes read s.shapes\nfix n all nve/polyhedron\nrun 1",
+         "command grain_shapes (id -): read must come before any grain exists (3 grains use the current shape "
+         "library): read the shapes before read_data", {"s.shapes": SHAPES}),
+    )
+
+
+class PairCoeffTypes(Table):
+    # Ranges used to pass unchecked: '3*' of 2 types selected nothing and stopped with
+    # LIGGGHTS' "All pair coeffs are not set", '*5' with "Numeric index is out of bounds".
+    PAIR = WIRE_LINE + "pair_style wire/contact\n"
+    CASES = (
+        (PAIR + "pair_coeff 3* *\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '3*' is not one of 1..2 (nor a range of them)"),
+        (PAIR + "pair_coeff * *5\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '*5' is not one of 1..2 (nor a range of them)"),
+        (PAIR + "pair_coeff 2*1 *\nrun 0",
+         "pair_coeff wire/contact (id -): atom type '2*1' is not one of 1..2 (nor a range of them)"),
+    )
+
+
+class DumpCannotWrite(Table):
+    # VTK's writer returns success when it cannot open the file: the snapshot went
+    # missing and only the series file's failure stopped the run, naming that file.
+    CASES = (
+        (ONE_CUBE + "shell touch blocker\ndump d all polyhedron/vtk 10 blocker/g_*.vtp\nrun 0",
+         "dump polyhedron/vtk (id d): cannot write file 'blocker/g_0.vtp'"),
+        (WIRE_LINE + "shell touch blocker\ndump d all wire/vtk 10 blocker/w_*.vtp\nrun 0",
+         "dump wire/vtk (id d): cannot write file 'blocker/w_0.vtp'"),
+    )
+
+
+class WireDataFile(Table):
+    CASES = (
+        (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: wire-prev must be a bead ID >= 0 "
+         "(0: free end), got '-1'", chain_with(0, "1 1 -1 2 0.2 0.1 1.0 0 0 0")),
+        (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: wire-next must be a bead ID >= 0 "
+         "(0: free end), got '2.5'", chain_with(0, "1 1 0 2.5 0.2 0.1 1.0 0 0 0")),
+        (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: rest-length must be > 0 for a bead "
+         "with a next bead, got '0'", chain_with(0, "1 1 0 2 0 0.1 1.0 0 0 0")),
+        (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: radius must be a finite number > 0, "
+         "got '-0.1'", chain_with(0, "1 1 0 2 0.2 -0.1 1.0 0 0 0")),
+        (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: invalid atom type '5'",
+         chain_with(0, "1 5 0 2 0.2 0.1 1.0 0 0 0")),
+        (READ_WIRE + "run 0", "atom_style wire: Velocities section of data file: vz of atom 2 must be a finite "
+         "number, got 'inf'", {"c.data": wire_data(CHAIN, ["1 0 0 0", "2 0 0 inf", "3 0 0 0"])}),
+    )
+
+
+class CreateWire(Table):
+    CW = "command create_wire (id -): "
+    CASES = (
+        (WIRE + "create_wire 1", CW + "expected: create_wire type line|loop|helix|polyline ..."),
+        (WIRE + "create_wire abc line 0 0 0 1 0 0", CW + "value of 'type' must be an integer, got 'abc'"),
+        (WIRE + "create_wire 3 line 0 0 0 1 0 0", CW + "atom type 3 is outside 1..2"),
+        (WIRE + "create_wire 1 spiral 0 0 0 1 0 0", CW + "unknown layout 'spiral' (line, loop, helix or polyline)"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 nan", CW + "value of 'z1' must be a finite number, got 'nan'"),
+        (WIRE + "create_wire 1 loop 0 0 0 -1 2 0.3", CW + "value of 'R' must be > 0, got -1"),
+        (WIRE + "create_wire 1 loop 0 0 0 1 0 0.3", CW + "value of 'turns' must be > 0, got 0"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 colour red", CW + "unknown keyword 'colour'"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 segment 1e400",
+         CW + "value of 'segment' must be a finite number, got '1e400'"),
+        (WIRE + "create_wire 1 line 0 0 0 0.1 0 0",
+         CW + "'length': length must be at least one segment_length (0.2), got 0.1"),
+        (WIRE + "create_wire 1 polyline missing.txt", CW + "'file': cannot open polyline file 'missing.txt'"),
+        (WIRE + "create_wire 1 polyline p.txt",
+         CW + "'file': line 2 of 'p.txt': expected three finite numbers x y z, got '1 abc 0'",
+         {"p.txt": "0 0 0\n1 abc 0\n"}),
+        (WIRE + "create_wire 1 polyline p.txt", CW + "'points': a polyline needs at least 2 points, got 1",
+         {"p.txt": "0 0 0\n"}),
+        ("units lj\natom_style wire\ncreate_wire 1 line 0 0 0 1 0 0", CW + "create a simulation box first"),
+    )
+
+
+class WireElasticAndWall(Table):
+    CASES = (
+        (WIRE_LINE + "fix el all wire/elastic E abc\nrun 0",
+         "fix wire/elastic (id el): value of 'E' must be a finite number, got 'abc'"),
+        (WIRE_LINE + "fix el all wire/elastic E 1e400\nrun 0",
+         "fix wire/elastic (id el): value of 'E' must be a finite number, got '1e400'"),
+        (WIRE_LINE + "fix el all wire/elastic m_elo -1\nrun 0", "fix wire/elastic (id el): value of 'm_elo' must be >= 0, got -1"),
+        (WIRE_LINE + "fix w all wire/wall\nrun 0", "fix wire/wall (id w): expected 'plane px py pz nx ny nz'"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 0 0 0\nrun 0", "fix wire/wall (id w): missing value after 'plane'"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 abc 0 0 1\nrun 0",
+         "fix wire/wall (id w): value of 'plane' must be a finite number, got 'abc'"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 -1 0 0 1 nu 0.5\nrun 0", "fix wire/wall (id w): value of 'nu' must be < 0.5"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 -1 0 0 1 limit_force maybe\nrun 0",
+         "fix wire/wall (id w): value of 'limit_force' must be yes or no"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 -1 0 0 1 velocity 0 0 inf\nrun 0",
+         "fix wire/wall (id w): value of 'velocity' must be a finite number, got 'inf'"),
+        (WIRE_LINE + "fix w all wire/wall plane 0 0 -1 0 0 1\nfix_modify w velocity a b c\nrun 0",
+         "fix_modify wire/wall (id w): value of 'velocity' must be a finite number, got 'a'"),
+        (POLY + "fix w all wire/wall plane 0 0 -1 0 0 1\nrun 0",
+         "fix wire/wall (id w): needs atom_style wire (or hybrid with wire), not 'polyhedron'"),
+    )
+
+
+class PairWireContact(Table):
+    CASES = (
+        (WIRE_LINE + "pair_style wire/contact E abc\npair_coeff * *\nrun 0",
+         "pair_style wire/contact (id -): value of 'E' must be a finite number, got 'abc'"),
+        (WIRE_LINE + "pair_style wire/contact limit_force 1\npair_coeff * *\nrun 0",
+         "pair_style wire/contact (id -): value of 'limit_force' must be yes or no"),
+        (WIRE_LINE + "pair_style wire/contact\npair_coeff 1 2 mu_s 0.2\nrun 0",
+         "pair_coeff wire/contact (id -): mu_d (0.500000) must not exceed mu_s (0.200000)"),
+        (WIRE_LINE + "pair_style wire/contact\npair_coeff a 1\nrun 0",
+         "pair_coeff wire/contact (id -): atom type 'a' is not one of 1..2"),
+        (WIRE_LINE + "pair_style wire/contact\npair_coeff * * restitution\nrun 0",
+         "pair_coeff wire/contact (id -): missing value after 'restitution'"),
+        (POLY + "pair_style wire/contact\npair_coeff * *\nrun 0",
+         "pair wire/contact (id -): needs atom_style wire (or hybrid with wire), not 'polyhedron'"),
+    )
+
+
+class WireComputes(Table):
+    THERMO = "\nthermo_style custom step c_e[1]\nrun 0"
+    CASES = (
+        (WIRE_LINE + "compute e all wire/energy colour red\nrun 0", "compute wire/energy (id e): unknown keyword 'colour'"),
+        (WIRE_LINE + "compute e all wire/energy fix\nrun 0", "compute wire/energy (id e): missing value after 'fix'"),
+        (WIRE_LINE + "compute e all wire/energy fix nope" + THERMO,
+         "compute wire/energy (id e): fix ID 'nope' is not a fix wire/elastic"),
+        (WIRE_LINE + "fix n all nve/gear\ncompute e all wire/energy fix n" + THERMO,
+         "compute wire/energy (id e): fix ID 'n' is not a fix wire/elastic"),
+        (WIRE_LINE + "compute e all wire/energy" + THERMO, "compute wire/energy (id e): needs a fix wire/elastic"),
+        (WIRE_LINE + "fix a all wire/elastic\nfix b all wire/elastic\ncompute e all wire/energy" + THERMO,
+         "compute wire/energy (id e): several fix wire/elastic are defined: name one with 'fix ID'"),
+        (WIRE_LINE + "compute e all wire/contacts kind\nrun 0", "compute wire/contacts (id e): missing value after 'kind'"),
+        (WIRE_LINE + "compute e all wire/contacts colour red\nrun 0", "compute wire/contacts (id e): unknown keyword 'colour'"),
+        (WIRE_LINE + "compute e all wire/contacts kind wire_wall" + THERMO,
+         "compute wire/contacts (id e): kind wire_wall needs a fix wire/wall"),
+        (WIRE_LINE + "compute e all wire/contacts" + THERMO, "compute wire/contacts (id e): needs pair_style wire/contact"),
+        (WIRE_LINE + "fix i all nve/gear forces\nrun 0", "fix nve/gear (id i): missing value after 'forces'"),
+    )
+
+
+class NscdKeywords(Table):
+    NSCD = ONE_CUBE + "fix nscd all nscd/polyhedra "
+    P = "fix nscd/polyhedra (id nscd): "
+    CASES = (
+        (NSCD + "warm_start maybe\nrun 1", P + "value of 'warm_start' must be yes or no, got 'maybe'"),
+        (NSCD + "convergence fast\nrun 1", P + "value of 'convergence' must be natural_map, increment or both, got 'fast'"),
+        (NSCD + "wall_friction 0.3\nrun 1", P + "'wall_friction' must follow a 'wall' or 'wall_fix'"),
+        (NSCD + "wall 0 0 0 0 0\nrun 1", P + "missing value after 'wall'"),
+        (NSCD + "max_iterations 1.5\nrun 1", P + "value of 'max_iterations' must be an integer, got '1.5'"),
+        (NSCD + "tolerance nan\nrun 1", P + "value of 'tolerance' must be a finite number, got 'nan'"),
+        (NSCD + "theta inf\nrun 1", P + "value of 'theta' must be a finite number, got 'inf'"),
+        (NSCD + "wall 0 0 -2 0 0 1 wall_velocity 1 0 abc\nrun 1", P + "value of 'wall_velocity' must be a finite number, got 'abc'"),
+        (NSCD + "margin -1\nrun 1", P + "value of 'margin' must be >= 0, got -1"),
+        (NSCD + "colour red\nrun 1", P + "unknown keyword 'colour'"),
+        (NSCD + "write_problems 10\nrun 1", P + "missing value after 'write_problems'"),
+        (NSCD + "wall_fix\nrun 1", P + "missing value after 'wall_fix'"),
+        (NSCD + "\nfix_modify nscd tolerance 0\nrun 1", "fix_modify nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got 0"),
+        (NSCD + "\nfix_modify nscd friction abc\nrun 1",
+         "fix_modify nscd/polyhedra (id nscd): value of 'friction' must be a finite number, got 'abc'"),
+    )
+
+
+class Grains(Table):
+    CASES = (
+        (ONE_CUBE + "fix int all nve/polyhedron colour red\nrun 1", "fix nve/polyhedron (id int): unknown keyword 'colour'"),
+        (ONE_CUBE + "fix int all nve/polyhedron rotation\nrun 1", "fix nve/polyhedron (id int): missing value after 'rotation'"),
+        (ONE_CUBE + "fix a all nve/polyhedron\nfix b all nscd/polyhedra\nrun 1",
+         "fix nve/polyhedron (id a): 1 grains are also integrated by fix b (nscd/polyhedra)"),
+        (ONE_CUBE + "compute r all grain/rotation extra\nrun 1", "compute grain/rotation (id r): unknown keyword 'extra'"),
+        (ONE_CUBE + "compute h all column/height quantile abc\nrun 0",
+         "compute column/height (id h): value of 'quantile' must be a finite number, got 'abc'"),
+        (ONE_CUBE + "compute h all column/height quantile -0.1\nrun 0",
+         "compute column/height (id h): value of 'quantile' must be in [0, 1], got -0.1"),
+        (WIRE + "compute h all column/height\nrun 0",
+         "compute column/height (id h): needs atom_style polyhedron (or hybrid with polyhedron), not 'wire'"),
+        (ONE_CUBE + "compute p all column/retention radius 1 axis 1 abc\nrun 0",
+         "compute column/retention (id p): value of 'axis' must be a finite number, got 'abc'"),
+        (ONE_CUBE + "compute p all column/retention radius nan\nrun 0",
+         "compute column/retention (id p): value of 'radius' must be a finite number, got 'nan'"),
+        (ONE_CUBE + "compute p all column/retention radius 1 colour red\nrun 0",
+         "compute column/retention (id p): unknown keyword 'colour'"),
+        (WIRE + "compute p all column/retention radius 1\nrun 0",
+         "compute column/retention (id p): needs atom_style polyhedron (or hybrid with polyhedron), not 'wire'"),
+        (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron mass"),
+         "atom_style polyhedron: missing value after 'mass'"),
+        (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron colour red"),
+         "atom_style polyhedron: unknown keyword 'colour'"),
+        (READ_GRAIN, "atom_style polyhedron: Atoms section of data file: shape '5' is not in the shape library (1 shapes",
+         grain_data("1 1 5 1.5 1 0 0 0 0 0 0")),
+        (READ_GRAIN, "atom_style polyhedron: Atoms section of data file: the quaternion qw qi qj qk must not be zero",
+         grain_data("1 1 0 1.5 0 0 0 0 0 0 0")),
+        (READ_GRAIN, "atom_style polyhedron: Atoms section of data file: invalid atom type '2'",
+         grain_data("1 2 0 1.5 1 0 0 0 0 0 0")),
+    )
+
+
+class CreateGrainsAndShapes(Table):
+    CG = "command create_grains (id -): "
+    GS = "command grain_shapes (id -): "
+    RANDOM = POLY + "create_grains 1 5 random box seed 1 "
+    CASES = (
+        (POLY + "create_grains 1 5 random box seed abc", CG + "value of 'seed' must be an integer, got 'abc'"),
+        (POLY + "create_grains 1 abc random box seed 1", CG + "value of 'N' must be an integer, got 'abc'"),
+        (RANDOM + "a_max nan", CG + "value of 'a_max' must be a finite number, got 'nan'"),
+        (RANDOM + "shape box 1 2", CG + "missing value after 'shape box'"),
+        (RANDOM + "shape cube -1", CG + "value of 'shape cube' must be > 0, got -1"),
+        (RANDOM + "attempts 0", CG + "value of 'attempts' must be >= 1, got 0"),
+        (RANDOM + "vertices 2000000", CG + "value of 'vertices' must be <= 1000000, got 2000000"),
+        (RANDOM + "write_shapes nodir/s.txt", CG + "cannot write the 'write_shapes' file 'nodir/s.txt'"),
+        (POLY + "create_grains 1 10", CG + "expected: create_grains type N layer|random region-ID ..."),
+        ("units lj\natom_style polyhedron\ncreate_grains 1 5 random box seed 1", CG + "create a simulation box first"),
+        (POLY + "region far block 100 101 100 101 100 101 units box\ncreate_grains 1 5 random far seed 1",
+         CG + "region 'far' does not overlap the simulation box"),
+        (POLY + "grain_shapes read", GS + "expected: grain_shapes write|read FILE"),
+        (POLY + "grain_shapes load s.shapes", GS + "first argument must be write or read, got 'load'"),
+        (POLY + "grain_shapes read s.shapes", GS + "'s.shapes' is not a grain shape file (header 'wiregrain shapes N "
+         "mass dilated|sharp')", {"s.shapes": SHAPES.replace("dilated", "heavy")}),
+        (POLY + "grain_shapes read s.shapes", GS + "'s.shapes': shape 0 has too few vertex coordinates",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "")}),
+        (POLY + "grain_shapes read s.shapes", GS + "'s.shapes': all points lie in one plane",
+         {"s.shapes": SHAPES.replace("0 0 1\n", "1 1 0\n")}),
+        (POLY + "grain_shapes read s.shapes", GS + "'s.shapes': sweep_radius must be a finite number >= 0, got -0.1",
+         {"s.shapes": SHAPES.replace("sweep 0.1", "sweep -0.1")}),
+        (POLY + "grain_shapes write nodir/s.shapes", GS + "cannot write 'nodir/s.shapes'"),
+        (WIRE + "grain_shapes write s.shapes", GS + "needs atom_style polyhedron (or hybrid with polyhedron)"),
+    )
+
+
+class WireGrainAndMaterials(Table):
+    NSCD = HYBRID + "fix nscd grains nscd/polyhedra\n"
+    WG = "fix wire/grain (id wg): "
+    MATERIALS = ("fix m1 all property/global youngsModulus peratomtype {} {}\n"
+                 "fix m2 all property/global poissonsRatio peratomtype {} {}\n")
+    CASES = (
+        (NSCD + "fix wg wire wire/grain grains nu_w 0.7\nrun 0", WG + "value of 'nu_w' must be < 0.5"),
+        (NSCD + "fix wg wire wire/grain grains restitution 2\nrun 0", WG + "value of 'restitution' must be in [0, 1]"),
+        (NSCD + "fix wg wire wire/grain grains damping_ratio abc\nrun 0",
+         WG + "value of 'damping_ratio' must be a finite number, got 'abc'"),
+        (NSCD + "fix wg wire wire/grain grains limit_force 2\nrun 0", WG + "value of 'limit_force' must be yes or no"),
+        (NSCD + "fix wg wire wire/grain grains max_stretch inf\nrun 0",
+         WG + "value of 'max_stretch' must be a finite number, got 'inf'"),
+        (NSCD + MATERIALS.format(100, -3, 0, 0.3) + "fix wg wire wire/grain grains\nrun 0",
+         WG + "youngsModulus of atom type 2 must be a finite number > 0, got -3"),
+        (NSCD + MATERIALS.format(100, 1000, 0, 0.6) + "fix wg wire wire/grain grains\nrun 0",
+         WG + "poissonsRatio of atom type 2 must be in [0, 0.5), got 0.6"),
+        (WIRE + MATERIALS.format(0, 100, 0, 0) + "create_wire 1 line 0 0 0 1 0 0\npair_style wire/contact\n"
+         "pair_coeff * *\nrun 0", "pair wire/contact (id -): youngsModulus of atom type 1 must be a finite number > 0, got 0"),
+        (WIRE + "fix m1 all property/global youngsModulus peratomtype 1e400 100\ncreate_wire 1 line 0 0 0 1 0 0\n"
+         "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): youngsModulus of atom type 1 must be a finite "
+         "number > 0, got inf"),
+    )
+
+
+class DumpsAndDeckError(Table):
+    CASES = (
+        (WIRE_LINE + "dump d all wire/vtk 10 a*/w_*.vtp\nrun 0",
+         "dump wire/vtk (id d): file 'a*/w_*.vtp' must contain exactly one '*', in its name"),
+        (WIRE_LINE + "dump d all wire/vtk 10 w_%_*.vtp\nrun 0",
+         "dump wire/vtk (id d): file 'w_%_*.vtp' must not contain '%' (rank 0 writes every snapshot)"),
+        (WIRE_LINE + "dump d all wire/vtk 10 w_*.vtp format\nrun 0", "dump wire/vtk (id d): missing value after 'format'"),
+        (WIRE_LINE + "fix el all wire/elastic\ndump d all wire/vtk 10 w_*.vtp energy el\nunfix el\nrun 0",
+         "dump wire/vtk (id d): energy fix 'el' does not exist (was it unfixed?)"),
+        (POLY + "dump d all polyhedron/vtk 10 g_**.vtp",
+         "dump polyhedron/vtk (id d): file 'g_**.vtp' must contain exactly one '*', in its name"),
+        ("deck_error in.deck: R must be > 0, got -1", "ERROR: in.deck: R must be > 0, got -1"),
+        ("deck_error", "ERROR: deck_error: the deck stopped (no message given)"),
+    )
+
+
+if __name__ == "__main__":
+    main()
