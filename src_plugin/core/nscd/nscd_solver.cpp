@@ -349,7 +349,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     if (report.subspace_accepted > 0) {
       backoff->wait = 0;
     } else if (stick_solve_harmed) {
-      backoff->wait = std::min(std::max(1, 2 * backoff->wait), 64);
+      backoff->wait = std::min(std::max(1, 2 * backoff->wait), 1024);
       backoff->skip = backoff->wait;
     }
   }
