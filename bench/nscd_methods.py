@@ -66,13 +66,13 @@ def main():
             moving, settled = siconos_pile.pile_problems(os.path.join(args.build, "liggghts"), fclib_nscd, work)
         problems += [("915-grain pile, step 7000 (moving)", ["solve", moving]),
                      ("915-grain pile, step 14000 (settled)", ["solve", settled])]
-    print(f"{'problem':<38} {'solver':<42} {'sweeps':>7} {'Siconos error':>13} {'time [s]':>10} "
+    print(f"{'problem':<44} {'solver':<42} {'sweeps':>7} {'Siconos error':>13} {'time [s]':>10} "
           f"{'ns/update':>9} {'ratio':>7}")
     for label, arguments in problems:
         contacts, rows = solve(fclib_nscd, arguments, args.repeat)
         for name, sweeps, error, seconds, ratio, capped in rows:
             per_update = 1e9 * seconds / max(sweeps * contacts, 1)
-            print(f"{label + f' ({contacts})':<38} {name:<42} {sweeps:7d} {error:13.3e} {seconds:10.4f} "
+            print(f"{label + f' ({contacts})':<44} {name:<42} {sweeps:7d} {error:13.3e} {seconds:10.4f} "
                   f"{per_update:9.0f} {ratio:7.3f}{'  (cap)' if capped else ''}", flush=True)
 
 
