@@ -126,7 +126,10 @@ run             2000
 
 
 class Launch(DeckTestCase):
-    # A box launched at v0 on flat ground stops after v0^2 / (2 μ g).
+    # A box launched at v0 on flat ground stops after v0^2 / (2 μ g). The θ = 1 scheme
+    # decelerates by μ g h per step and moves with the end-of-step velocity, so with
+    # N = v0 / (μ g h) steps (an integer here) it travels h Σ_{k=1..N} (v0 − k μ g h)
+    # = v0^2 / (2 μ g) − h v0 / 2: 0.9995 for v0 = 1, μ g = 0.5, h = 1e-3.
     def test_stopping_distance(self):
         made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
@@ -143,8 +146,11 @@ run             3000
 """), workdir=made.workdir)
         self.assertRanCleanly(r)
         travelled = r.thermo()["x1"][-1]
-        print(f"launch: stopped after {travelled:.6f}, v0^2/(2 mu g) = 1.0")
-        self.assertAlmostEqual(travelled, 1.0, delta=0.005)
+        h, v0, decel = 1e-3, 1.0, 0.5 * G
+        steps = round(v0 / (decel * h))
+        discrete = h * sum(v0 - k * decel * h for k in range(1, steps + 1))
+        print(f"launch: stopped after {travelled:.12f}, v0^2/(2 mu g) = 1.0, the scheme's {discrete:.12f}")
+        self.assertAlmostEqual(travelled, discrete, delta=1e-9)
 
 
 class WallFriction(DeckTestCase):
@@ -180,7 +186,10 @@ run             5000
         for name, fix_line, before_run, mu in cases:
             travelled = self.stop(fix_line, before_run)
             print(f"{name}: stopped after {travelled:.6f}, v0^2/(2 mu g) = {1 / (2 * mu * G):.6f}")
-            self.assertAlmostEqual(travelled, 1 / (2 * mu * G), delta=1e-3, msg=name)  # θ = 1 lags by h v0/2
+            # 2.0005 = v0^2/(2 μ g) + h v0/2 here, where Launch stops at − h v0/2: the
+            # velocity set between runs is moved with for one step before the solve sees it
+            # (found in session 7, not yet explained), hence the h v0 tolerance
+            self.assertAlmostEqual(travelled, 1 / (2 * mu * G), delta=1e-3, msg=name)
 
 
 class TallStack(DeckTestCase):
