@@ -222,6 +222,16 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     stick_solves = false;
   }
   bool stick_solve_harmed = false;
+  // one stick solve (header), counted in the report; returns the error before it
+  const auto try_stick_solve = [&](StickSolveOutcome& outcome) {
+    const double error_before = siconos_error(op, result.impulses);
+    ++report.subspace_solves;
+    outcome = subspace_correction(op, result.impulses, result.states, options.subspace_regularization,
+                                  error_before);
+    stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
+    if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
+    return error_before;
+  };
 
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     if (options.order == SweepOrder::random) {
@@ -309,25 +319,15 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     // method subspace, converged without a kept stick solve: one more (header), which
     // makes a resting stack exact every step instead of merely within the tolerance
     if (converged && stick_solves && report.subspace_accepted == 0) {
-      const double error_before = siconos_error(op, result.impulses);
-      ++report.subspace_solves;
-      const StickSolveOutcome outcome = subspace_correction(
-          op, result.impulses, result.states, options.subspace_regularization, error_before);
-      stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
-      if (outcome == StickSolveOutcome::kept) {
-        ++report.subspace_accepted;
-        report.residual = siconos_error(op, result.impulses);
-      }
+      StickSolveOutcome outcome;
+      try_stick_solve(outcome);
+      if (outcome == StickSolveOutcome::kept) report.residual = siconos_error(op, result.impulses);
     }
     if (converged) break;
     if (stick_solves && iteration >= next_subspace && iteration < options.max_iterations) {
-      const double error_before = siconos_error(op, result.impulses);
-      ++report.subspace_solves;
-      const StickSolveOutcome outcome = subspace_correction(
-          op, result.impulses, result.states, options.subspace_regularization, error_before);
-      stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
+      StickSolveOutcome outcome;
+      const double error_before = try_stick_solve(outcome);
       if (outcome == StickSolveOutcome::kept) {
-        ++report.subspace_accepted;
         const double error = siconos_error(op, result.impulses);
         if (options.measure != ConvergenceMeasure::increment && error <= options.tolerance) {
           report.residual = error;
