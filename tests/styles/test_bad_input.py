@@ -5,35 +5,26 @@ silent acceptance, a misleading or generic message) say so in a comment."""
 
 from liggghts_run import DeckTestCase, main, run
 
-WIRE = """
-units           lj
-atom_style      wire
-atom_modify     map array sort 0 0.0
-boundary        f f f
-region          box block -2 2 -2 2 -2 2
-create_box      2 box
-"""
+
+def head(style):
+    """The first lines of every deck here: LJ units, the atom style, no sorting, non-periodic."""
+    return (f"units           lj\natom_style      {style}\natom_modify     map array sort 0 0.0\n"
+            "boundary        f f f\n")
+
+
+def box(style, xy, z, types):
+    """head(style) and a box [-xy, xy]^2 x [z0, z1] with `types` atom types."""
+    return head(style) + f"region          box block -{xy} {xy} -{xy} {xy} {z[0]} {z[1]}\ncreate_box      {types} box\n"
+
+
+WIRE = box("wire", 2, (-2, 2), 2)
 WIRE_LINE = WIRE + "create_wire 1 line 0 0 0 1 0 0\n"
 
-POLY = """
-units           lj
-atom_style      polyhedron
-atom_modify     map array sort 0 0.0
-boundary        f f f
-region          box block -6 6 -6 6 -6 6
-create_box      1 box
-"""
+POLY = box("polyhedron", 6, (-6, 6), 1)
 ONE_CUBE = POLY + "create_grains 1 1 random box seed 5 shape cube 1 sweep 0\n"
 
 # one cube grain (type 1) and a wire (type 2) above it
-HYBRID = """
-units           lj
-atom_style      hybrid polyhedron wire
-atom_modify     map array sort 0 0.0
-boundary        f f f
-region          box block -4 4 -4 4 -1 6
-create_box      2 box
-create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
+HYBRID = box("hybrid polyhedron wire", 4, (-1, 6), 2) + """create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
 create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
 group           grains type 1
 group           wire type 2
@@ -43,13 +34,18 @@ group           wire type 2
 SHAPES = "wiregrain shapes 1 mass dilated\nshape 0 sweep 0.1 vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
 
 
-def wire_data(rows, velocities=None):
-    """A data file of wire beads: Atoms lines 'id type prev next rest radius mass x y z'."""
-    lines = ["wire beads", "", f"{len(rows)} atoms", "2 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi",
+def data_file(title, types, rows, velocities=None):
+    """A data file in the box [-5, 5]^3 with these Atoms (and Velocities) lines."""
+    lines = [title, "", f"{len(rows)} atoms", f"{types} atom types", "-5 5 xlo xhi", "-5 5 ylo yhi",
              "-5 5 zlo zhi", "", "Atoms", ""] + rows
     if velocities:
         lines += ["", "Velocities", ""] + velocities
     return "\n".join(lines) + "\n"
+
+
+def wire_data(rows, velocities=None):
+    """A data file of wire beads: Atoms lines 'id type prev next rest radius mass x y z'."""
+    return data_file("wire beads", 2, rows, velocities)
 
 
 CHAIN = ["1 1 0 2 0.2 0.1 1.0 0 0 0", "2 1 1 3 0.2 0.1 1.0 0.2 0 0", "3 1 2 0 0 0.1 1.0 0.4 0 0"]
@@ -62,31 +58,16 @@ def chain_with(k, row):
     return {"c.data": wire_data(rows)}
 
 
-READ_WIRE = """
-units           lj
-atom_style      wire
-atom_modify     map array sort 0 0.0
-boundary        f f f
-read_data       c.data
-"""
+READ_WIRE = head("wire") + "read_data       c.data\n"
 
 
 def grain_data(row):
     """A one-grain data file (Atoms line 'id type shape density qw qi qj qk x y z') read with
     the tetrahedron library."""
-    text = "\n".join(["grains", "", "1 atoms", "1 atom types", "-5 5 xlo xhi", "-5 5 ylo yhi", "-5 5 zlo zhi",
-                      "", "Atoms", "", row]) + "\n"
-    return {"g.data": text, "s.shapes": SHAPES}
+    return {"g.data": data_file("grains", 1, [row]), "s.shapes": SHAPES}
 
 
-READ_GRAIN = """
-units           lj
-atom_style      polyhedron
-atom_modify     map array sort 0 0.0
-boundary        f f f
-grain_shapes    read s.shapes
-read_data       g.data
-"""
+READ_GRAIN = head("polyhedron") + "grain_shapes    read s.shapes\nread_data       g.data\n"
 
 
 class Table(DeckTestCase):
