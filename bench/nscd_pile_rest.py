@@ -3,10 +3,14 @@
 box (examples/grain_deposit without its damping), integrated by fix nscd/polyhedra with
 each solver setting side by side; prints the kinetic energy per grain (translation +
 rotation, in m g a_max with m the mean grain mass) at several times, the mean and largest
-sweeps per step, the steps that hit the sweep cap and the wall time.
+sweeps per step, the contact points, the largest overlap at a step start (of the last
+step and of all steps so far, in a_max), the steps that hit the sweep cap and the wall time.
 
     bench/nscd_pile_rest.py [--liggghts build/liggghts] [--steps 20000] [--every 2000]
-        [--config "method gauss_seidel" "method subspace tolerance 1e-6" ...]
+        [--config "method gauss_seidel" "method subspace tolerance 1e-6" ...] [--side-by-side]
+
+--side-by-side runs the settings at the same time (one process each; on a 2-core machine
+two settings share the machine equally, so their wall times compare).
 
 The grains are created at random in the box from z = 1.1 to 38 and fall under g = 1; the
 pile is complete by t ~ 12. Issue 13's bar: kinetic energy below 1e-8 m g a_max per grain
@@ -41,26 +45,40 @@ compute         ket all ke
 variable        mg equal mass(all)/count(all)
 variable        ke equal (c_ket+c_rot[1])/count(all)/v_mg
 variable        sweeps equal f_nscd[1]
-thermo_style    custom step v_ke v_sweeps f_nscd[3] f_nscd[6] f_nscd[25] f_nscd[26]
+thermo_style    custom step v_ke v_sweeps f_nscd[3] f_nscd[4] f_nscd[24] f_nscd[6] f_nscd[25] f_nscd[26]
 thermo_modify   norm no format float %.6g
 thermo          {every}
 run             {steps}
 """
 
 
-def run(liggghts, config, steps, every):
+def start(liggghts, config, steps, every):
     work = tempfile.mkdtemp(prefix="wiregrain-pile-")
     with open(os.path.join(work, "in.pile"), "w") as f:
         f.write(DECK.format(config=config, steps=steps, every=every))
-    start = time.time()
-    out = subprocess.run([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT).stdout.decode()
-    seconds = time.time() - start
+    return time.time(), subprocess.Popen([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
+                                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+
+
+def finish(config, started):
+    begin, process = started
+    out = process.communicate()[0].decode()
+    seconds = time.time() - begin
     number = r"\s+([0-9.eE+-]+)"
-    rows = re.findall(r"^\s*(\d+)" + 6 * number + r"\s*$", out, re.M)
+    rows = re.findall(r"^\s*(\d+)" + 8 * number + r"\s*$", out, re.M)
     if not rows:
         raise SystemExit(f"no thermo output for '{config}':\n{out[-2000:]}")
     return rows, seconds
+
+
+def report(config, rows, seconds):
+    overlap_all, capped, tried, kept = (float(v) for v in rows[-1][5:])
+    print(f"{config}: {seconds:.0f} s, largest overlap {overlap_all:.2e}, steps at the cap {capped:.0f}, "
+          f"stick solves {tried:.0f} (kept {kept:.0f})", flush=True)
+    print(f"  {'t':>6} {'KE per grain':>13} {'sweeps (last step)':>19} {'contacts':>9} {'overlap':>9} {'of all':>9}")
+    for step, ke, sweeps, contacts, overlap, overlap_all, *_ in rows:
+        print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}"
+              f" {float(overlap):9.2e} {float(overlap_all):9.2e}", flush=True)
 
 
 def main():
@@ -69,15 +87,15 @@ def main():
     parser.add_argument("--steps", type=int, default=20000)
     parser.add_argument("--every", type=int, default=2000)
     parser.add_argument("--config", nargs="*", default=["method gauss_seidel", "method subspace"])
+    parser.add_argument("--side-by-side", action="store_true")
     args = parser.parse_args()
-    for config in args.config:
-        rows, seconds = run(args.liggghts, config, args.steps, args.every)
-        capped, tried, kept = (float(v) for v in rows[-1][4:])
-        print(f"{config}: {seconds:.0f} s, steps at the cap {capped:.0f}, stick solves {tried:.0f} (kept {kept:.0f})",
-              flush=True)
-        print(f"  {'t':>6} {'KE per grain':>13} {'sweeps (last step)':>19} {'contacts':>9}")
-        for step, ke, sweeps, contacts, *_ in rows:
-            print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}", flush=True)
+    if args.side_by_side:
+        started = [start(args.liggghts, c, args.steps, args.every) for c in args.config]
+        for config, s in zip(args.config, started):
+            report(config, *finish(config, s))
+    else:
+        for config in args.config:
+            report(config, *finish(config, start(args.liggghts, config, args.steps, args.every)))
 
 
 if __name__ == "__main__":

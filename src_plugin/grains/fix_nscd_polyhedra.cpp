@@ -120,6 +120,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
         args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" + problem_file_ + "'");
     } else if (key == "margin") {
       core_->options.margin = args.value_nonnegative(key);
+    } else if (key == "manifold") {
+      const std::string v = args.value_word(key);
+      if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
+      core_->options.near_vertices = v == "near_vertices";
     } else if (key == "every") {
       every_ = (int)args.value_int_in_range(key, 1);
       every_given_ = true;

@@ -879,6 +879,108 @@ TEST(ContactPlane, CubeOnFloorFlatTiltedAndOnCorner) {
   }
 }
 
+// ContactOptions::near_vertices on a tumbling cube over a wall: besides the lowest edge,
+// every vertex whose own gap n·(v − p) − r is below the activation distance, none above.
+TEST(ContactPlane, NearVerticesOfATumblingCube) {
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
+  const double g = 0.007, t = 0.35;  // tilt about x: edge y = z = −½ lowest
+  const Quaterniond q(AngleAxisd(t, Vector3d::UnitX()));
+  ContactOptions near;
+  near.near_vertices = true;
+  for (const Motion& M : motions()) {
+    const Plane floor{M.point(Vector3d::Zero()), M.vector(Vector3d::UnitZ())};
+    const Vector3d c(0.1, 0.2, 0.5 * (std::cos(t) + std::sin(t)) + 0.1 + g);
+    const PosedShape posed(cube, M.point(c), M.orientation(q));
+    for (double activation : {0.05, 0.4, 1.2}) {
+      std::vector<double> expected;
+      for (double sx : {-0.5, 0.5})
+        for (double sy : {-0.5, 0.5})
+          for (double sz : {-0.5, 0.5}) {
+            const double gap = (c + q * Vector3d(sx, sy, sz)).z() - 0.1;
+            if (gap < activation) expected.push_back(gap);
+          }
+      std::sort(expected.begin(), expected.end());
+      const ContactManifold m = plane_contact(floor, posed, activation, near);
+      std::vector<double> got;
+      for (const auto& p : m.points) {
+        got.push_back(p.gap);
+        EXPECT_LT((p.normal - M.vector(Vector3d::UnitZ())).norm(), 1e-12);
+      }
+      std::sort(got.begin(), got.end());
+      ASSERT_EQ(got.size(), expected.size()) << "activation " << activation;
+      for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-12);
+      EXPECT_EQ(plane_contact(floor, posed, activation).points.size(), 2u);  // option off
+    }
+  }
+}
+
+// ContactOptions::near_vertices between grains: a cube B tumbling onto a slab A, over its
+// face, over its edge and with two vertices inside it. Reference: the distance of each
+// vertex of B to the slab's core, a box, by clamping the coordinates (inside: the
+// nearest face), minus the radii. Every vertex of B whose gap is below the activation
+// distance has a point at that vertex with that gap and the normal along the closest
+// points; no point has a gap below the pair's.
+TEST(ContactManifold, NearVerticesOfACubeTumblingOntoASlab) {
+  const ConvexShape slab = ConvexShape::box(10.0, 10.0, 1.0, 0.1), cube = ConvexShape::cube(1.0, 0.05);
+  const Vector3d half(5.0, 5.0, 0.5);
+  ContactOptions near;
+  near.near_vertices = true;
+  struct Case {
+    Quaterniond q;
+    double x;        // of the cube's centre: 0 over the face, 4.9 across the edge x = 5
+    double lowest;   // core height of the cube's lowest vertex above the slab's core
+    double activation;
+  };
+  const Quaterniond tumble(AngleAxisd(0.35, Vector3d::UnitX()));
+  const Quaterniond twisted = Quaterniond(AngleAxisd(0.05, Vector3d::UnitY())) * tumble;
+  for (const Case& k : {Case{tumble, 0.0, 0.16, 0.4}, Case{tumble, 4.9, 0.16, 0.6},
+                        Case{twisted, 0.0, -0.08, 0.2}}) {
+    for (const Motion& M : motions()) {
+      double lowest = kInf;
+      for (double sx : {-0.5, 0.5})
+        for (double sy : {-0.5, 0.5})
+          for (double sz : {-0.5, 0.5}) lowest = std::min(lowest, (k.q * Vector3d(sx, sy, sz)).z());
+      const Vector3d c(k.x, 0.0, 0.5 + k.lowest - lowest);
+      const PosedShape a(slab, M.point(Vector3d::Zero()), M.orientation(kIdentity));
+      const PosedShape b(cube, M.point(c), M.orientation(k.q));
+      const ContactManifold m = contact_manifold(a, b, k.activation, near);
+      ASSERT_FALSE(m.points.empty());
+      for (const auto& p : m.points) EXPECT_GE(p.gap, m.gap - 1e-12);
+      int near_count = 0;
+      for (double sx : {-0.5, 0.5})
+        for (double sy : {-0.5, 0.5})
+          for (double sz : {-0.5, 0.5}) {
+            const Vector3d v = c + k.q * Vector3d(sx, sy, sz);
+            const Vector3d clamped = v.cwiseMax(-half).cwiseMin(half);
+            double core_gap;
+            Vector3d normal;
+            if ((v - clamped).norm() > 0.0) {
+              core_gap = (v - clamped).norm();
+              normal = (v - clamped) / core_gap;
+            } else {  // inside: the nearest face (here the top one)
+              core_gap = -(half.z() - v.z());
+              normal = Vector3d::UnitZ();
+            }
+            const double gap = core_gap - 0.15;
+            if (!(gap < k.activation)) continue;
+            ++near_count;
+            const Vector3d on_b = M.point(v - 0.05 * normal);
+            double best = kInf;
+            const ContactPoint* found = nullptr;
+            for (const auto& p : m.points)
+              if ((p.point_b - on_b).norm() < best) {
+                best = (p.point_b - on_b).norm();
+                found = &p;
+              }
+            ASSERT_LT(best, 1e-12) << "vertex " << v.transpose() << " x " << k.x;
+            EXPECT_NEAR(found->gap, gap, 1e-12);
+            EXPECT_LT((found->normal - M.vector(normal)).norm(), 1e-9);
+          }
+      EXPECT_GE(near_count, 3) << "x " << k.x;  // the case reaches beyond the closest feature
+    }
+  }
+}
+
 TEST(ContactPlane, RandomGrainLowestVertexGap) {
   std::mt19937_64 rng(31);
   for (int k = 0; k < 200; ++k) {

@@ -904,6 +904,70 @@ CorePair single_pair(const PosedShape& A, const ContactFeature& fa, const PosedS
   return out;
 }
 
+// The points of the vertices of P that come within the activation distance of Q and
+// carry no point yet (ContactOptions::near_vertices). n is the pair normal from P to Q
+// and core_distance their signed core distance along it; reach = activation distance +
+// r_A + r_B is the core distance below which a vertex is activated. Prefilter: a vertex
+// whose height n·v lies h below P's support height is at least h + core_distance from Q
+// (Q lies beyond the plane n·x = support + core_distance), so only h < reach −
+// core_distance can qualify. Then the vertex's exact distance to Q's core (GJK of the point
+// against Q) and its own normal along the closest points; a vertex inside Q's core gets
+// the face of Q nearest to it (depth = its distance to that face's plane, normal ∓ the
+// face normal), so its gap is never below the pair's (a translation that separates the
+// cores moves the vertex at least its depth). Points go to `out` as (core point on A,
+// core point on B, unit normal from A to B).
+struct NearPoint {
+  Vector3d a, b, normal;
+};
+
+void add_near_vertices(const PosedShape& P, const PosedShape& Q, bool p_is_a, const Vector3d& n,
+                       double core_distance, double reach, double size, double tol,
+                       const std::vector<Vector3d>& taken, std::vector<NearPoint>& out) {
+  const double support = support_value(P, n);
+  const double depth_limit = reach - core_distance;
+  const auto is_taken = [&](const Vector3d& v) {
+    for (const Vector3d& t : taken)
+      if ((t - v).squaredNorm() <= tol * tol) return true;
+    for (const NearPoint& p : out)
+      if (((p_is_a ? p.a : p.b) - v).squaredNorm() <= tol * tol) return true;
+    return false;
+  };
+  for (const Vector3d& v : P.vertices()) {
+    if (!(support - n.dot(v) < depth_limit) || is_taken(v)) continue;
+    const GjkResult g = gjk(SegmentSet{{v, v}}, PolytopeSet{&Q}, v - Q.position(), size, reach);
+    if (g.far) continue;
+    Vector3d on_q, normal;  // normal from P to Q
+    if (!g.touching && g.distance > kNearTouching * size) {
+      if (!(g.distance < reach)) continue;
+      on_q = g.point_b;
+      normal = (on_q - v) / g.distance;
+    } else {
+      // inside (or on) Q's core: the face of Q whose plane is nearest
+      int face = 0;
+      double depth = kInf;
+      for (int f = 0; f < static_cast<int>(Q.face_normals().size()); ++f) {
+        const double d = Q.face_offsets()[f] - Q.face_normals()[f].dot(v);
+        if (d < depth) {
+          depth = d;
+          face = f;
+        }
+      }
+      normal = -Q.face_normals()[face];
+      on_q = v - depth * normal;
+    }
+    // the vertex–vertex point of B's pass may repeat one of A's pass
+    bool repeated = false;
+    for (const NearPoint& p : out)
+      repeated = repeated || (((p_is_a ? p.b : p.a) - on_q).squaredNorm() <= tol * tol &&
+                              ((p_is_a ? p.a : p.b) - v).squaredNorm() <= tol * tol);
+    if (repeated) continue;
+    if (p_is_a)
+      out.push_back({v, on_q, normal});
+    else
+      out.push_back({on_q, v, -normal});
+  }
+}
+
 double configuration_size(const PosedShape& a, const Vector3d& other_center,
                           double other_radius) {
   return std::max({a.core_radius(), other_radius, (a.position() - other_center).norm(),
@@ -1055,6 +1119,18 @@ ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
   }
   for (int i : reduce_polygon(in_plane, gaps, options.max_points))
     m.points.push_back(make_point(pairs[i].a, pairs[i].b, n, r_a, r_b));
+
+  if (options.near_vertices) {
+    std::vector<Vector3d> taken_a, taken_b;
+    for (const auto& p : pairs) {
+      taken_a.push_back(p.a);
+      taken_b.push_back(p.b);
+    }
+    std::vector<NearPoint> near;
+    add_near_vertices(a, b, true, n, cd.distance, reach, size, tol, taken_a, near);
+    add_near_vertices(b, a, false, -n, cd.distance, reach, size, tol, taken_b, near);
+    for (const NearPoint& p : near) m.points.push_back(make_point(p.a, p.b, p.normal, r_a, r_b));
+  }
   return m;
 }
 
@@ -1109,6 +1185,14 @@ ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
     const Vector3d& v = grain.vertices()[vertices[i]];
     m.points.push_back(make_point(v - gaps[i] * n, v, n, 0.0, r));
   }
+  if (options.near_vertices)
+    for (int i = 0; i < static_cast<int>(grain.vertices().size()); ++i) {
+      const Vector3d& v = grain.vertices()[i];
+      const double core_gap = n.dot(v - wall.point);
+      if (core_gap - r < activation_distance &&
+          std::find(vertices.begin(), vertices.end(), i) == vertices.end())
+        m.points.push_back(make_point(v - core_gap * n, v, n, 0.0, r));
+    }
   return m;
 }
 

@@ -144,6 +144,12 @@ struct ContactOptions {
   // and t_begin = t_end = t (callers that only need the gap of pairs apart pass 0: the
   // feature lookup was a quarter of the wire–grain contact time, bench/wire_grain_contacts.py).
   double feature_gap_limit = std::numeric_limits<double>::infinity();
+  // contact_manifold and plane_contact: besides the closest features' points, a point for
+  // every other vertex of a core whose own gap is below the activation distance (its
+  // closest point on the other core, its own normal along the two; for a wall the wall
+  // normal). Without them a grain tumbling onto another (or a wall) closes its next vertex
+  // one step late: overlaps of ~1e-3 a_max in deposits (docs/core_contact.md).
+  bool near_vertices = false;
 };
 
 enum class FeatureKind { vertex, edge, face };
@@ -171,7 +177,9 @@ struct ContactManifold {
   ContactFeature feature_a, feature_b;  // for a wall: feature_b only
   // Empty when gap >= activation_distance. Otherwise one point (vertex involved, or
   // crossing edges), two (edge–face, parallel edges) or the clipped polygon (face–face,
-  // up to max_points). The smallest point gap equals `gap` to rounding.
+  // up to max_points), all with the manifold normal; then, with options.near_vertices,
+  // the near vertices' points (each with its own normal). The smallest point gap equals
+  // `gap` to rounding.
   std::vector<ContactPoint> points;
 };
 

@@ -109,6 +109,8 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   double wall_speed = 0.0;
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
   const double activation = options.margin + 2.0 * h * (2.0 * fastest + wall_speed) + 1e-12;
+  ContactOptions contact_options;
+  contact_options.near_vertices = options.near_vertices;
   std::vector<GrainContactPoint>& points = problem.points;
   const auto add_point = [&](int body_a, int body_b, const ContactPoint& p, double mu,
                              const Eigen::Vector3d& wall_velocity, long key_a) {
@@ -134,7 +136,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
         if (b <= a) return;
         const double reach = ra + library[grains[b].shape].bounding_radius + activation;
         if ((grains[b].position - grains[a].position).squaredNorm() >= reach * reach) return;
-        for (const ContactPoint& p : contact_manifold(posed[a], posed[b], activation).points)
+        for (const ContactPoint& p : contact_manifold(posed[a], posed[b], activation, contact_options).points)
           add_point(a, b, p, options.friction, Eigen::Vector3d::Zero(), grains[a].tag);
       });
     }
@@ -146,7 +148,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     for (int b = 0; b < n; b++) {
       if (plane.normal.dot(grains[b].position - plane.point) > library[grains[b].shape].bounding_radius + activation)
         continue;
-      for (const ContactPoint& p : plane_contact(plane, posed[b], activation).points)
+      for (const ContactPoint& p : plane_contact(plane, posed[b], activation, contact_options).points)
         add_point(-1, b, p, walls[w].friction, walls[w].velocity, -w - 1);
     }
   }
