@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, main, read_dump, run, static_contact_measurement
+from liggghts_run import DeckTestCase, loaded_contact_measurement, main, read_dump, run, static_contact_measurement
 
 HEADER = """
 units           lj
@@ -92,9 +92,10 @@ neighbor        0.1 bin
             normal, tangential = t["f[3]"][0], -t["f[1]"][-1]
             print(f"crossed wires E {E1:g}/{E2:g} nu {nu1:g}/{nu2:g}: normal {normal:.12g} vs k_n xi "
                   f"{k_n * xi:.12g}; tangential {tangential:.12g} vs k_t delta {k_t * delta:.12g}")
-            self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=1e-6)
+            # measured 1.1e-15 / 1.8e-15 (one material), 8.9e-16 / 2.0e-15 (two)
+            self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=2e-14)
             self.assertLess(k_t * delta, 0.5 * k_n * xi)  # below the slip limit
-            self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=1e-6)
+            self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=2e-14)
 
     def test_wall(self):
         r_w, l_w, xi, delta, steps, E, nu = 0.1, 0.2, 1e-3, 4e-4, 100, 100.0, 0.3
@@ -110,8 +111,111 @@ atom_modify     sort 0 0.0
         normal, tangential = t["f[3]"][0], -t["f[1]"][-1]
         print(f"wire on a wall: normal {normal:.12g} vs 2 k_n xi {2 * k_n * xi:.12g}; tangential {tangential:.12g} "
               f"vs 2 k_t delta {2 * k_t * delta:.12g}")
-        self.assertAlmostEqual(normal / (2 * k_n * xi), 1.0, delta=1e-6)
-        self.assertAlmostEqual(tangential / (2 * k_t * delta), 1.0, delta=1e-6)
+        self.assertAlmostEqual(normal / (2 * k_n * xi), 1.0, delta=2e-14)           # measured 8.9e-16
+        self.assertAlmostEqual(tangential / (2 * k_t * delta), 1.0, delta=2e-14)    # measured 1.9e-15
+
+
+class StiffnessUnderLoad(DeckTestCase):
+    # The same stiffnesses the other way round: beads pushed by a known constant force
+    # (fix addforce) settle, damped by the contact's own dashpot only, at the overlap
+    # ξ = F/k_n; a tangential force F_t below μ_s F added on top moves them by F_t/k_t.
+    # The expected k_n, k_t are the README's formulas of the input parameters.
+
+    def settled(self, t0, t1, ids):
+        """Positions (N x 3) at the start of thermo table t0 and the end of t0 and t1, and
+        the largest speed at the end of t1."""
+        first = np.array([[t0[f"{c}{k}"][0] for c in "xyz"] for k in ids])
+        normal = np.array([[t0[f"{c}{k}"][-1] for c in "xyz"] for k in ids])
+        both = np.array([[t1[f"{c}{k}"][-1] for c in "xyz"] for k in ids])
+        speed = max(max(t0[f"s{k}"][-1], t1[f"s{k}"][-1]) for k in ids)
+        return first, normal, both, speed
+
+    def test_wall(self):
+        # beads on a wall z = 0 of their own, read from a data file: a three-bead wire with
+        # rest lengths 0.3 and 0.5 (its beads stand for l = 0.3, 0.5 and, the last one, its
+        # previous segment's 0.5) and a lone bead (l = 2 r); no fix wire/elastic, so each
+        # bead is a sphere of its own on the wall. k_n = E/(1−ν²) l π/4, k_t = E/(1−ν²) r.
+        E, nu, dt, steps = 250.0, 0.3, 5e-4, 2000
+        beads = [  # id prev next rest radius mass x y
+            (1, 0, 2, 0.3, 0.08, 0.004, -1.0, 0.0),
+            (2, 1, 3, 0.5, 0.08, 0.006, -0.7, 0.0),
+            (3, 2, 0, 0.0, 0.08, 0.005, -0.2, 0.0),
+            (4, 0, 0, 0.0, 0.05, 0.003, 1.0, 1.0)]
+        rows = [f"{i} 1 {p} {n} {rest!r} {r!r} {m!r} {x!r} {y!r} {r!r}" for i, p, n, rest, r, m, x, y in beads]
+        data = "\n".join(["beads on a wall", "", f"{len(rows)} atoms", "1 atom types", "-5 5 xlo xhi",
+                          "-5 5 ylo yhi", "-5 5 zlo zhi", "", "Atoms", ""] + rows) + "\n"
+        F, Ft = 0.02, 0.002                      # per bead; F_t = 0.1 F, well below μ_s F
+        direction = np.array([0.6, 0.8, 0.0])
+        ids = [b[0] for b in beads]
+        r = run(f"""
+units           lj
+atom_style      wire
+boundary        f f f
+read_data       beads.data
+atom_modify     sort 0 0.0
+fix             wall all wire/wall plane 0 0 0 0 0 1 E {E} nu {nu} mu_s 0.5 mu_d 0.5 damping_ratio 1
+fix             int all nve/gear forces velocity
+""" + loaded_contact_measurement("all", ids, (0, 0, -F), tuple(Ft * direction), steps, dt),
+                files={"beads.data": data})
+        self.assertRanCleanly(r)
+        first, normal, both, speed = self.settled(r.thermo(0), r.thermo(), ids)
+        E_star = E / (1 - nu ** 2)
+        radius = np.array([b[4] for b in beads])
+        length = np.array([0.3, 0.5, 0.5, 2 * 0.05])
+        k_n, k_t = E_star * length * math.pi / 4, E_star * radius
+        xi = radius - normal[:, 2]                        # the wall is z = 0
+        shift = both - normal
+        err_n = xi / (F / k_n) - 1
+        err_t = shift[:, :2] / (Ft * direction[:2] / k_t[:, None]) - 1
+        print(f"\nwall under load: overlap / (F/k_n) - 1 = {err_n}, tangential shift / (F_t/k_t) - 1 = "
+              f"{err_t.ravel()}, normal shift in stage 2 {np.max(np.abs(shift[:, 2])):.1e}, "
+              f"largest speed at rest {speed:.1e}")
+        np.testing.assert_allclose(first[:, 2], radius, rtol=0, atol=1e-15)   # started touching
+        # measured: normal 5e-13, tangential 7e-11 (the round-off of x ~ 1 over the 2000
+        # steps, against shifts of ~5e-5)
+        self.assertLess(np.max(np.abs(err_n)), 1e-9)
+        self.assertLess(np.max(np.abs(err_t)), 1e-9)
+
+    def test_wire_wire(self):
+        # a one-segment wire (l 0.3, r 0.08, type 1) lying across a held one (l 0.5, r 0.06,
+        # type 2, not integrated) at their middles, both beads pushed down by F: the
+        # contact carries 2F = k_n ξ, k_n = E* l̄ π/4 with l̄ = 0.4 the mean rest length,
+        # E* = E/(2(1−ν²)) for one material, 1/E* = (1−ν_1²)/E_1 + (1−ν_2²)/E_2 for two;
+        # then 2F_t along the held wire (so the load point stays in the middle of the upper
+        # one) moves it by 2F_t/k_t, k_t = E* r̄, r̄ = 0.07 the mean radius. The dashpot
+        # uses the reduced mass of the two segments, so the upper wire's motion is damped
+        # at ζ √(m_B/(m_A + m_B)) ≈ 0.7 of the ζ = 1 given.
+        dt, steps, F, Ft = 1e-3, 3000, 0.01, 0.001
+        for E1, E2, nu1, nu2 in ((80.0, 80.0, 0.25, 0.25), (100.0, 300.0, 0.3, 0.2)):
+            r = run(HEADER + f"""
+fix             mE all property/global youngsModulus peratomtype {E1} {E2}
+fix             mNu all property/global poissonsRatio peratomtype {nu1} {nu2}
+create_wire     1 line -0.15 0 0.14 0.15 0 0.14 segment 0.3 radius 0.08
+create_wire     2 line 0 -0.25 0 0 0.25 0 segment 0.5 radius 0.06
+group           upper type 1
+pair_style      wire/contact mu_s 0.5 mu_d 0.5 damping_ratio 1
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic
+fix             int upper nve/gear forces velocity
+""" + loaded_contact_measurement("upper", [1, 2, 3, 4], (0, 0, -F), (0, Ft, 0), steps, dt))
+            self.assertRanCleanly(r)
+            first, normal, both, speed = self.settled(r.thermo(0), r.thermo(), [1, 2, 3, 4])
+            if E1 == E2 and nu1 == nu2:
+                E_star = E1 / (2 * (1 - nu1 ** 2))
+            else:
+                E_star = 1.0 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+            k_n, k_t = E_star * 0.4 * math.pi / 4, E_star * 0.07
+            xi = 0.08 + 0.06 - (normal[:2, 2] - normal[2:, 2])
+            shift = both[:2, 1] - normal[:2, 1]
+            err_n = xi / (2 * F / k_n) - 1
+            err_t = shift / (2 * Ft / k_t) - 1
+            print(f"\nwires E {E1:g}/{E2:g} nu {nu1:g}/{nu2:g} under load: overlap / (2F/k_n) - 1 = {err_n}, "
+                  f"shift / (2F_t/k_t) - 1 = {err_t}, held wire moved {np.max(np.abs(both[2:] - first[2:])):.1e}, "
+                  f"largest speed at rest {speed:.1e}")
+            self.assertEqual(np.max(np.abs(both[2:] - first[2:])), 0.0)
+            self.assertLess(np.max(np.abs(err_n)), 1e-12)    # measured 1e-14, 5e-14
+            self.assertLess(np.max(np.abs(err_t)), 1e-12)    # measured 5e-15, 7e-16
 
 
 class Friction(DeckTestCase):
@@ -204,7 +308,9 @@ run             10000
 
 class MovingWall(DeckTestCase):
     # A short wire pushed by a sideways gravity against a wall that moves away at 0.1
-    # follows it: after t = 2 its beads sit at the wall position + r_w − the overlap m g/k_n.
+    # follows it: once the approach has died out (ζ = 0.59 from e = 0.1, ω = 71: e^-80 by
+    # t = 2) every bead moves with the wall at the overlap m g/k_n, k_n = E l π/4 (rigid
+    # wall, ν = 0), and the wall carries the wire's weight.
     def test_wire_follows_moving_wall(self):
         r = run(HEADER + """
 create_wire     1 line 0.1 -0.5 0 0.1 0.5 0
@@ -215,17 +321,20 @@ fix             wall all wire/wall plane 0 0 0 1 0 0 mu_s 0 mu_d 0 restitution 0
 timestep        1e-4
 compute         xmean all reduce ave x
 thermo_style    custom step time c_xmean f_wall[1] f_wall[3]
-thermo_modify   format float %.15g norm no
+thermo_modify   format float %.17g norm no
 thermo          1000
 run             20000
 """)
         self.assertRanCleanly(r)
         t = r.thermo()
         k_n = 100.0 / (1.0 - 0.0) * 0.2 * math.pi / 4.0        # rigid wall: E* l_w π/4
-        expected = 0.1 * t["Time"][-1] + 0.1 - bead_mass() / k_n
-        print(f"moving wall: wire at {t['xmean'][-1]:.6f}, wall + r_w - m g/k_n = {expected:.6f}; "
-              f"force on the wall {t['wall[3]'][-1]:.6f} (weight {6 * bead_mass():.6f})")
-        self.assertAlmostEqual(t["xmean"][-1], expected, delta=1e-4)
+        overlap = 0.1 * t["Time"][-1] + 0.1 - t["xmean"][-1]    # wall position + r_w − x
+        err = overlap / (bead_mass() / k_n) - 1
+        weight = 6 * bead_mass()
+        print(f"moving wall: overlap {overlap:.15g}, m g/k_n {bead_mass() / k_n:.15g} (relative error {err:.1e}); "
+              f"force on the wall {t['wall[3]'][-1]:.15g} (weight {weight:.15g})")
+        self.assertLess(abs(err), 1e-10)                               # measured 1.5e-11
+        self.assertAlmostEqual(-t["wall[3]"][-1] / weight, 1.0, delta=1e-12)  # measured 1.4e-13
         self.assertEqual(int(t["wall[1]"][-1]), 6)
 
 

@@ -8,7 +8,8 @@ import math
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, full_precision, main, read_dump, run, static_contact_measurement
+from liggghts_run import (DeckTestCase, full_precision, loaded_contact_measurement, main, read_dump, run,
+                          static_contact_measurement)
 
 G = 1.0
 HEADER = """
@@ -192,8 +193,52 @@ fix             wg wire wire/grain grains E_w {E_w} nu_w {nu_w} E_p {E_p} nu_p {
         print(f"segment on a face: normal {normal:.12g} vs k_n xi {k_n * xi:.12g}; tangential {tangential:.12g} "
               f"vs k_t delta {k_t * delta:.12g}")
         self.assertLess(k_t * delta, 0.5 * k_n * xi)
-        self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=1e-6)
-        self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=1e-6)
+        # measured 2.8e-13 (ξ = 1e-3 from heights ~2.3) and 8.0e-15
+        self.assertAlmostEqual(normal / (k_n * xi), 1.0, delta=2e-12)
+        self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=1e-13)
+
+    def test_segment_on_a_face_under_load(self):
+        # the same stiffnesses the other way round: a segment (l 0.6, r_w 0.08) lying on the
+        # top face of a cube that its weight (g on the grain only) holds on the floor, both
+        # beads pushed down by F (fix addforce), settles, damped by the contact's dashpot
+        # alone, at the overlap ξ = 2F/k_n, k_n = E_wp l π/4, 1/E_wp = (1−ν_w²)/E_w +
+        # (1−ν_p²)/E_p; a tangential force F_t per bead (below μ_s F) added on top moves it
+        # across the face by 2F_t/k_t, k_t = E_wp r_w. Overlap and shift are taken relative
+        # to the grain (its sharp top face is at its centre + 1, the sweep r_p = 0.1).
+        E_w, nu_w, E_p, nu_p, r_w, l_w, r_p = 150.0, 0.2, 800.0, 0.35, 0.08, 0.6, 0.1
+        dt, steps, F, Ft = 1e-3, 3000, 0.03, 0.003
+        direction = np.array([0.6, 0.8, 0.0])
+        z = 2.1 + r_p + r_w                      # touching
+        made = scene([resting_cube(0, 0)], [f"line -0.3 0.2 {z!r} 0.3 0.2 {z!r} segment {l_w} radius {r_w}"])
+        r = run(deck(f"""
+fix             g grains gravity {G} vector 0 0 -1
+fix             nscd grains nscd/polyhedra tolerance 1e-12 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains E_w {E_w} nu_w {nu_w} E_p {E_p} nu_p {nu_p} mu_s 0.5 mu_d 0.5 damping_ratio 1
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear forces velocity
+""" + loaded_contact_measurement("wire", [1, 2, 3], (0, 0, -F), tuple(Ft * direction), steps, dt)),
+                workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t0, t1 = r.thermo(0), r.thermo()
+
+        def at(table, k, row):
+            return np.array([table[f"{c}{k}"][row] for c in "xyz"])
+
+        grain0, grain1, grain2 = at(t0, 1, 0), at(t0, 1, -1), at(t1, 1, -1)
+        wire1 = 0.5 * (at(t0, 2, -1) + at(t0, 3, -1))
+        wire2 = 0.5 * (at(t1, 2, -1) + at(t1, 3, -1))
+        E_wp = 1.0 / ((1 - nu_w ** 2) / E_w + (1 - nu_p ** 2) / E_p)
+        k_n, k_t = E_wp * l_w * math.pi / 4, E_wp * r_w
+        xi = r_w + r_p - (wire1[2] - (grain1[2] + 1.0))
+        shift = (wire2 - grain2) - (wire1 - grain1)
+        err_n = xi / (2 * F / k_n) - 1
+        err_t = shift[:2] / (2 * Ft * direction[:2] / k_t) - 1
+        speed = max(t1[f"s{k}"][-1] for k in (1, 2, 3))
+        print(f"\nsegment on a face under load: overlap / (2F/k_n) - 1 = {err_n:.1e}, shift / (2F_t/k_t) - 1 = "
+              f"{err_t}, bead heights differ by {abs(t1['z2'][-1] - t1['z3'][-1]):.1e}, grain moved "
+              f"{np.max(np.abs(grain2 - grain0)):.1e}, largest speed at rest {speed:.1e}")
+        self.assertLess(abs(err_n), 1e-11)                # measured 6e-14
+        self.assertLess(np.max(np.abs(err_t)), 1e-11)     # measured 1.3e-12
 
 
 class Momentum(DeckTestCase):

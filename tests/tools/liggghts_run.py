@@ -143,6 +143,34 @@ run             0
 """
 
 
+def loaded_contact_measurement(group, ids, normal_force, tangential_force, steps, dt):
+    """Deck lines that measure a contact's stiffness under load (the complement of
+    static_contact_measurement, which imposes the displacement): every atom of `group` is
+    pushed by the constant force `normal_force` (fx, fy, fz) and left `steps` steps to
+    settle (first thermo table), then `tangential_force` is added on top and it settles
+    again (last table). The deck must damp the contact (a dashpot, no other damping, so
+    the rest state is exactly spring = load). Thermo columns, full precision: for each
+    atom id k in `ids`, x{k} y{k} z{k} and its speed s{k}; rows at the start and end of
+    each run."""
+    lines = [f"timestep        {dt!r}"]
+    columns = []
+    for k in ids:
+        for c in "xyz":
+            lines.append(f"variable        {c}{k} equal {c}[{k}]")
+            columns.append(f"v_{c}{k}")
+        lines.append(f"variable        s{k} equal sqrt(vx[{k}]^2+vy[{k}]^2+vz[{k}]^2)")
+        columns.append(f"v_s{k}")
+    total = [n + t for n, t in zip(normal_force, tangential_force)]
+    lines += [f"thermo_style    custom step {' '.join(columns)}",
+              "thermo_modify   format float %.17g norm no",
+              f"thermo          {steps}",
+              f"fix             load {group} addforce {' '.join(repr(float(f)) for f in normal_force)}",
+              f"run             {steps}",
+              f"fix             load {group} addforce {' '.join(repr(float(f)) for f in total)}",
+              f"run             {steps}"]
+    return "\n" + "\n".join(lines) + "\n"
+
+
 def deck(name):
     """Text of a deck shipped in the repository (path relative to the repository root)."""
     with open(os.path.join(SOURCE, name)) as f:
