@@ -493,7 +493,7 @@ def fmt(v, digits=2):
 
 
 def shorten(text, n=110):
-    text = re.sub(r"\s+\(liggghts-staged/src/[^)]*\)|\s+\(/[^)]*\.cpp:\d+\)", "", text)
+    text = re.sub(r"\s+\((?:\.\./|/|liggghts-staged/)[^()]*\.(?:cpp|h):\d+\)", "", text)
     return text if len(text) <= n else text[:n - 1] + "…"
 
 
@@ -539,10 +539,11 @@ def main():
     chosen = [c for c in cells() if (c[4] or not args.quick) and re.search(args.only, f"{c[0]} {c[2]}")]
     _, est_a = a_estimate(A_DEFAULT)
     _, est_b = b_estimate(B_DEFAULT)
-    print("stability estimates (gear5 limits) at the defaults: scene a "
-          + ", ".join(f"{k} {v:.3g}" for k, v in est_a.items()) + "; scene b "
-          + ", ".join(f"{k} {v:.3g}" for k, v in est_b.items())
-          + f"; scene c (NSCD, no limit) r_p/v_max = {nscd_estimate(C_Z_TOP):.3g}", flush=True)
+    estimates = ("Stability estimates (gear5 limits) at the defaults: scene a "
+                 + ", ".join(f"{k} {v:.3g}" for k, v in est_a.items()) + "; scene b "
+                 + ", ".join(f"{k} {v:.3g}" for k, v in est_b.items())
+                 + f"; scene c (NSCD, no limit) r_p/v_max = {nscd_estimate(C_Z_TOP):.3g}.")
+    print(estimates, flush=True)
     results = []
     for k, (scene, axis, label, p, extreme) in enumerate(chosen, 1):
         r = run_cell(liggghts, scene, label, p, args.timeout, args.keep)
@@ -570,7 +571,7 @@ def main():
     print()
     print(line)
     with open(args.out, "w") as f:
-        f.write(f"Stress matrix ({' '.join(sys.argv[1:]) or 'defaults'})\n\n{line}\n\n{text}\n")
+        f.write(f"Stress matrix ({' '.join(sys.argv[1:]) or 'defaults'})\n\n{estimates}\n\n{line}\n\n{text}\n")
     print(f"written: {args.out}")
 
 
