@@ -48,9 +48,9 @@ the start, nan/inf in thermo, wall time, a timeout (--timeout, per cell).
 Classes: physical; warned (a WARNING, nothing worse); error (stopped with an ERROR line);
 VIOLATION: a hang, an exit without an ERROR line (crash), or, in a run that did not stop
 with an ERROR, nan/inf in thermo, fewer atoms at the end, an overlap beyond 0.5 r_w (wire)
-or 0.1 a_max (grains), or |energy drift| > 10 % (scene a), unless a WARNING named the time
-step, an overlap or lost atoms (other warnings, e.g. the NSCD iteration cap, do not
-explain these). Note LIGGGHTS' default `thermo_modify lost ignore`: the decks keep it, so a
+or 0.1 a_max (grains), or |energy drift| > 10 % (scene a), unless a WARNING named its
+cause: the time step (any of them), an overlap (an overlap), lost atoms (a loss); other
+warnings, e.g. the NSCD iteration cap or fix wire/grain's reach, explain none of them. Note LIGGGHTS' default `thermo_modify lost ignore`: the decks keep it, so a
 lost atom is silent unless a style notices. --quick runs the default cell and the extreme
 value of every axis (half the cells); dt 10 x est is beyond the sweep."""
 
@@ -444,13 +444,16 @@ def evaluate(scene, p, out, code, hang, seconds, work):
     return r
 
 
-# a warning explains a nan, an overlap, a drift or a loss only when it names the time step,
-# an overlap or lost atoms (e.g. not the NSCD iteration cap or fix wire/grain's reach)
-EXPLAINS = re.compile(r"time ?step|overlap|lost", re.I)
+# What a warning must name to explain each symptom (the NSCD iteration cap or fix
+# wire/grain's reach explain none of them)
+EXPLAINS = {"nan": r"time ?step", "lost": r"time ?step|lost", "overlap": r"time ?step|overlap",
+            "drift": r"time ?step"}
 
 
 def classify(r):
-    silent = not any(EXPLAINS.search(w) for w in r["warnings"])
+    def silent(symptom):
+        return not r["error"] and not any(re.search(EXPLAINS[symptom], w, re.I) for w in r["warnings"])
+
     why = []
     if r["hang"]:
         why.append("hang")
@@ -458,19 +461,18 @@ def classify(r):
         pass
     elif r["code"] != 0:
         why.append(f"exit {r['code']} without ERROR")
-    if silent and not r["error"]:
-        if r["nan"]:
-            why.append("nan in thermo")
-        if r["lost"] > 0:
-            why.append(f"{r['lost']} atoms lost")
-        if r["ov_wire"] > WIRE_OVERLAP:
-            why.append(f"wire overlap {r['ov_wire'] / R_W:.2g} r_w ({r.get('ov_wire_by', '')})")
-        if r["ov_grain"] > GRAIN_OVERLAP:
-            why.append(f"grain overlap {r['ov_grain'] / A_MAX:.2g} a_max")
-        if abs(r["drift"]) > DRIFT:
-            why.append(f"energy drift {r['drift']:+.2g}")
+    if r["nan"] and silent("nan"):
+        why.append("nan in thermo")
+    if r["lost"] > 0 and silent("lost"):
+        why.append(f"{r['lost']} atoms lost")
+    if r["ov_wire"] > WIRE_OVERLAP and silent("overlap"):
+        why.append(f"wire overlap {r['ov_wire'] / R_W:.2g} r_w ({r.get('ov_wire_by', '')})")
+    if r["ov_grain"] > GRAIN_OVERLAP and silent("overlap"):
+        why.append(f"grain overlap {r['ov_grain'] / A_MAX:.2g} a_max")
+    if abs(r["drift"]) > DRIFT and silent("drift"):
+        why.append(f"energy drift {r['drift']:+.2g}")
     if why and r["warnings"] and not r["hang"]:
-        why.append("the warnings name neither the time step nor an overlap")
+        why.append("no warning names its cause")
     if why:
         r["class"] = "VIOLATION"
     elif r["error"]:
