@@ -16,6 +16,7 @@
 #include "error.h"
 #include "force.h"
 #include "fix_wire_wall.h"
+#include "group.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -300,6 +301,7 @@ bool FixNSCDPolyhedra::solves_at_end_of_step(bigint step) const { return step % 
 // The first run starts with a contact solve on the setup forces (h = N dt), so that the
 // first position update already uses constrained velocities; later runs continue.
 void FixNSCDPolyhedra::setup(int /*vflag*/) {
+  grains_known_ = group->count(igroup);
   if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
   pose_version_++;
 }
@@ -350,6 +352,7 @@ void FixNSCDPolyhedra::solve_step() {
   const double h = (summed_steps_ > 0 ? summed_steps_ : solve_interval()) * update->dt;
   const double start = MPI_Wtime();
   const std::vector<wiregrain::GrainState> grains = gather_grains();
+  check_lost_grains((bigint)grains.size());
   wiregrain::GrainStepProblem problem;
   try {
     problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses);
@@ -448,6 +451,24 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
                                      std::to_string(update->ntimestep));
   }
   return grains;
+}
+
+// LIGGGHTS deletes an atom that leaves a fixed boundary, and by default says nothing
+// (thermo_modify lost ignore): a grain of the group missing since the run start or the
+// last solve is named in a warning (the first kMaxCapWarnings times).
+void FixNSCDPolyhedra::check_lost_grains(bigint now) {
+  if (now < grains_known_ && comm->me == 0 && lost_warnings_ < kMaxCapWarnings) {
+    lost_warnings_++;
+    char line[512];
+    snprintf(line, sizeof(line),
+             "fix nscd/polyhedra (id %s): " BIGINT_FORMAT " grain(s) of the group lost by step " BIGINT_FORMAT
+             ", " BIGINT_FORMAT " left (a grain outside a fixed boundary is deleted: close the box with a wall, or "
+             "enlarge it)%s",
+             id, grains_known_ - now, update->ntimestep, now,
+             lost_warnings_ == kMaxCapWarnings ? "; further losses are not reported" : "");
+    error->warning(FLERR, line, 0);
+  }
+  grains_known_ = now;
 }
 
 // The own grains: new v, ω (and L), the step-start v_n, L_n (θ-method), contact force and torque.

@@ -127,6 +127,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double **contact_force_;                  // per grain: force, torque
   double **step_start_velocity_;            // per grain: v_n, L_n of the last solve (θ-method)
   double **force_sum_;                      // per grain: Σ f, Σ torque since the last solve
+  bigint grains_known_ = 0;                 // grains in the group at the run start or last solve
+  int lost_warnings_ = 0;                   // warnings about lost grains so far
   int problem_every_ = 0;                   // write the reduced problem every N steps (0: never)
   std::string problem_file_;                // its file name, '*' replaced by the step
 
@@ -135,6 +137,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::vector<wiregrain::GrainState> gather_grains();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
   void record_stats(const wiregrain::GrainStepResult &);
+  void check_lost_grains(bigint);
   void publish_contacts(const wiregrain::GrainStepResult &);
   [[noreturn]] void solve_failed(const std::exception &);
   void write_problem(const wiregrain::NscdStep &);

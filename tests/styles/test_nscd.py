@@ -635,6 +635,31 @@ read_restart    one.restart
         self.assertLess(np.max(np.abs(a["z1"] - 0.5)), 1e-6)
 
 
+class LostGrain(DeckTestCase):
+    # LIGGGHTS deletes a grain that leaves a fixed boundary and says nothing by default
+    # (thermo_modify lost ignore); the fix names the loss in a warning, once per loss
+    # (bench/stress_matrix.py found a grain leaving the open top of a box silently).
+    def test_lost_grain_is_named(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0), (3, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra wall 0 0 0 0 0 1
+set             atom 2 vz 200
+timestep        1e-3
+thermo_style    custom step atoms
+thermo          100
+run             400
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        warnings = [line for line in r.output.splitlines() if "grain(s) of the group lost" in line]
+        print(f"lost grain: {warnings}")
+        self.assertEqual(len(warnings), 1)
+        self.assertRegex(warnings[0], r"^WARNING: fix nscd/polyhedra \(id nscd\): 1 grain\(s\) of the group lost "
+                                      r"by step \d+, 1 left \(a grain outside a fixed boundary is deleted")
+        self.assertEqual(r.thermo()["Atoms"][-1], 1)
+
+
 class BadInput(DeckTestCase):
     def check(self, options, message):
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
