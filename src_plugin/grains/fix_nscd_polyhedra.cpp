@@ -123,8 +123,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       core_->options.margin = args.value_nonnegative(key);
     } else if (key == "manifold") {
       const std::string v = args.value_word(key);
-      if (v != "near_features" && v != "closest") args.fail("value of 'manifold' must be near_features or closest, got '" + v + "'");
-      core_->options.near_features = v == "near_features";
+      if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
+      core_->options.near_vertices = v == "near_vertices";
     } else if (key == "every") {
       every_ = (int)args.value_int_in_range(key, 1);
       every_given_ = true;

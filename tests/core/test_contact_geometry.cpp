@@ -879,14 +879,14 @@ TEST(ContactPlane, CubeOnFloorFlatTiltedAndOnCorner) {
   }
 }
 
-// ContactOptions::near_features on a tumbling cube over a wall: besides the lowest edge,
+// ContactOptions::near_vertices on a tumbling cube over a wall: besides the lowest edge,
 // every vertex whose own gap n·(v − p) − r is below the activation distance, none above.
 TEST(ContactPlane, NearVerticesOfATumblingCube) {
   const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
   const double g = 0.007, t = 0.35;  // tilt about x: edge y = z = −½ lowest
   const Quaterniond q(AngleAxisd(t, Vector3d::UnitX()));
   ContactOptions near;
-  near.near_features = true;
+  near.near_vertices = true;
   for (const Motion& M : motions()) {
     const Plane floor{M.point(Vector3d::Zero()), M.vector(Vector3d::UnitZ())};
     const Vector3d c(0.1, 0.2, 0.5 * (std::cos(t) + std::sin(t)) + 0.1 + g);
@@ -914,7 +914,7 @@ TEST(ContactPlane, NearVerticesOfATumblingCube) {
   }
 }
 
-// ContactOptions::near_features between grains: a cube B tumbling onto a slab A, over its
+// ContactOptions::near_vertices between grains: a cube B tumbling onto a slab A, over its
 // face, over its edge and with two vertices inside it. Reference: the distance of each
 // vertex of B to the slab's core, a box, by clamping the coordinates (inside: the
 // nearest face), minus the radii. Every vertex of B whose gap is below the activation
@@ -924,7 +924,7 @@ TEST(ContactManifold, NearVerticesOfACubeTumblingOntoASlab) {
   const ConvexShape slab = ConvexShape::box(10.0, 10.0, 1.0, 0.1), cube = ConvexShape::cube(1.0, 0.05);
   const Vector3d half(5.0, 5.0, 0.5);
   ContactOptions near;
-  near.near_features = true;
+  near.near_vertices = true;
   struct Case {
     Quaterniond q;
     double x;        // of the cube's centre: 0 over the face, 4.9 across the edge x = 5
@@ -978,46 +978,6 @@ TEST(ContactManifold, NearVerticesOfACubeTumblingOntoASlab) {
           }
       EXPECT_GE(near_count, 3) << "x " << k.x;  // the case reaches beyond the closest feature
     }
-  }
-}
-
-// ContactOptions::near_features, the edge crossings: a cube tilted about y rests its low
-// edge on a slab's top face and its two bottom edges along x rise across the slab's top
-// boundary edge x = 5. The closest features give the low edge; each crossing gets a point
-// whose gap is the two lines' separation along m = d_slab × d_cube (oriented up), minus
-// the radii (reference: the skew-line distance), with normal m.
-TEST(ContactManifold, NearEdgeCrossingsOverASlabEdge) {
-  const ConvexShape slab = ConvexShape::box(10.0, 10.0, 1.0, 0.1), cube = ConvexShape::cube(1.0, 0.05);
-  const Quaterniond q(AngleAxisd(-0.2, Vector3d::UnitY()));
-  ContactOptions near;
-  near.near_features = true;
-  double lowest = kInf;
-  for (double sx : {-0.5, 0.5})
-    for (double sz : {-0.5, 0.5}) lowest = std::min(lowest, (q * Vector3d(sx, 0.0, sz)).z());
-  const Vector3d c(4.8, 0.0, 0.5 + 0.16 - lowest);
-  for (const Motion& M : motions()) {
-    const PosedShape a(slab, M.point(Vector3d::Zero()), M.orientation(kIdentity));
-    const PosedShape b(cube, M.point(c), M.orientation(q));
-    const ContactManifold m = contact_manifold(a, b, 0.3, near);
-    EXPECT_NEAR(m.gap, 0.16 - 0.15, 1e-12);
-    for (double sy : {-0.5, 0.5}) {
-      const Vector3d b0 = c + q * Vector3d(-0.5, sy, -0.5), b1 = c + q * Vector3d(0.5, sy, -0.5);
-      const Vector3d a0(5.0, -5.0, 0.5), a1(5.0, 5.0, 0.5);
-      Vector3d axis = (a1 - a0).cross(b1 - b0).normalized();
-      if (axis.z() < 0.0) axis = -axis;
-      const double gap = axis.dot(b0 - a0) - 0.15;
-      ASSERT_LT(gap, 0.3);
-      int found = 0;
-      for (const auto& p : m.points)
-        if ((p.normal - M.vector(axis)).norm() < 1e-9 && std::abs(p.gap - gap) < 1e-12 &&
-            std::abs((M.q.inverse() * (p.position - M.t)).y() - sy) < 1e-12)
-          ++found;
-      EXPECT_EQ(found, 1) << "edge y = " << sy;
-    }
-    int crossings = 0;
-    for (const auto& p : contact_manifold(a, b, 0.3).points)
-      crossings += (p.normal - m.normal).norm() > 1e-6;
-    EXPECT_EQ(crossings, 0);  // option off: the closest features only
   }
 }
 

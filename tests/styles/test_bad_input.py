@@ -269,7 +269,7 @@ class NscdKeywords(Table):
     CASES = (
         (NSCD + "warm_start maybe\nrun 1", P + "value of 'warm_start' must be yes or no, got 'maybe'"),
         (NSCD + "convergence fast\nrun 1", P + "value of 'convergence' must be natural_map, increment or both, got 'fast'"),
-        (NSCD + "manifold all\nrun 1", P + "value of 'manifold' must be near_features or closest, got 'all'"),
+        (NSCD + "manifold all\nrun 1", P + "value of 'manifold' must be near_vertices or closest, got 'all'"),
         (NSCD + "manifold\nrun 1", P + "missing value after 'manifold'"),
         (NSCD + "wall_friction 0.3\nrun 1", P + "'wall_friction' must follow a 'wall' or 'wall_fix'"),
         (NSCD + "wall 0 0 0 0 0\nrun 1", P + "missing value after 'wall'"),

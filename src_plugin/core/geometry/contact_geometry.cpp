@@ -905,7 +905,7 @@ CorePair single_pair(const PosedShape& A, const ContactFeature& fa, const PosedS
 }
 
 // The points of the vertices of P that come within the activation distance of Q and
-// carry no point yet (ContactOptions::near_features). n is the pair normal from P to Q
+// carry no point yet (ContactOptions::near_vertices). n is the pair normal from P to Q
 // and core_distance their signed core distance along it; reach = activation distance +
 // r_A + r_B is the core distance below which a vertex is activated. Prefilter: a vertex
 // whose height n·v lies h below P's support height is at least h + core_distance from Q
@@ -920,7 +920,7 @@ struct NearPoint {
   Vector3d a, b, normal;
 };
 
-void add_near_features(const PosedShape& P, const PosedShape& Q, bool p_is_a, const Vector3d& n,
+void add_near_vertices(const PosedShape& P, const PosedShape& Q, bool p_is_a, const Vector3d& n,
                        double core_distance, double reach, double size, double tol,
                        const std::vector<Vector3d>& taken, std::vector<NearPoint>& out) {
   const double support = support_value(P, n);
@@ -965,66 +965,6 @@ void add_near_features(const PosedShape& P, const PosedShape& Q, bool p_is_a, co
       out.push_back({v, on_q, normal});
     else
       out.push_back({on_q, v, -normal});
-  }
-}
-
-// The crossing points of an edge of A and an edge of B that come within the activation
-// distance (ContactOptions::near_features; the vertices above miss them: a grain's edge
-// turning onto another's face closes at the face's far boundary edge, seen in the
-// 500-grain deposit as a 9.5e-4 a_max overlap in one step of a pair whose only point was
-// the crossing at the near boundary edge). Candidates: edges with an end within the
-// prefilter slab of add_near_features. A pair counts when the closest points of the two
-// segments are inside both (an end is a vertex: above) and the edges cross at more than
-// kCrossingSine: then the closest points differ along m = ±(d_A × d_B)/|d_A × d_B| (sign:
-// m·n > 0), and the point's core gap is m·(p_B − p_A), the edges' signed separation
-// along m (negative when the edges have passed each other: overlapping cores), with
-// normal m. Separations below the pair's core distance are dropped (below).
-void add_near_edges(const PosedShape& A, const PosedShape& B, const Vector3d& n,
-                    double core_distance, double reach, double tol, std::vector<NearPoint>& out,
-                    const std::vector<Vector3d>& taken_a, const std::vector<Vector3d>& taken_b) {
-  constexpr double kCrossingSine = 1e-3;
-  const auto candidates = [&](const PosedShape& P, const Vector3d& direction) {
-    const double support = support_value(P, direction);
-    const double depth_limit = reach - core_distance;
-    std::vector<int> out_edges;
-    const auto& edges = P.shape().edges();
-    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      const double h0 = support - direction.dot(P.vertices()[edges[e][0]]);
-      const double h1 = support - direction.dot(P.vertices()[edges[e][1]]);
-      if (std::min(h0, h1) < depth_limit) out_edges.push_back(e);
-    }
-    return out_edges;
-  };
-  const std::vector<int> edges_a = candidates(A, n), edges_b = candidates(B, -n);
-  const auto near_taken = [&](const Vector3d& pa, const Vector3d& pb) {
-    for (std::size_t i = 0; i < taken_a.size(); ++i)
-      if ((taken_a[i] - pa).squaredNorm() <= tol * tol && (taken_b[i] - pb).squaredNorm() <= tol * tol)
-        return true;
-    for (const NearPoint& p : out)
-      if ((p.a - pa).squaredNorm() <= tol * tol && (p.b - pb).squaredNorm() <= tol * tol) return true;
-    return false;
-  };
-  for (int ea : edges_a) {
-    const Vector3d& a0 = A.vertices()[A.shape().edges()[ea][0]];
-    const Vector3d& a1 = A.vertices()[A.shape().edges()[ea][1]];
-    for (int eb : edges_b) {
-      const Vector3d& b0 = B.vertices()[B.shape().edges()[eb][0]];
-      const Vector3d& b1 = B.vertices()[B.shape().edges()[eb][1]];
-      const Vector3d da = a1 - a0, db = b1 - b0;
-      Vector3d m = da.cross(db);
-      const double sine = m.norm() / (da.norm() * db.norm());
-      if (!(sine > kCrossingSine)) continue;
-      m /= m.norm();
-      if (m.dot(n) < 0.0) m = -m;
-      const SegmentClosestPoints closest = segment_closest_points(a0, a1, b0, b1);
-      if (!(closest.s > 0.0 && closest.s < 1.0 && closest.t > 0.0 && closest.t < 1.0)) continue;
-      const Vector3d pa = a0 + closest.s * da, pb = b0 + closest.t * db;
-      // no point is deeper than the pair (a separation below the cores' signed distance
-      // is two edges that pass each other away from the contact, not a contact)
-      const double separation = m.dot(pb - pa);
-      if (!(separation < reach && separation >= core_distance - tol) || near_taken(pa, pb)) continue;
-      out.push_back({pa, pb, m});
-    }
   }
 }
 
@@ -1180,16 +1120,15 @@ ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
   for (int i : reduce_polygon(in_plane, gaps, options.max_points))
     m.points.push_back(make_point(pairs[i].a, pairs[i].b, n, r_a, r_b));
 
-  if (options.near_features) {
+  if (options.near_vertices) {
     std::vector<Vector3d> taken_a, taken_b;
     for (const auto& p : pairs) {
       taken_a.push_back(p.a);
       taken_b.push_back(p.b);
     }
     std::vector<NearPoint> near;
-    add_near_features(a, b, true, n, cd.distance, reach, size, tol, taken_a, near);
-    add_near_features(b, a, false, -n, cd.distance, reach, size, tol, taken_b, near);
-    add_near_edges(a, b, n, cd.distance, reach, tol, near, taken_a, taken_b);
+    add_near_vertices(a, b, true, n, cd.distance, reach, size, tol, taken_a, near);
+    add_near_vertices(b, a, false, -n, cd.distance, reach, size, tol, taken_b, near);
     for (const NearPoint& p : near) m.points.push_back(make_point(p.a, p.b, p.normal, r_a, r_b));
   }
   return m;
@@ -1246,7 +1185,7 @@ ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
     const Vector3d& v = grain.vertices()[vertices[i]];
     m.points.push_back(make_point(v - gaps[i] * n, v, n, 0.0, r));
   }
-  if (options.near_features)
+  if (options.near_vertices)
     for (int i = 0; i < static_cast<int>(grain.vertices().size()); ++i) {
       const Vector3d& v = grain.vertices()[i];
       const double core_gap = n.dot(v - wall.point);

@@ -149,7 +149,7 @@ struct ContactOptions {
   // closest point on the other core, its own normal along the two; for a wall the wall
   // normal). Without them a grain tumbling onto another (or a wall) closes its next vertex
   // one step late: overlaps of ~1e-3 a_max in deposits (docs/core_contact.md).
-  bool near_features = false;
+  bool near_vertices = false;
 };
 
 enum class FeatureKind { vertex, edge, face };
@@ -177,7 +177,7 @@ struct ContactManifold {
   ContactFeature feature_a, feature_b;  // for a wall: feature_b only
   // Empty when gap >= activation_distance. Otherwise one point (vertex involved, or
   // crossing edges), two (edge–face, parallel edges) or the clipped polygon (face–face,
-  // up to max_points), all with the manifold normal; then, with options.near_features,
+  // up to max_points), all with the manifold normal; then, with options.near_vertices,
   // the near vertices' points (each with its own normal). The smallest point gap equals
   // `gap` to rounding.
   std::vector<ContactPoint> points;

@@ -110,7 +110,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
   const double activation = options.margin + 2.0 * h * (2.0 * fastest + wall_speed) + 1e-12;
   ContactOptions contact_options;
-  contact_options.near_features = options.near_features;
+  contact_options.near_vertices = options.near_vertices;
   std::vector<GrainContactPoint>& points = problem.points;
   const auto add_point = [&](int body_a, int body_b, const ContactPoint& p, double mu,
                              const Eigen::Vector3d& wall_velocity, long key_a) {

@@ -72,9 +72,9 @@ struct GrainStepOptions {
   double margin = 0.0;     // extra activation distance ≥ 0
   bool warm_start = true;
   // contact points: the closest features plus every vertex within the activation
-  // distance (ContactOptions::near_features; fix keyword `manifold near_features`), or the
+  // distance (ContactOptions::near_vertices; fix keyword `manifold near_vertices`), or the
   // closest features only (`manifold closest`)
-  bool near_features = true;
+  bool near_vertices = true;
   // solver options of a step: seed = solver.seed + step_number (a new random order per step)
   NscdOptions solver_for_step(std::uint64_t step_number) const;
   // InvalidArgument("friction" | "damping" | "margin" | solver keywords, ...)
