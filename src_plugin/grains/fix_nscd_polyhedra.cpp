@@ -299,11 +299,57 @@ int FixNSCDPolyhedra::solve_interval() const {
 bool FixNSCDPolyhedra::solves_at_end_of_step(bigint step) const { return step % solve_interval() == 0; }
 
 // The first run starts with a contact solve on the setup forces (h = N dt), so that the
-// first position update already uses constrained velocities; later runs continue.
+// first position update already uses constrained velocities; later runs continue. A
+// later run whose grains the deck gave new velocities after the last solve (`velocity
+// set`, `set atom`) starts like the first: the pending move of that solve, made with the
+// velocities the deck replaced, is dropped and the step solved again from the new ones
+// (else the grains would move one step at the new velocities unconstrained: a launched
+// box stopped h v0 further than launched before the first run). Not detected after
+// read_restart (the velocities of the run's end are not in the restart file).
 void FixNSCDPolyhedra::setup(int /*vflag*/) {
   grains_known_ = group->count(igroup);
+  if (run_end_known_ && move_pending_ && summed_steps_ == 0) {
+    // grains present at both times (created or deleted ones are no change of the others)
+    const auto now = velocities_by_tag();
+    bool changed = false;
+    auto before = run_end_velocities_.begin();
+    for (const auto &grain : now) {
+      while (before != run_end_velocities_.end() && before->first < grain.first) ++before;
+      if (before != run_end_velocities_.end() && before->first == grain.first && before->second != grain.second)
+        changed = true;
+    }
+    if (changed) {
+      move_pending_ = false;
+      solved_once_ = false;
+    }
+  }
+  run_end_known_ = false;
+  run_end_velocities_.clear();
   if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
   pose_version_++;
+}
+
+void FixNSCDPolyhedra::post_run() {
+  run_end_velocities_ = velocities_by_tag();
+  run_end_known_ = true;
+}
+
+std::vector<std::pair<long, std::array<double, 6>>> FixNSCDPolyhedra::velocities_by_tag() {
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double record[7] = {double(atom->tag[i]), atom->v[i][0], atom->v[i][1], atom->v[i][2],
+                              atom->angmom[i][0], atom->angmom[i][1], atom->angmom[i][2]};
+    mine.insert(mine.end(), record, record + 7);
+  }
+  const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
+  std::vector<std::pair<long, std::array<double, 6>>> out(all.size() / 7);
+  for (size_t k = 0; k < out.size(); k++) {
+    out[k].first = (long)all[7 * k];
+    for (int d = 0; d < 6; d++) out[k].second[d] = all[7 * k + 1 + d];
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 // The grains move once per solve, at the start of the step after it; they are held

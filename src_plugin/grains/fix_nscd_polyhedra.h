@@ -55,6 +55,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #define LMP_FIX_NSCD_POLYHEDRA_H
 
 #include <cstdio>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +77,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   int setmask();
   void init();
   void setup(int);
+  void post_run();
   void initial_integrate(int);
   void final_integrate();
   double compute_vector(int);
@@ -119,6 +121,11 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   long pose_version_ = 0;
   class AtomVecPolyhedron *grains_;
   bool solved_once_;                        // a contact solve happened (setup of the first run)
+  // v and ω of every grain (by tag, all ranks) as the last run left them, to tell at the
+  // next setup whether the deck changed them in between (velocity set, set atom ...)
+  std::vector<std::pair<long, std::array<double, 6>>> run_end_velocities_;
+  bool run_end_known_ = false;
+  std::vector<std::pair<long, std::array<double, 6>>> velocities_by_tag();
   double stats_[6];
   double largest_overlap_ = 0.0;            // over all steps since the fix was made
   double stick_solves_[2] = {0.0, 0.0};     // method subspace: tried, kept, since the fix was made

@@ -197,11 +197,15 @@ run             5000
                   "fix_modify nscd friction 0.25", 0.5)]
         for name, fix_line, before_run, mu in cases:
             travelled = self.stop(fix_line, before_run)
-            print(f"{name}: stopped after {travelled:.6f}, v0^2/(2 mu g) = {1 / (2 * mu * G):.6f}")
-            # 2.0005 = v0^2/(2 μ g) + h v0/2 here, where Launch stops at − h v0/2: the
-            # velocity set between runs is moved with for one step before the solve sees it
-            # (found in session 7, not yet explained), hence the h v0 tolerance
-            self.assertAlmostEqual(travelled, 1 / (2 * mu * G), delta=1e-3, msg=name)
+            # the θ = 1 scheme's distance (Launch): v0²/(2 μ g) − h v0/2. The velocity is set
+            # between runs (after `run 0`): the second run starts from it as the first run
+            # would (before the fix: + h v0/2, the set velocity moved with for one step)
+            h, v0, decel = 1e-3, 1.0, mu * G
+            steps = round(v0 / (decel * h))
+            discrete = h * sum(v0 - k * decel * h for k in range(1, steps + 1))
+            print(f"{name}: stopped after {travelled:.12f}, v0^2/(2 mu g) = {1 / (2 * mu * G):.6f}, "
+                  f"the scheme's {discrete:.12f}")
+            self.assertAlmostEqual(travelled, discrete, delta=1e-9, msg=name)
 
 
 class TallStack(DeckTestCase):
