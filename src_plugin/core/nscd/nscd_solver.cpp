@@ -184,266 +184,6 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
 
 }  // namespace
 
-// ---------------------------------------------------------------------------------------
-// Bodies.
-
-namespace {
-
-// The operator of one time step on bodies: velocities of the bodies are the state,
-// u_c = H_a V_a + H_b V_b + offset_c + s_c e_n.
-class BodyContactOperator final : public ContactOperator {
- public:
-  BodyContactOperator(const NscdStep& step, const NscdOptions& options) {
-    const double h = step.time_step;
-    require_positive("time_step", h);
-    const int body_count = static_cast<int>(step.bodies.size());
-    velocities_.resize(body_count);
-    inverse_mass_.resize(body_count);
-    for (int b = 0; b < body_count; ++b) {
-      const NscdBody& body = step.bodies[b];
-      const std::string label = "body " + std::to_string(b) + ": ";
-      check_nonnegative(body.inverse_mass, "bodies", label + "inverse mass");
-      check_finite(body.inverse_inertia.allFinite(), "bodies", label + "inverse inertia");
-      check_finite(body.velocity_begin.allFinite() && body.angular_velocity_begin.allFinite(),
-                     "bodies", label + "start velocity");
-      check_finite(body.velocity_free.allFinite() && body.angular_velocity_free.allFinite(),
-                     "bodies", label + "free velocity");
-      velocities_[b] << body.velocity_free, body.angular_velocity_free;
-      inverse_mass_[b] = {body.inverse_mass, body.inverse_inertia};
-    }
-
-    const int n = static_cast<int>(step.contacts.size());
-    links_.resize(n);
-    start_normal_velocity_.resize(n);
-    double norm_q_squared = 0.0;
-    for (int c = 0; c < n; ++c) {
-      const NscdContact& contact = step.contacts[c];
-      const std::string label = contact_label(c);
-      for (int body : {contact.body_a, contact.body_b}) {
-        if (body < -1 || body >= body_count) {
-          throw InvalidArgument("contacts", label + "body index " + std::to_string(body) +
-                                                " out of range [-1, " +
-                                                std::to_string(body_count) + ")");
-        }
-      }
-      if (contact.body_a == contact.body_b && contact.body_a >= 0) {
-        throw InvalidArgument("contacts", label + "both sides are body " +
-                                              std::to_string(contact.body_a));
-      }
-      check_nonnegative(contact.friction, "contacts", label + "friction");
-      check_finite(std::isfinite(contact.gap), "contacts", label + "gap");
-      check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(),
-                     "contacts", label + "Jacobian");
-      check_finite(contact.velocity_offset.allFinite(), "contacts", label + "velocity offset");
-
-      Link& link = links_[c];
-      link.body_a = contact.body_a;
-      link.body_b = contact.body_b;
-      link.jacobian_a = contact.jacobian_a;
-      link.jacobian_b = contact.jacobian_b;
-      link.mu = contact.friction;
-      Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
-      Eigen::Vector3d u_begin = contact.velocity_offset;
-      if (link.body_a >= 0) {
-        W += link.jacobian_a * response(link.body_a, link.jacobian_a);
-        const NscdBody& body = step.bodies[link.body_a];
-        u_begin += link.jacobian_a.leftCols<3>() * body.velocity_begin +
-                   link.jacobian_a.rightCols<3>() * body.angular_velocity_begin;
-      }
-      if (link.body_b >= 0) {
-        W += link.jacobian_b * response(link.body_b, link.jacobian_b);
-        const NscdBody& body = step.bodies[link.body_b];
-        u_begin += link.jacobian_b.leftCols<3>() * body.velocity_begin +
-                   link.jacobian_b.rightCols<3>() * body.angular_velocity_begin;
-      }
-      if (!(W(0, 0) > 0.0)) {
-        throw InvalidArgument("contacts", label + "Delassus block has W_nn = " +
-                                              format_number(W(0, 0)) +
-                                              " (both sides of infinite mass, or a zero normal row)");
-      }
-      link.delassus = LocalDelassus(W);
-      // Contact-law shift of the normal velocity (header).
-      const double theta = options.theta;
-      const double g = contact.gap;
-      const double un_begin = u_begin[0];
-      start_normal_velocity_[c] = un_begin;
-      // an overlap is removed by β of it per step, at most at the speed overlap_speed
-      const double g_target =
-          g < 0.0 ? std::max(options.overlap_recovery * g, -options.overlap_speed * h) : g;
-      double shift = (g_target / h + (1.0 - theta) * un_begin) / theta;
-      if (options.restitution > 0.0 && un_begin < 0.0 && g + h * un_begin <= 0.0) {
-        shift = std::min(shift, options.restitution * un_begin);
-      }
-      link.constant = contact.velocity_offset;
-      link.constant[0] += shift;
-      const Eigen::Vector3d q = velocity(c);
-      norm_q_squared += q.squaredNorm();
-    }
-    norm_q_ = std::sqrt(norm_q_squared);
-  }
-
-  int contact_count() const override { return static_cast<int>(links_.size()); }
-  const LocalDelassus& delassus_block(int c) const override { return links_[c].delassus; }
-  double friction_coefficient(int c) const override { return links_[c].mu; }
-  // The sums in a tree, not one chain: the sweep waits for u of each contact (its bodies'
-  // velocities were changed by the contact before).
-  Eigen::Vector3d velocity(int c) const override {
-    const Link& link = links_[c];
-    Eigen::Vector3d side_a = Eigen::Vector3d::Zero(), side_b = Eigen::Vector3d::Zero();
-    if (link.body_a >= 0) side_a = side_velocity(link.jacobian_a, velocities_[link.body_a]);
-    if (link.body_b >= 0) side_b = side_velocity(link.jacobian_b, velocities_[link.body_b]);
-    return link.constant + (side_a + side_b);
-  }
-  void add_impulse(int c, const Eigen::Vector3d& delta) override {
-    const Link& link = links_[c];
-    if (link.body_a >= 0) apply_impulse(link.body_a, link.jacobian_a.transpose() * delta);
-    if (link.body_b >= 0) apply_impulse(link.body_b, link.jacobian_b.transpose() * delta);
-  }
-  double free_velocity_norm() const override { return norm_q_; }
-  // W = H M⁻¹ Hᵀ: a block between every two contacts that share a body.
-  const BlockSparseMatrix3& delassus_matrix() override {
-    if (delassus_.block_count() == contact_count()) return delassus_;
-    const int n = contact_count();
-    delassus_ = BlockSparseMatrix3(n);
-    // per body, the contacts touching it with that side's H and M⁻¹ Hᵀ
-    struct Touch {
-      int contact;
-      const ContactJacobian* H;
-      Eigen::Matrix<double, 6, 3> response;
-    };
-    std::vector<std::vector<Touch>> touches(velocities_.size());
-    for (int c = 0; c < n; ++c) {
-      const Link& link = links_[c];
-      if (link.body_a >= 0) touches[link.body_a].push_back({c, &link.jacobian_a, response(link.body_a, link.jacobian_a)});
-      if (link.body_b >= 0) touches[link.body_b].push_back({c, &link.jacobian_b, response(link.body_b, link.jacobian_b)});
-    }
-    for (const std::vector<Touch>& body : touches) {
-      for (const Touch& row : body) {
-        for (const Touch& column : body) delassus_.add(row.contact, column.contact, *row.H * column.response);
-      }
-    }
-    return delassus_;
-  }
-
-  const std::vector<Vector6d>& body_velocities() const { return velocities_; }
-  double start_normal_velocity(int c) const { return start_normal_velocity_[c]; }
-  // Normal velocity without the shift s_c.
-  double normal_velocity(int c, const NscdStep& step) const {
-    return velocity(c)[0] - links_[c].constant[0] + step.contacts[c].velocity_offset[0];
-  }
-
- private:
-  struct Link {
-    int body_a = -1, body_b = -1;
-    ContactJacobian jacobian_a, jacobian_b;
-    Eigen::Vector3d constant;  // velocity offset + s e_n
-    double mu = 0.0;
-    LocalDelassus delassus;
-  };
-  // H V = H_v v + H_ω ω
-  static Eigen::Vector3d side_velocity(const ContactJacobian& H, const Vector6d& V) {
-    const Eigen::Vector3d linear = H.leftCols<3>() * V.head<3>();
-    const Eigen::Vector3d angular = H.rightCols<3>() * V.tail<3>();
-    return linear + angular;
-  }
-
-  std::vector<Link> links_;
-  std::vector<Vector6d> velocities_;
-  // M⁻¹ = diag(1/m, 1/m, 1/m, I⁻¹) per body; the sweep applies it to Hᵀ Δr instead of
-  // keeping M⁻¹ Hᵀ per contact (two 6 × 3 blocks): the contact data then fit the caches
-  // better (bench/nscd_body_sweep; figures in docs/core_nscd.md)
-  struct InverseMass {
-    double mass;
-    Eigen::Matrix3d inertia;
-  };
-  std::vector<InverseMass> inverse_mass_;
-  // V += M⁻¹ p for a generalised impulse p = (linear, angular)
-  void apply_impulse(int body, const Vector6d& p) {
-    velocities_[body].head<3>() += inverse_mass_[body].mass * p.head<3>();
-    velocities_[body].tail<3>().noalias() += inverse_mass_[body].inertia * p.tail<3>();
-  }
-  // M⁻¹ Hᵀ of one side
-  Eigen::Matrix<double, 6, 3> response(int body, const ContactJacobian& H) const {
-    Eigen::Matrix<double, 6, 3> out;
-    out.topRows<3>() = inverse_mass_[body].mass * H.leftCols<3>().transpose();
-    out.bottomRows<3>() = inverse_mass_[body].inertia * H.rightCols<3>().transpose();
-    return out;
-  }
-  std::vector<double> start_normal_velocity_;
-  double norm_q_ = 0.0;
-  BlockSparseMatrix3 delassus_;  // assembled on demand
-};
-
-}  // namespace
-
-namespace {
-
-class ReducedOperator final : public ContactOperator {
- public:
-  explicit ReducedOperator(const ReducedProblem& problem)
-      : problem_(problem),
-        impulses_(problem.contact_count(), Eigen::Vector3d::Zero()),
-        norm_q_(problem.q.norm()) {
-    problem.validate();
-    const int n = problem.contact_count();
-    diagonal_.reserve(n);
-    for (int c = 0; c < n; ++c) diagonal_.emplace_back(*problem.W.find(c, c));
-  }
-  int contact_count() const override { return problem_.contact_count(); }
-  const LocalDelassus& delassus_block(int c) const override { return diagonal_[c]; }
-  double friction_coefficient(int c) const override { return problem_.mu[c]; }
-  Eigen::Vector3d velocity(int c) const override {
-    Eigen::Vector3d u = problem_.q.segment<3>(3 * c);
-    for (const BlockSparseMatrix3::Entry& e : problem_.W.row(c)) {
-      u.noalias() += e.block * impulses_[e.column];
-    }
-    return u;
-  }
-  void add_impulse(int c, const Eigen::Vector3d& delta) override { impulses_[c] += delta; }
-  double free_velocity_norm() const override { return norm_q_; }
-  const BlockSparseMatrix3& delassus_matrix() override { return problem_.W; }
-
- private:
-  const ReducedProblem& problem_;
-  std::vector<LocalDelassus> diagonal_;
-  std::vector<Eigen::Vector3d> impulses_;
-  double norm_q_;
-};
-
-}  // namespace
-
-namespace {
-
-// One Gauss–Seidel sweep: each contact in turn, its local Coulomb problem with the others
-// held (core/nscd/coulomb_local.h), the impulse increment applied at once.
-template <class Operator>
-void gauss_seidel_sweep(Operator& op, const std::vector<int>& order, bool backward, double omega,
-                        ContactSolution& result, NscdReport& report, double& increment_squared,
-                        int (&counts)[3]) {
-  const int n = static_cast<int>(order.size());
-  for (int k = 0; k < n; ++k) {
-    const int c = backward ? order[n - 1 - k] : order[k];
-    const LocalDelassus& W = op.delassus_block(c);
-    Eigen::Vector3d& r = result.impulses[c];
-    const Eigen::Vector3d q_local = op.velocity(c) - W.matrix() * r;
-    const LocalSolution local = solve_coulomb_local(W, q_local, op.friction_coefficient(c), r);
-    report.newton_iterations += local.newton_iterations;
-    if (local.slide_method == SlideMethod::scan) ++report.slide_fallbacks;
-    const Eigen::Vector3d updated =
-        omega == 1.0 ? local.impulse : Eigen::Vector3d(omega * local.impulse + (1.0 - omega) * r);
-    const Eigen::Vector3d delta = updated - r;
-    if (!delta.isZero(0.0)) {
-      op.add_impulse(c, delta);
-      r = updated;
-      increment_squared += delta.squaredNorm();
-    }
-    result.states[c] = local.state;
-    ++counts[static_cast<int>(local.state)];
-  }
-}
-
-}  // namespace
-
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
                                          const std::vector<Eigen::Vector3d>& warm_start,
                                          StickSolveBackoff* backoff) {
@@ -505,14 +245,27 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
 
     double increment_squared = 0.0;
     int counts[3] = {0, 0, 0};
-    // the operators the core has, called directly (inlined) instead of through the
-    // interface (bench/nscd_body_sweep; figures in docs/core_nscd.md)
-    if (auto* body = dynamic_cast<BodyContactOperator*>(&op))
-      gauss_seidel_sweep(*body, order, backward, omega, result, report, increment_squared, counts);
-    else if (auto* reduced = dynamic_cast<ReducedOperator*>(&op))
-      gauss_seidel_sweep(*reduced, order, backward, omega, result, report, increment_squared, counts);
-    else
-      gauss_seidel_sweep(op, order, backward, omega, result, report, increment_squared, counts);
+    for (int k = 0; k < n; ++k) {
+      const int c = backward ? order[n - 1 - k] : order[k];
+      const LocalDelassus& W = op.delassus_block(c);
+      Eigen::Vector3d& r = result.impulses[c];
+      const Eigen::Vector3d q_local = op.velocity(c) - W.matrix() * r;
+      const LocalSolution local = solve_coulomb_local(W, q_local, op.friction_coefficient(c), r);
+      report.newton_iterations += local.newton_iterations;
+      if (local.slide_method == SlideMethod::scan) {
+        ++report.slide_fallbacks;
+      }
+      const Eigen::Vector3d updated =
+          omega == 1.0 ? local.impulse : Eigen::Vector3d(omega * local.impulse + (1.0 - omega) * r);
+      const Eigen::Vector3d delta = updated - r;
+      if (!delta.isZero(0.0)) {
+        op.add_impulse(c, delta);
+        r = updated;
+        increment_squared += delta.squaredNorm();
+      }
+      result.states[c] = local.state;
+      ++counts[static_cast<int>(local.state)];
+    }
     report.open = counts[0];
     report.stick = counts[1];
     report.slide = counts[2];
@@ -603,6 +356,184 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   report.siconos_error = siconos_error(op, result.impulses);
   return result;
 }
+
+// ---------------------------------------------------------------------------------------
+// Bodies.
+
+namespace {
+
+// The operator of one time step on bodies: velocities of the bodies are the state,
+// u_c = H_a V_a + H_b V_b + offset_c + s_c e_n.
+class BodyContactOperator final : public ContactOperator {
+ public:
+  BodyContactOperator(const NscdStep& step, const NscdOptions& options) {
+    const double h = step.time_step;
+    require_positive("time_step", h);
+    const int body_count = static_cast<int>(step.bodies.size());
+    velocities_.resize(body_count);
+    inverse_mass_.resize(body_count);
+    for (int b = 0; b < body_count; ++b) {
+      const NscdBody& body = step.bodies[b];
+      const std::string label = "body " + std::to_string(b) + ": ";
+      check_nonnegative(body.inverse_mass, "bodies", label + "inverse mass");
+      check_finite(body.inverse_inertia.allFinite(), "bodies", label + "inverse inertia");
+      check_finite(body.velocity_begin.allFinite() && body.angular_velocity_begin.allFinite(),
+                     "bodies", label + "start velocity");
+      check_finite(body.velocity_free.allFinite() && body.angular_velocity_free.allFinite(),
+                     "bodies", label + "free velocity");
+      velocities_[b] << body.velocity_free, body.angular_velocity_free;
+      inverse_mass_[b].setZero();
+      inverse_mass_[b].topLeftCorner<3, 3>().diagonal().setConstant(body.inverse_mass);
+      inverse_mass_[b].bottomRightCorner<3, 3>() = body.inverse_inertia;
+    }
+
+    const int n = static_cast<int>(step.contacts.size());
+    links_.resize(n);
+    start_normal_velocity_.resize(n);
+    double norm_q_squared = 0.0;
+    for (int c = 0; c < n; ++c) {
+      const NscdContact& contact = step.contacts[c];
+      const std::string label = contact_label(c);
+      for (int body : {contact.body_a, contact.body_b}) {
+        if (body < -1 || body >= body_count) {
+          throw InvalidArgument("contacts", label + "body index " + std::to_string(body) +
+                                                " out of range [-1, " +
+                                                std::to_string(body_count) + ")");
+        }
+      }
+      if (contact.body_a == contact.body_b && contact.body_a >= 0) {
+        throw InvalidArgument("contacts", label + "both sides are body " +
+                                              std::to_string(contact.body_a));
+      }
+      check_nonnegative(contact.friction, "contacts", label + "friction");
+      check_finite(std::isfinite(contact.gap), "contacts", label + "gap");
+      check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(),
+                     "contacts", label + "Jacobian");
+      check_finite(contact.velocity_offset.allFinite(), "contacts", label + "velocity offset");
+
+      Link& link = links_[c];
+      link.body_a = contact.body_a;
+      link.body_b = contact.body_b;
+      link.jacobian_a = contact.jacobian_a;
+      link.jacobian_b = contact.jacobian_b;
+      link.mu = contact.friction;
+      Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d u_begin = contact.velocity_offset;
+      if (link.body_a >= 0) {
+        link.response_a = inverse_mass_[link.body_a] * link.jacobian_a.transpose();
+        W += link.jacobian_a * link.response_a;
+        const NscdBody& body = step.bodies[link.body_a];
+        u_begin += link.jacobian_a.leftCols<3>() * body.velocity_begin +
+                   link.jacobian_a.rightCols<3>() * body.angular_velocity_begin;
+      }
+      if (link.body_b >= 0) {
+        link.response_b = inverse_mass_[link.body_b] * link.jacobian_b.transpose();
+        W += link.jacobian_b * link.response_b;
+        const NscdBody& body = step.bodies[link.body_b];
+        u_begin += link.jacobian_b.leftCols<3>() * body.velocity_begin +
+                   link.jacobian_b.rightCols<3>() * body.angular_velocity_begin;
+      }
+      if (!(W(0, 0) > 0.0)) {
+        throw InvalidArgument("contacts", label + "Delassus block has W_nn = " +
+                                              format_number(W(0, 0)) +
+                                              " (both sides of infinite mass, or a zero normal row)");
+      }
+      link.delassus = LocalDelassus(W);
+      // Contact-law shift of the normal velocity (header).
+      const double theta = options.theta;
+      const double g = contact.gap;
+      const double un_begin = u_begin[0];
+      start_normal_velocity_[c] = un_begin;
+      // an overlap is removed by β of it per step, at most at the speed overlap_speed
+      const double g_target =
+          g < 0.0 ? std::max(options.overlap_recovery * g, -options.overlap_speed * h) : g;
+      double shift = (g_target / h + (1.0 - theta) * un_begin) / theta;
+      if (options.restitution > 0.0 && un_begin < 0.0 && g + h * un_begin <= 0.0) {
+        shift = std::min(shift, options.restitution * un_begin);
+      }
+      link.constant = contact.velocity_offset;
+      link.constant[0] += shift;
+      const Eigen::Vector3d q = velocity(c);
+      norm_q_squared += q.squaredNorm();
+    }
+    norm_q_ = std::sqrt(norm_q_squared);
+  }
+
+  int contact_count() const override { return static_cast<int>(links_.size()); }
+  const LocalDelassus& delassus_block(int c) const override { return links_[c].delassus; }
+  double friction_coefficient(int c) const override { return links_[c].mu; }
+  // The sums in a tree, not one chain: the sweep waits for u of each contact (its bodies'
+  // velocities were changed by the contact before).
+  Eigen::Vector3d velocity(int c) const override {
+    const Link& link = links_[c];
+    Eigen::Vector3d side_a = Eigen::Vector3d::Zero(), side_b = Eigen::Vector3d::Zero();
+    if (link.body_a >= 0) side_a = side_velocity(link.jacobian_a, velocities_[link.body_a]);
+    if (link.body_b >= 0) side_b = side_velocity(link.jacobian_b, velocities_[link.body_b]);
+    return link.constant + (side_a + side_b);
+  }
+  void add_impulse(int c, const Eigen::Vector3d& delta) override {
+    const Link& link = links_[c];
+    if (link.body_a >= 0) velocities_[link.body_a].noalias() += link.response_a * delta;
+    if (link.body_b >= 0) velocities_[link.body_b].noalias() += link.response_b * delta;
+  }
+  double free_velocity_norm() const override { return norm_q_; }
+  // W = H M⁻¹ Hᵀ: a block between every two contacts that share a body.
+  const BlockSparseMatrix3& delassus_matrix() override {
+    if (delassus_.block_count() == contact_count()) return delassus_;
+    const int n = contact_count();
+    delassus_ = BlockSparseMatrix3(n);
+    // per body, the contacts touching it with that side's H and M⁻¹ Hᵀ
+    struct Touch {
+      int contact;
+      const ContactJacobian* H;
+      const Eigen::Matrix<double, 6, 3>* response;
+    };
+    std::vector<std::vector<Touch>> touches(velocities_.size());
+    for (int c = 0; c < n; ++c) {
+      const Link& link = links_[c];
+      if (link.body_a >= 0) touches[link.body_a].push_back({c, &link.jacobian_a, &link.response_a});
+      if (link.body_b >= 0) touches[link.body_b].push_back({c, &link.jacobian_b, &link.response_b});
+    }
+    for (const std::vector<Touch>& body : touches) {
+      for (const Touch& row : body) {
+        for (const Touch& column : body) delassus_.add(row.contact, column.contact, *row.H * *column.response);
+      }
+    }
+    return delassus_;
+  }
+
+  const std::vector<Vector6d>& body_velocities() const { return velocities_; }
+  double start_normal_velocity(int c) const { return start_normal_velocity_[c]; }
+  // Normal velocity without the shift s_c.
+  double normal_velocity(int c, const NscdStep& step) const {
+    return velocity(c)[0] - links_[c].constant[0] + step.contacts[c].velocity_offset[0];
+  }
+
+ private:
+  struct Link {
+    int body_a = -1, body_b = -1;
+    ContactJacobian jacobian_a, jacobian_b;
+    Eigen::Matrix<double, 6, 3> response_a, response_b;  // M⁻¹ Hᵀ
+    Eigen::Vector3d constant;  // velocity offset + s e_n
+    double mu = 0.0;
+    LocalDelassus delassus;
+  };
+  // H V = H_v v + H_ω ω
+  static Eigen::Vector3d side_velocity(const ContactJacobian& H, const Vector6d& V) {
+    const Eigen::Vector3d linear = H.leftCols<3>() * V.head<3>();
+    const Eigen::Vector3d angular = H.rightCols<3>() * V.tail<3>();
+    return linear + angular;
+  }
+
+  std::vector<Link> links_;
+  std::vector<Vector6d> velocities_;
+  std::vector<Eigen::Matrix<double, 6, 6>> inverse_mass_;
+  std::vector<double> start_normal_velocity_;
+  double norm_q_ = 0.0;
+  BlockSparseMatrix3 delassus_;  // assembled on demand
+};
+
+}  // namespace
 
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
                                const std::vector<Eigen::Vector3d>& warm_start,
@@ -749,6 +680,41 @@ void ReducedProblem::validate() const {
   }
 }
 
+namespace {
+
+class ReducedOperator final : public ContactOperator {
+ public:
+  explicit ReducedOperator(const ReducedProblem& problem)
+      : problem_(problem),
+        impulses_(problem.contact_count(), Eigen::Vector3d::Zero()),
+        norm_q_(problem.q.norm()) {
+    problem.validate();
+    const int n = problem.contact_count();
+    diagonal_.reserve(n);
+    for (int c = 0; c < n; ++c) diagonal_.emplace_back(*problem.W.find(c, c));
+  }
+  int contact_count() const override { return problem_.contact_count(); }
+  const LocalDelassus& delassus_block(int c) const override { return diagonal_[c]; }
+  double friction_coefficient(int c) const override { return problem_.mu[c]; }
+  Eigen::Vector3d velocity(int c) const override {
+    Eigen::Vector3d u = problem_.q.segment<3>(3 * c);
+    for (const BlockSparseMatrix3::Entry& e : problem_.W.row(c)) {
+      u.noalias() += e.block * impulses_[e.column];
+    }
+    return u;
+  }
+  void add_impulse(int c, const Eigen::Vector3d& delta) override { impulses_[c] += delta; }
+  double free_velocity_norm() const override { return norm_q_; }
+  const BlockSparseMatrix3& delassus_matrix() override { return problem_.W; }
+
+ private:
+  const ReducedProblem& problem_;
+  std::vector<LocalDelassus> diagonal_;
+  std::vector<Eigen::Vector3d> impulses_;
+  double norm_q_;
+};
+
+}  // namespace
 
 ContactSolution solve_reduced(const ReducedProblem& problem, const NscdOptions& options,
                               const std::vector<Eigen::Vector3d>& warm_start) {
