@@ -68,11 +68,7 @@ double ContactTimeStepCheck::check(LAMMPS_NS::LAMMPS *lmp, const std::string &ki
 }
 
 bool OverlapWarnings::due(double ratio) {
-  if (!(ratio > kLargeOverlapFraction)) {
-    named_ = 0.0;  // the episode, if any, is over
-    return false;
-  }
-  if (count_ >= kMaxOverlapWarnings || (named_ > 0.0 && !(ratio > 2.0 * named_))) return false;
+  if (!(ratio > kLargeOverlapFraction) || count_ >= kMaxOverlapWarnings || !(ratio > 2.0 * named_)) return false;
   named_ = ratio;
   return true;
 }

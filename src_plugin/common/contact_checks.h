@@ -20,9 +20,10 @@
    named in a warning on the rank that computed it (these styles reduce nothing per step):
      "<kind> <style> (id <ID>): at step S <which> overlap by X (Y r_w, beyond 0.5 r_w: the
       soft contact assumes small overlaps); use a smaller timestep or <remedy>"
-   at the first step of an episode (consecutive steps above 0.5 r_w) and again within it
-   each time the overlap doubles the last one named, so that a growing overlap shows its
-   size; kMaxOverlapWarnings per style and rank in all. */
+   the first time, and again only when an overlap doubles the largest one named (about
+   0.5, 1, 2, 4 r_w ...), so that its size shows without repeating a run that stays near
+   the threshold (the reduced column presses beads 0.5 r_w into the floor and grains
+   again and again); kMaxOverlapWarnings per style and rank in all. */
 
 #ifndef WIREGRAIN_CONTACT_CHECKS_H
 #define WIREGRAIN_CONTACT_CHECKS_H
@@ -79,7 +80,7 @@ class OverlapWarnings {
 
  private:
   int count_ = 0;
-  double named_ = 0.0;  // the last ratio named in the current episode (0: none, or no episode)
+  double named_ = 0.0;  // the largest ratio named so far (0: none)
 };
 
 }  // namespace wiregrain_lmp

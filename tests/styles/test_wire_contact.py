@@ -476,9 +476,10 @@ run             0
     def test_overlap_of_a_fast_impact_on_a_soft_wall(self):
         # a straight wire falls at 2.5 on a wall of E = 1 (k = 0.157, ω = 7.07): it sinks
         # to 2.5/ω = 0.35 = 3.5 r_w and bounces back (restitution 1). Named: the first step
-        # beyond 0.5 r_w, then each time the overlap doubles the last one named (about
-        # 0.5, 1, 2 r_w; the overlap grows by at most v dt = 0.025 r_w a step); not again
-        # on the way out.
+        # beyond 0.5 r_w, then each time the overlap doubles the largest one named (about
+        # 0.5, 1, 2 r_w; the overlap grows by at most v dt = 0.025 r_w a step); not on the
+        # way out, nor at a second impact at the same speed (the same depth: nothing
+        # doubles).
         r = run(HEADER + """
 create_wire     1 line -0.5 0 0.2 0.5 0 0.2
 velocity        all set 0 0 -2.5
@@ -489,7 +490,9 @@ timestep        1e-3
 thermo_style    custom step f_floor[2]
 thermo_modify   format float %.15g
 thermo          1
-run             400
+run             600
+velocity        all set 0 0 -2.5
+run             600
 """)
         self.assertRanCleanly(r)
         found = warning_lines(r.output, "overlap by")
