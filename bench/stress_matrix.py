@@ -23,8 +23,9 @@ Three scenes, each a deck written to a temporary directory:
 Axes (one at a time around the default cell of each scene):
   dt       the time step as a fraction of the stability estimate. fix wire/elastic prints
            its own (dt_crit = 2/omega_max and the gear5 limit 0.156 dt_crit: the script
-           checks its own figure against that line); the contact styles print none, so the
-           script estimates each from README's formulas: an undamped spring k_n = E* l_w pi/4
+           checks its own figure against that line); the contact styles warn only beyond
+           theirs (core/contact/contact_time_step.h), so the script estimates each from
+           README's formulas: an undamped spring k_n = E* l_w pi/4
            on the lightest mass it can act on (wall: one bead; wire-wire: E* = E/2, half a
            bead; wire-grain: 1/E* = (1-nu_w^2)/E_w + (1-nu_p^2)/E_p, one bead, the grain
            held), gear5 limit 0.313/omega; the estimate is the smallest of them. NSCD is

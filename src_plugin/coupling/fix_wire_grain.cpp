@@ -67,7 +67,11 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       bead_force_(NULL),
       output_(NULL),
       nmax_ghost_(0),
-      stats_step_(-1) {
+      stats_step_(-1),
+      deepest_bead_(0),
+      deepest_grain_(0),
+      deepest_overlap_(0.0),
+      deepest_radius_(1.0) {
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
   grains_ = AtomVecPolyhedron::of(atom);
@@ -198,6 +202,7 @@ void FixWireGrain::init() {
 // so that the first NSCD solve, in fix nscd/polyhedra's setup, sees them whatever the
 // order of the fixes. Springs are not advanced; the grains get this step's force as is.
 void FixWireGrain::setup_pre_force(int /*vflag*/) {
+  check_time_step();
   hold_grains();
   evaluate(true);
 }
@@ -205,6 +210,43 @@ void FixWireGrain::setup_pre_force(int /*vflag*/) {
 void FixWireGrain::post_force(int /*vflag*/) {
   if (held_version_ != nscd_->pose_version()) hold_grains();
   evaluate(false);
+}
+
+// At the setup of each run (all ranks): the stiffest contact spring of each pair of a
+// bead type and a grain type present (the longest segment, the thickest bead) on the
+// lightest bead alone: the grain is held during the wire's sub-steps, and heavier.
+void FixWireGrain::check_time_step() {
+  const int ntypes = atom->ntypes, *type = atom->type, *mask = atom->mask, *shape = atom->shapetype;
+  const int *next = wire_->wire_next, *prev = wire_->wire_prev;
+  // per type: a bead of a segment present, a grain present; then the longest rest
+  // length, the largest radius, −the lightest bead's mass
+  std::vector<double> local(2 * ntypes + 5, 0.0), global(2 * ntypes + 5);
+  const int beads = 0, grains = ntypes + 1, extremes = 2 * ntypes + 2;
+  local[extremes + 2] = -INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if ((mask[i] & grain_groupbit_) && shape[i] >= 0) local[grains + type[i]] = 1.0;
+    if (!(mask[i] & groupbit) || (!next[i] && !prev[i])) continue;
+    local[beads + type[i]] = 1.0;
+    if (next[i]) local[extremes] = std::max(local[extremes], wire_->wire_rest[i]);
+    local[extremes + 1] = std::max(local[extremes + 1], atom->radius[i]);
+    local[extremes + 2] = std::max(local[extremes + 2], -atom->rmass[i]);
+  }
+  MPI_Allreduce(local.data(), global.data(), 2 * ntypes + 5, MPI_DOUBLE, MPI_MAX, world);
+  std::vector<wiregrain_lmp::ContactSpring> springs;
+  if (global[extremes] > 0.0 && std::isfinite(global[extremes + 2]))
+    for (int w = 1; w <= ntypes; w++)
+      for (int g = 1; g <= ntypes; g++) {
+        if (global[beads + w] == 0.0 || global[grains + g] == 0.0) continue;
+        wiregrain_lmp::ContactSpring s;
+        s.effective_modulus = modulus_[w * (ntypes + 1) + g];
+        s.segment_length = global[extremes];
+        s.radius = global[extremes + 1];
+        s.friction = friction_;
+        s.mass = -global[extremes + 2];
+        s.mass_name = "the lightest bead, the grain held";
+        springs.push_back(s);
+      }
+  time_step_check_.check(lmp, "fix", "wire/grain", id, springs);
 }
 
 // All grains of the group, as the NSCD fix left them, on every rank.
@@ -299,7 +341,13 @@ void FixWireGrain::record_contact(const wiregrain::WireGrainContact &c, int i, l
   local_stats_[0] += 1.0;
   if (c.sliding) local_stats_[4] += 1.0;
   local_stats_[1] = std::max(local_stats_[1], c.overlap);
-  local_stats_[2] = std::max(local_stats_[2], c.overlap / atom->radius[i]);
+  if (c.overlap / atom->radius[i] > local_stats_[2]) {
+    local_stats_[2] = c.overlap / atom->radius[i];
+    deepest_bead_ = atom->tag[i];
+    deepest_grain_ = grain_tag;
+    deepest_overlap_ = c.overlap;
+    deepest_radius_ = atom->radius[i];
+  }
   wiregrain::ContactRecord record;
   record.kind = wiregrain::ContactKind::wire_grain;
   record.a = atom->tag[i];
@@ -367,6 +415,11 @@ void FixWireGrain::evaluate(bool setup) {
   history_->end_step();
   core_->contacts.count_evaluations(evaluations);
   local_stats_[3] = double(evaluations);
+  if (overlap_warnings_.due(local_stats_[2]))
+    overlap_warnings_.warn(lmp, "fix", "wire/grain", id, deepest_overlap_, deepest_radius_,
+                            "the segment of bead " + std::to_string(deepest_bead_) + " and grain " +
+                                std::to_string(deepest_grain_),
+                            "stiffer materials (E_w, E_p)");
   apply_bead_forces();
 
   if (setup) {

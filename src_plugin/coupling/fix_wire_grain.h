@@ -29,6 +29,13 @@
    Tangential springs per (segment, grain), kept by the segment's first bead in fix
    WIRE_GRAIN_HISTORY_<ID> (migrate, restart; dropped when the pair separates).
 
+   Checks (common/contact_checks.h): at each run start the timestep against the stability
+   limit of the stiffest contact spring (longest segment, thickest bead, stiffest pair of
+   materials present) on the lightest bead alone: the grain is held during the wire's
+   sub-steps (fix nscd/polyhedra moves it, implicitly, once per NSCD step) and is much
+   heavier (Table 1: ~150 beads); every step, an overlap beyond 0.5 r_w is named in a
+   warning, the first 10 times per rank.
+
    Outputs: vector [contacts, largest overlap, largest overlap / r_w, force of the wire on
    the grains averaged over the last NSCD step (x, y, z), exact segment–grain evaluations
    of the step, contacts sliding (on the Coulomb limit)]; per-atom array (6): beads: force from the grains this step (3), 0 0 0;
@@ -48,6 +55,7 @@ FixStyle(wire/grain,FixWireGrain)
 #include <string>
 #include <vector>
 
+#include "common/contact_checks.h"
 #include "common/contact_publisher.h"
 #include "common/plugin_material.h"
 #include "core/contact/contact_materials.h"
@@ -111,8 +119,14 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   double global_stats_[8];
   double average_force_[3];      // on all grains, last NSCD step
   bigint stats_step_;
+  wiregrain_lmp::ContactTimeStepCheck time_step_check_;
+  wiregrain_lmp::OverlapWarnings overlap_warnings_;
+  int deepest_bead_;             // this step: the bead and grain of the largest overlap / r_w
+  long deepest_grain_;
+  double deepest_overlap_, deepest_radius_;
 
   void hold_grains();
+  void check_time_step();
   double held_reach();
   void evaluate(bool setup);
   wiregrain::WireSegmentState segment_of(int i, int j) const;

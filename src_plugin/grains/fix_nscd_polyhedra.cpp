@@ -38,6 +38,13 @@ namespace {
 
 constexpr int kMaxCapWarnings = 10;
 
+// An overlap at a step start beyond this fraction of the sweep radius r_p is named in a
+// warning (check_overlap).
+constexpr double kLargeOverlapOfSweep = 0.5;
+// The length that stands for r_p for sharp grains (r_p = 0), as a fraction of their
+// bounding radius: Table 1's ratio r_p / a_max.
+constexpr double kSharpReferenceOfBounding = 0.1;
+
 // per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3)
 constexpr int kGrainRecord = 25;
 
@@ -417,6 +424,7 @@ void FixNSCDPolyhedra::solve_step() {
   timings_[1] = MPI_Wtime() - detected;
   scatter_results(grains, result);
   record_stats(result);
+  check_overlap(grains, result.stats.max_overlap, h);
   publish_contacts(result);
   // the wall positions for the next detection (wall_fix walls: taken from their fix)
   for (wiregrain::PlaneWall &w : core_->walls) w.point += w.velocity * h;
@@ -515,6 +523,43 @@ void FixNSCDPolyhedra::check_lost_grains(bigint now) {
     error->warning(FLERR, line, 0);
   }
   grains_known_ = now;
+}
+
+// An overlap at the step start beyond kLargeOverlapOfSweep r_p: the NSCD step keeps grains
+// apart through gap anticipation at the current velocities, so a grain that moves about
+// its sweep radius r_p in one step (h v ≳ r_p) can carry its core into a partner before
+// the contact is constrained; the overlap is then pushed out over later steps
+// (overlap_recovery, overlap_speed). r_p: the smallest of the group's grains (sharp grains
+// without sweep: kSharpReferenceOfBounding of their bounding radius). Named in a warning
+// with h and the fastest grain's speed at the step start, the first kMaxCapWarnings
+// times; the solve is replicated, so rank 0 speaks for all.
+void FixNSCDPolyhedra::check_overlap(const std::vector<wiregrain::GrainState> &grains, double max_overlap, double h) {
+  if (overlap_warnings_ >= kMaxCapWarnings || !(max_overlap > 0.0) || grains.empty()) return;
+  const wiregrain::ShapeLibrary &shapes = grains_->shapes();
+  double r_p = INFINITY, v_max = 0.0;
+  bool sharp = false;  // r_p stands for a sharp grain's
+  for (const wiregrain::GrainState &g : grains) {
+    const wiregrain::GrainShape &s = shapes[g.shape];
+    const double sweep = s.shape.sweep_radius();
+    const double reference = sweep > 0.0 ? sweep : kSharpReferenceOfBounding * s.bounding_radius;
+    if (reference < r_p) {
+      r_p = reference;
+      sharp = !(sweep > 0.0);
+    }
+    v_max = std::max(v_max, g.velocity.norm());
+  }
+  if (!(max_overlap > kLargeOverlapOfSweep * r_p)) return;
+  overlap_warnings_++;
+  if (comm->me != 0) return;
+  char line[512];
+  snprintf(line, sizeof(line),
+           "fix nscd/polyhedra (id %s): step " BIGINT_FORMAT " starts with an overlap of %.3g = %.3g r_p (beyond "
+           "%.2g r_p, r_p = %.3g%s): the step h = %.3g moves the fastest grain (speed %.3g) h v = %.3g r_p; use a "
+           "smaller timestep%s",
+           id, update->ntimestep, max_overlap, max_overlap / r_p, kLargeOverlapOfSweep, r_p,
+           sharp ? ", for sharp grains a tenth of the bounding radius" : "", h, v_max, h * v_max / r_p,
+           overlap_warnings_ == kMaxCapWarnings ? "; further large overlaps are not reported" : "");
+  error->warning(FLERR, line, 0);
 }
 
 // The own grains: new v, ω (and L), the step-start v_n, L_n (θ-method), contact force and torque.

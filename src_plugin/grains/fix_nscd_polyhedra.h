@@ -43,7 +43,12 @@
    the force the grains exert on it (x, y, z), then the wall-clock seconds of the last
    step spent in gathering + contact detection and in the solve, then the largest overlap
    of all steps since the fix was defined]; per-atom array [contact force (3),
-   contact torque about the centre (3)] of each grain (impulses / h). */
+   contact torque about the centre (3)] of each grain (impulses / h).
+
+   Warnings (the first 10 of each kind): a step that hits the iteration cap; grains of
+   the group lost (deleted at a fixed boundary); an overlap at a step start beyond half the
+   smallest sweep radius r_p of the grains (sharp grains, r_p = 0: a tenth of their
+   bounding radius), named with h and the fastest grain's speed v (h v / r_p). */
 
 #ifdef FIX_CLASS
 
@@ -136,6 +141,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double **force_sum_;                      // per grain: Σ f, Σ torque since the last solve
   bigint grains_known_ = 0;                 // grains in the group at the run start or last solve
   int lost_warnings_ = 0;                   // warnings about lost grains so far
+  int overlap_warnings_ = 0;                // warnings about large overlaps so far
   int problem_every_ = 0;                   // write the reduced problem every N steps (0: never)
   std::string problem_file_;                // its file name, '*' replaced by the step
 
@@ -145,6 +151,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
   void record_stats(const wiregrain::GrainStepResult &);
   void check_lost_grains(bigint);
+  void check_overlap(const std::vector<wiregrain::GrainState> &, double max_overlap, double h);
   void publish_contacts(const wiregrain::GrainStepResult &);
   [[noreturn]] void solve_failed(const std::exception &);
   void write_problem(const wiregrain::NscdStep &);

@@ -25,6 +25,7 @@
 #include "core/common/validation.h"
 #include "core/wire/gear_integrator.h"
 #include "core/wire/wire_elasticity.h"
+#include "contact_checks.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 
@@ -154,9 +155,7 @@ void FixWireElastic::setup(int vflag) {
   const double dt_crit = reported_time_step_ ? 0.0 : critical_time_step();
   if (!reported_time_step_ && dt_crit < 1e300) {
     reported_time_step_ = true;
-    bool gear = false;
-    for (int k = 0; k < modify->nfix; k++)
-      if (FixNVEGear *g = dynamic_cast<FixNVEGear *>(modify->fix[k])) gear = gear || g->uses_gear();
+    const bool gear = wiregrain_lmp::gear5_integrates(lmp);
     // Verlet is stable for ω·dt < 2, the 6-value Gear corrector for ω·dt < 0.313
     const double limit = gear ? dt_crit * wiregrain::kGear5StableOmegaDt / 2.0 : dt_crit;
     if (comm->me == 0) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -101,7 +102,52 @@ void FixWireWall::init() {
         wiregrain_lmp::wire_material_of_type(lmp, type, material_keywords_, "fix", "wire/wall", id));
 }
 
-void FixWireWall::setup(int vflag) { post_force(vflag); }
+void FixWireWall::setup(int vflag) {
+  check_time_step();
+  post_force(vflag);
+}
+
+double FixWireWall::bead_length(int i) const {
+  const double *rest = wire_->wire_rest;
+  double previous_rest = 0.0;
+  if (rest[i] <= 0.0 && wire_->wire_prev[i]) {
+    const int j = wire_->linked_bead(wire_->wire_prev[i]);
+    if (j >= 0) previous_rest = rest[j];
+  }
+  return wiregrain::bead_segment_length(rest[i], previous_rest, atom->radius[i]);
+}
+
+// At the setup of each run (all ranks): the stiffest contact of each wire type of the
+// group (the longest segment a bead stands for, the thickest bead) on the lightest bead
+// (the wall is rigid: the spring acts on the bead alone).
+void FixWireWall::check_time_step() {
+  const int ntypes = atom->ntypes, *type = atom->type, *mask = atom->mask;
+  // per type: present; then the longest length, the largest radius, −the lightest mass
+  std::vector<double> local(ntypes + 4, 0.0), global(ntypes + 4);
+  local[ntypes + 3] = -INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    local[type[i]] = 1.0;
+    local[ntypes + 1] = std::max(local[ntypes + 1], bead_length(i));
+    local[ntypes + 2] = std::max(local[ntypes + 2], atom->radius[i]);
+    local[ntypes + 3] = std::max(local[ntypes + 3], -atom->rmass[i]);
+  }
+  MPI_Allreduce(local.data(), global.data(), ntypes + 4, MPI_DOUBLE, MPI_MAX, world);
+  std::vector<wiregrain_lmp::ContactSpring> springs;
+  if (std::isfinite(global[ntypes + 3]))
+    for (int t = 1; t <= ntypes; t++) {
+      if (global[t] == 0.0) continue;
+      wiregrain_lmp::ContactSpring s;
+      s.effective_modulus = wall_modulus_of_type_[t];
+      s.segment_length = global[ntypes + 1];
+      s.radius = global[ntypes + 2];
+      s.friction = friction_;
+      s.mass = -global[ntypes + 3];
+      s.mass_name = "the lightest bead";
+      springs.push_back(s);
+    }
+  time_step_check_.check(lmp, "fix", "wire/wall", id, springs);
+}
 
 void FixWireWall::current_point(double p[3]) const {
   const double t = reference_dt_ * double(update->ntimestep - reference_step_);
@@ -129,8 +175,8 @@ int FixWireWall::modify_param(int narg, char **arg) {
 
 void FixWireWall::post_force(int /*vflag*/) {
   double **x = atom->x, **v = atom->v, **f = atom->f;
-  const int *mask = atom->mask, *prev = wire_->wire_prev, *type = atom->type, *tag = atom->tag;
-  const double *radius = atom->radius, *rmass = atom->rmass, *rest = wire_->wire_rest;
+  const int *mask = atom->mask, *type = atom->type, *tag = atom->tag;
+  const double *radius = atom->radius, *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
   double p[3];
   current_point(p);
@@ -141,19 +187,18 @@ void FixWireWall::post_force(int /*vflag*/) {
   history_->begin_step();
   for (int k = 0; k < 5; k++) local_stats_[k] = 0.0;
   contacts_->clear();
+  int deepest = -1;  // this rank's bead of the largest overlap / r_w, and its gap
+  double deepest_gap = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double gap = (x[i][0] - p[0]) * n.x() + (x[i][1] - p[1]) * n.y() + (x[i][2] - p[2]) * n.z() - radius[i];
     if (gap >= 0.0) continue;
-    // the segment length the bead stands for: its own, its previous bead's, or 2 r
-    double previous_rest = 0.0;
-    if (rest[i] <= 0.0 && prev[i]) {
-      const int j = wire_->linked_bead(prev[i]);
-      if (j >= 0) previous_rest = rest[j];
+    if (deepest < 0 || -gap * radius[deepest] > -deepest_gap * radius[i]) {
+      deepest = i;
+      deepest_gap = gap;
     }
-    const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
-        wall_modulus_of_type_[type[i]], wiregrain::bead_segment_length(rest[i], previous_rest, radius[i]), radius[i],
-        friction_);
+    const wiregrain::SoftContactLaw law =
+        wiregrain::segment_contact_law(wall_modulus_of_type_[type[i]], bead_length(i), radius[i], friction_);
     wiregrain::TangentialHistory h;
     history_->lookup(i, 0, h);
     const Eigen::Vector3d u = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]) - wall_velocity;
@@ -181,6 +226,10 @@ void FixWireWall::post_force(int /*vflag*/) {
   }
   history_->end_step();
   stats_step_ = -1;
+  if (overlap_warnings_.due(deepest >= 0 ? -deepest_gap / radius[deepest] : 0.0))
+    overlap_warnings_.warn(lmp, "fix", "wire/wall", id, -deepest_gap, radius[deepest],
+                            "bead " + std::to_string(tag[deepest]) + " and the wall",
+                            "a stiffer material (E)");
 }
 
 double FixWireWall::compute_vector(int k) {

@@ -18,6 +18,11 @@
    fix nscd/polyhedra ... wall_fix ID makes the same plane a wall of the grains: one
    definition per container wall.
 
+   Checks (common/contact_checks.h): at each run start the timestep against the stability
+   limit of the stiffest bead of the group (longest segment, thickest bead, stiffest
+   material) on the lightest bead; every step, a bead overlapping the wall by more than
+   0.5 r_w is named in a warning, the first 10 times per rank.
+
    Outputs: vector = [contacts, largest overlap, force on the wall x, y, z] (all ranks).
    Publishes its contacts (kind wire_wall, a = −1, b = the bead's tag) as a
    ContactPublisher. */
@@ -34,6 +39,7 @@ FixStyle(wire/wall,FixWireWall)
 #include <string>
 #include <vector>
 
+#include "common/contact_checks.h"
 #include "common/contact_publisher.h"
 #include "core/contact/contact_materials.h"
 #include "fix.h"
@@ -76,7 +82,12 @@ class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
   wiregrain::ContactList *contacts_;
   double local_stats_[5], global_stats_[5];
   bigint stats_step_;
+  wiregrain_lmp::ContactTimeStepCheck time_step_check_;
+  wiregrain_lmp::OverlapWarnings overlap_warnings_;
   void rereference();
+  void check_time_step();
+  // the segment length bead i stands for (its own, its previous bead's, or 2 r)
+  double bead_length(int i) const;
 };
 
 }  // namespace LAMMPS_NS

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -28,6 +29,7 @@
 #include "core/geometry/segment_distance.h"
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_list.h"
+#include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
@@ -239,6 +241,10 @@ void PairWireContact::compute(int eflag, int vflag) {
   long evaluations = 0;  // exact segment–segment distances computed
   const double dt = update->dt;
   const bool setup = update->setupflag != 0;
+  if (setup) check_time_step();
+  // this rank's largest overlap / r_w of the step, and its pair
+  double largest_ratio = 0.0, largest_overlap = 0.0, largest_radius = 1.0;
+  int largest_a = 0, largest_b = 0;
 
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ii++) {
@@ -269,6 +275,13 @@ void PairWireContact::compute(int eflag, int vflag) {
       const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
       const double overlap = r_a + r_b - cp.distance;
       if (overlap <= 0.0) continue;
+      if (overlap > largest_ratio * 0.5 * (r_a + r_b)) {
+        largest_ratio = overlap / (0.5 * (r_a + r_b));
+        largest_overlap = overlap;
+        largest_radius = 0.5 * (r_a + r_b);
+        largest_a = tag[a];
+        largest_b = tag[b];
+      }
 
       Eigen::Vector3d normal = cp.q - cp.p;
       if (cp.distance > 0.0) normal /= cp.distance;
@@ -316,8 +329,47 @@ void PairWireContact::compute(int eflag, int vflag) {
   }
   history_->end_step();
   contacts_->count_evaluations(evaluations);
+  if (overlap_warnings_.due(largest_ratio))
+    overlap_warnings_.warn(lmp, "pair", "wire/contact", "-", largest_overlap, largest_radius,
+                            "the segments of beads " + std::to_string(largest_a) + " and " +
+                                std::to_string(largest_b),
+                            "a stiffer material (E)");
 
   if (own_reverse_comm) comm->reverse_comm_pair(this);
+}
+
+// At the setup of each run (all ranks): the stiffest contact spring of every pair of
+// wire types present, the longest segment and the thickest bead, on the reduced mass of
+// two of the lightest beads (the contact point at a segment end moves with its bead).
+void PairWireContact::check_time_step() {
+  const int ntypes = atom->ntypes, *type = atom->type;
+  const int *next = wire_->wire_next, *prev = wire_->wire_prev;
+  // per type: present; then the longest rest length, the largest radius, −the lightest mass
+  std::vector<double> local(ntypes + 4, 0.0), global(ntypes + 4);
+  local[ntypes + 3] = -INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!next[i] && !prev[i]) continue;  // a lone bead is no segment
+    local[type[i]] = 1.0;
+    if (next[i]) local[ntypes + 1] = std::max(local[ntypes + 1], wire_->wire_rest[i]);
+    local[ntypes + 2] = std::max(local[ntypes + 2], atom->radius[i]);
+    local[ntypes + 3] = std::max(local[ntypes + 3], -atom->rmass[i]);
+  }
+  MPI_Allreduce(local.data(), global.data(), ntypes + 4, MPI_DOUBLE, MPI_MAX, world);
+  std::vector<wiregrain_lmp::ContactSpring> springs;
+  if (global[ntypes + 1] > 0.0 && std::isfinite(global[ntypes + 3]))
+    for (int i = 1; i <= ntypes; i++)
+      for (int j = i; j <= ntypes; j++) {
+        if (global[i] == 0.0 || global[j] == 0.0) continue;
+        wiregrain_lmp::ContactSpring s;
+        s.effective_modulus = effective_modulus_[i][j];
+        s.segment_length = global[ntypes + 1];
+        s.radius = global[ntypes + 2];
+        s.friction = friction_[i][j];
+        s.mass = wiregrain::reduced_mass(-global[ntypes + 3], -global[ntypes + 3]);
+        s.mass_name = "the reduced mass of two of the lightest beads";
+        springs.push_back(s);
+      }
+  time_step_check_.check(lmp, "pair", "wire/contact", "-", springs);
 }
 
 // Comm::reverse_comm_pair of this LIGGGHTS expects the values per atom, not the total.

@@ -16,7 +16,13 @@
    mass of segment A's two beads. The tangential springs live in the fix
    WIRE_CONTACT_HISTORY, so they survive neighbour rebuilds, migration and restarts;
    restart files also keep the pair_style and pair_coeff settings. Publishes its contacts
-   (kind wire_wire, a and b the tags of the segments' first beads) as a ContactPublisher. */
+   (kind wire_wire, a and b the tags of the segments' first beads) as a ContactPublisher.
+
+   Checks (common/contact_checks.h): at each run start the timestep against the stability
+   limit of the stiffest contact spring of the wire types present (the longest segment,
+   the thickest bead) on the reduced mass of two of the lightest beads (a contact point at
+   a segment end moves with one bead); every step, an overlap beyond 0.5 r_w (r_w the mean
+   radius of the two segments) is named in a warning, the first 10 times per rank. */
 
 #ifdef PAIR_CLASS
 
@@ -29,6 +35,7 @@ PairStyle(wire/contact,PairWireContact)
 
 #include "pair.h"
 
+#include "common/contact_checks.h"
 #include "common/contact_publisher.h"
 #include "common/plugin_material.h"
 #include "core/contact/contact_materials.h"
@@ -77,7 +84,11 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
   double **segment_end_;
   int segment_capacity_;
 
+  wiregrain_lmp::ContactTimeStepCheck time_step_check_;
+  wiregrain_lmp::OverlapWarnings overlap_warnings_;
+
   void allocate();
+  void check_time_step();
   // reads the keywords from arg[first..narg) into c; `kind` names the command in errors
   void parse(int narg, char **arg, int first, Coefficients &c, const char *kind);
 };

@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
+from liggghts_run import DeckTestCase, full_precision, main, read_dump, run, warning_lines
 
 G = 1.0
 
@@ -83,6 +83,7 @@ run             {steps}
         self.assertAlmostEqual(-t["nscd[9]"][-1] / n, 1.0, delta=1e-4)
         self.assertLess(np.max(t["nscd[4]"]), 1e-9)
         self.assertLess(np.max(np.abs(d["f_nscd[1]"])), 1e-4 * n)
+        self.assertNotIn("starts with an overlap", r.output)
 
     def test_stacks(self):
         # Gauss-Seidel converges slowly on tall frictional columns (tens of thousands of
@@ -662,6 +663,48 @@ run             400
         self.assertRegex(warnings[0], r"^WARNING: fix nscd/polyhedra \(id nscd\): 1 grain\(s\) of the group lost "
                                       r"by step \d+, 1 left \(a grain outside a fixed boundary is deleted")
         self.assertEqual(r.thermo()["Atoms"][-1], 1)
+
+
+class OverlapWarning(DeckTestCase):
+    # An overlap at a step start beyond half the sweep radius r_p is named with h and the
+    # fastest grain's speed, the first 10 times: a cube of sweep 0.1 created 0.06 into
+    # the floor (no gravity) is pushed out at overlap_speed 0.1, 1e-4 a step, so it stays
+    # beyond 0.05 for 100 steps.
+    def test_overlap_is_named_ten_times(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.54, 1, 0, 0, 0)], sweep=0.1)
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             nscd all nscd/polyhedra wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[4]
+thermo          1
+run             20
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        found = warning_lines(r.output, "starts with an overlap")
+        print("\n".join(found))
+        head = "fix nscd/polyhedra (id nscd): step "
+        self.assertEqual(found[0], head + "0 starts with an overlap of 0.06 = 0.6 r_p (beyond 0.5 r_p, r_p = 0.1): "
+                                          "the step h = 0.001 moves the fastest grain (speed 0) h v = 0 r_p; use a "
+                                          "smaller timestep")
+        self.assertEqual(found[1], head + "1 starts with an overlap of 0.0599 = 0.599 r_p (beyond 0.5 r_p, "
+                                          "r_p = 0.1): the step h = 0.001 moves the fastest grain (speed 0.1) "
+                                          "h v = 0.001 r_p; use a smaller timestep")
+        self.assertEqual(len(found), 10)
+        self.assertTrue(found[9].startswith(head + "9 starts with an overlap of 0.0591 = 0.591 r_p"), found[9])
+        self.assertTrue(found[9].endswith("; further large overlaps are not reported"), found[9])
+
+    def test_sharp_grains_take_a_tenth_of_their_bounding_radius(self):
+        # a sharp unit cube (bounding radius √3/2): the reference is 0.0866; created 0.05
+        # into the floor: 0.577 of it
+        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("fix nscd all nscd/polyhedra wall 0 0 0 0 0 1\ntimestep 1e-3\nrun 0\n"), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        self.assertEqual(warning_lines(r.output, "starts with an overlap"), [
+            "fix nscd/polyhedra (id nscd): step 0 starts with an overlap of 0.05 = 0.577 r_p (beyond 0.5 r_p, "
+            "r_p = 0.0866, for sharp grains a tenth of the bounding radius): the step h = 0.001 moves the fastest "
+            "grain (speed 0) h v = 0 r_p; use a smaller timestep"])
 
 
 class BadInput(DeckTestCase):

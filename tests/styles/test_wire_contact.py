@@ -3,10 +3,12 @@ restitution, static and dynamic friction, a pile that must not pass through itse
 the error messages."""
 
 import math
+import re
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, loaded_contact_measurement, main, read_dump, run, static_contact_measurement
+from liggghts_run import (DeckTestCase, contact_overlap_warning, contact_time_step_warning, loaded_contact_measurement,
+                          main, read_dump, run, static_contact_measurement, warning_lines)
 
 HEADER = """
 units           lj
@@ -336,6 +338,7 @@ run             20000
         self.assertLess(abs(err), 1e-10)                               # measured 1.5e-11
         self.assertAlmostEqual(-t["wall[3]"][-1] / weight, 1.0, delta=1e-12)  # measured 1.4e-13
         self.assertEqual(int(t["wall[1]"][-1]), 6)
+        self.assertNotIn("WARNING", r.output)  # neither time step nor overlap
 
 
 class Pile(DeckTestCase):
@@ -378,6 +381,138 @@ run             60000
         self.assertGreater(t["c[1]"][-1], 1000)      # it did pile up
         self.assertLess(t["zmax"][-1], 13.0)         # fallen from 13.7
         self.assertLess(worst, 0.5)
+        # no time-step warning, no wire–wire overlap warning; the floor carries the pile
+        # on its bottom beads, pressed 0.56 r_w deep: named once (one episode)
+        found = warning_lines(r.output)
+        print("\n".join(found))
+        self.assertEqual(len(found), 1)
+        self.assertRegex(found[0], r"^fix wire/wall \(id floor\): at step \d+ bead \d+ and the wall overlap by ")
+
+
+class Warnings(DeckTestCase):
+    # A run stays within the contact model or says why not (bench/stress_matrix.py):
+    # the time step against each contact style's stability limit, and overlaps beyond
+    # 0.5 r_w (common/contact_checks.h).
+    TWO_WIRES = HEADER + """
+create_wire     1 line -0.5 0 1 0.5 0 1
+create_wire     1 line 0 -0.5 2 0 0.5 2
+pair_style      wire/contact restitution 1
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic m_elo 0.01 m_rot 0.01
+fix             int all nve/gear scheme {scheme}
+fix             floor all wire/wall plane 0 0 0 0 0 1 {wall}
+thermo          5
+"""
+
+    def test_time_step_beyond_the_contact_limit(self):
+        # Table 1 wire, soft springs (m_elo = m_rot = 0.01: fix wire/elastic's own gear5
+        # limit is 0.0198), undamped contacts: wire–wire k = E/2 l π/4 on half a bead,
+        # wall k = E l π/4 on a bead: both gear5 limits 0.313/√(5000) = 0.00443. A second
+        # run at the same step is not warned again; a new timestep is.
+        r = run(self.TWO_WIRES.format(scheme="gear5", wall="restitution 1") + """
+timestep        0.006
+run             10
+run             10
+timestep        0.01
+run             10
+""")
+        self.assertRanCleanly(r)
+        m = bead_mass()
+        pair = lambda dt: contact_time_step_warning("pair wire/contact (id -)", dt, 50 * 0.2 * math.pi / 4, m / 2,
+                                            "the reduced mass of two of the lightest beads", 0.0, True)
+        wall = lambda dt: contact_time_step_warning("fix wire/wall (id floor)", dt, 100 * 0.2 * math.pi / 4, m,
+                                            "the lightest bead", 0.0, True)
+        found = warning_lines(r.output, "")
+        print("\n".join(found))
+        self.assertEqual(found, [pair(0.006), wall(0.006), pair(0.01), wall(0.01)])
+        self.assertIn("stable limit 0.00442649 of the gear5", found[0])
+
+    def test_time_step_with_verlet_and_damping(self):
+        # Verlet: 2/ω (√(1+ζ²) − ζ); the wall with restitution 0.5 (ζ = 0.2155, the factor
+        # 0.8075): 0.02284, the wire–wire contact with restitution 1: 0.0283
+        r = run(self.TWO_WIRES.format(scheme="verlet", wall="restitution 0.5") + """
+timestep        0.025
+run             10
+""")
+        self.assertRanCleanly(r)
+        zeta = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
+        expected = contact_time_step_warning("fix wire/wall (id floor)", 0.025, 100 * 0.2 * math.pi / 4, bead_mass(),
+                                     "the lightest bead", zeta, False)
+        found = warning_lines(r.output, "")
+        print("\n".join(found))
+        self.assertEqual(found, [expected])
+        self.assertIn("stable limit 0.0228394 of the verlet", expected)
+        # below both limits: no warning
+        quiet = run(self.TWO_WIRES.format(scheme="verlet", wall="restitution 0.5") + "timestep 0.02\nrun 10\n")
+        self.assertRanCleanly(quiet)
+        self.assertNotIn("WARNING", quiet.output)
+
+    def test_overlaps_at_setup(self):
+        # two wires crossing 0.08 apart (overlap 0.12 = 1.2 r_w at beads 3-4 and 9-10) and
+        # a floor 0.02 below the lower one's axis (overlap 0.08 = 0.8 r_w for each of its
+        # beads: the first, 7, is named)
+        r = run(HEADER + """
+create_wire     1 line -0.5 0 0.04 0.5 0 0.04
+create_wire     1 line 0 -0.5 -0.04 0 0.5 -0.04
+pair_style      wire/contact
+pair_coeff      * *
+neighbor        0.1 bin
+fix             el all wire/elastic
+fix             int all nve/gear
+fix             floor all wire/wall plane 0 0 -0.06 0 0 1
+timestep        1e-4
+run             0
+""")
+        self.assertRanCleanly(r)
+        found = warning_lines(r.output, "overlap by")
+        print("\n".join(found))
+        self.assertEqual(found, [
+            contact_overlap_warning("pair wire/contact (id -)", 0, "the segments of beads 3 and 9", 0.12, 0.1,
+                            "a stiffer material (E)"),
+            contact_overlap_warning("fix wire/wall (id floor)", 0, "bead 7 and the wall", 0.08, 0.1,
+                            "a stiffer material (E)")])
+
+    def test_overlap_of_a_fast_impact_on_a_soft_wall(self):
+        # a straight wire falls at 2.5 on a wall of E = 1 (k = 0.157, ω = 7.07): it sinks
+        # to 2.5/ω = 0.35 = 3.5 r_w and bounces back (restitution 1). Named: the first step
+        # beyond 0.5 r_w, then each time the overlap doubles the largest one named (about
+        # 0.5, 1, 2 r_w; the overlap grows by at most v dt = 0.025 r_w a step); not on the
+        # way out, nor at a second impact at the same speed (the same depth: nothing
+        # doubles).
+        r = run(HEADER + """
+create_wire     1 line -0.5 0 0.2 0.5 0 0.2
+velocity        all set 0 0 -2.5
+fix             el all wire/elastic m_elo 0.01 m_rot 0.01
+fix             int all nve/gear
+fix             floor all wire/wall plane 0 0 0 0 0 1 E 1 restitution 1
+timestep        1e-3
+thermo_style    custom step f_floor[2]
+thermo_modify   format float %.15g
+thermo          1
+run             600
+velocity        all set 0 0 -2.5
+run             600
+""")
+        self.assertRanCleanly(r)
+        found = warning_lines(r.output, "overlap by")
+        print("\n".join(found))
+        deepest = np.max(r.thermo()["floor[2]"]) / 0.1
+        self.assertAlmostEqual(deepest, 2.5 / math.sqrt(0.05 * math.pi / bead_mass()) / 0.1, delta=0.05)
+        self.assertEqual(len(found), 3)
+        ratios = []
+        for line in found:
+            m = re.fullmatch(r"fix wire/wall \(id floor\): at step (\d+) bead 1 and the wall overlap by (\S+) "
+                             r"\((\S+) r_w, beyond 0\.5 r_w: the soft contact assumes small overlaps\); "
+                             r"use a smaller timestep or a stiffer material \(E\)", line)
+            self.assertIsNotNone(m, line)
+            ratios.append(float(m.group(3)))
+        self.assertGreater(ratios[0], 0.5)
+        self.assertLess(ratios[0], 0.5 + 0.026)
+        for a, b in zip(ratios, ratios[1:]):
+            self.assertGreater(b, 2 * a)
+            self.assertLess(b, 2 * a + 0.026)
+        self.assertLess(ratios[-1], deepest)
 
 
 class BadInput(DeckTestCase):

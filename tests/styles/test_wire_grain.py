@@ -8,8 +8,8 @@ import math
 
 import numpy as np
 
-from liggghts_run import (DeckTestCase, full_precision, loaded_contact_measurement, main, read_dump, run,
-                          static_contact_measurement)
+from liggghts_run import (DeckTestCase, contact_overlap_warning, contact_time_step_warning, full_precision,
+                          loaded_contact_measurement, main, read_dump, run, static_contact_measurement, warning_lines)
 
 G = 1.0
 HEADER = """
@@ -108,6 +108,7 @@ run             6000
         self.assertAlmostEqual(t["wg[6]"][-1] / -wire_weight, 1.0, delta=1e-8)
         self.assertAlmostEqual(d["f_wg[3]"][~beads][0] / -wire_weight, 1.0, delta=1e-8)
         self.assertAlmostEqual(-t["nscd[9]"][-1] / ((m_grain + m_beads.sum()) * G), 1.0, delta=1e-8)
+        self.assertNotIn("WARNING", r.output)  # a Table 1 wire at rest: neither time step nor overlap
 
     def test_straight_wire_across_two_grains_each_carries_half(self):
         # a wire lying across two cubes, symmetric about x = 0 but not about y = 0: by
@@ -390,6 +391,48 @@ run             267
         a, b = read_dump(made.path("dump.straight")), read_dump(made.path("dump.s"))
         for column in ("x", "y", "z", "vx", "vy", "vz"):
             np.testing.assert_allclose(b[column], a[column], rtol=0, atol=1e-13, err_msg=column)
+
+
+class Warnings(DeckTestCase):
+    # The time step against the contact spring's stability limit, and overlaps beyond
+    # 0.5 r_w (common/contact_checks.h), on one segment (beads 2 and 3) above or in a cube.
+    BODY = """
+fix             elastic wire wire/elastic m_elo 0.01 m_rot 0.01
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains
+timestep        {dt}
+run             {steps}
+"""
+
+    def test_time_step_beyond_the_contact_limit(self):
+        # Table 1: 1/E_wp = 1/100 + 0.91/1000, k = E_wp l π/4 = 14.4 on one bead (the grain
+        # held), restitution 0.5 (ζ = 0.2155): gear5 limit 0.313 · 0.8075/ω = 0.00373
+        made = scene([resting_cube(0, 0)], ["line -0.1 0.2 3 0.1 0.2 3"])
+        r = run(deck(self.BODY.format(dt=0.004, steps=5)), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        zeta = -math.log(0.5) / math.sqrt(math.pi ** 2 + math.log(0.5) ** 2)
+        k = 1.0 / (1.0 / 100 + 0.91 / 1000) * 0.2 * math.pi / 4
+        expected = contact_time_step_warning("fix wire/grain (id wg)", 0.004, k, 0.5 * math.pi * 0.01 * 0.2,
+                                             "the lightest bead, the grain held", zeta, True)
+        found = warning_lines(r.output)
+        print("\n".join(found))
+        self.assertEqual(found, [expected])
+        self.assertIn("stable limit 0.00373", expected)
+        quiet = run(deck(self.BODY.format(dt=0.0035, steps=5)), workdir=made.workdir)
+        self.assertRanCleanly(quiet)
+        self.assertNotIn("WARNING", quiet.output)
+
+    def test_overlap_at_setup(self):
+        # the segment's axis 0.14 above the face of a cube (edge 2, sweep 0.1, top face
+        # at 2.2 with its sweep): overlap 0.06 = 0.6 r_w
+        made = scene([resting_cube(0, 0)], ["line -0.1 0.2 2.24 0.1 0.2 2.24"])
+        r = run(deck(self.BODY.format(dt=1e-4, steps=0)), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        found = warning_lines(r.output)
+        print("\n".join(found))
+        self.assertEqual(found, [contact_overlap_warning("fix wire/grain (id wg)", 0, "the segment of bead 2 and grain 1",
+                                                         0.06, 0.1, "stiffer materials (E_w, E_p)")])
 
 
 class Errors(DeckTestCase):

@@ -2,6 +2,7 @@
 regression tests. Paths come from the environment that ctest sets:
 LIGGGHTS (the executable), MPIEXEC (mpirun), WIREGRAIN_SOURCE (repository root)."""
 
+import math
 import os
 import re
 import subprocess
@@ -76,6 +77,32 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
     proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           stdin=subprocess.DEVNULL, timeout=TIMEOUT, env=env)
     return Run(proc.returncode, proc.stdout.decode(errors="replace"), workdir)
+
+
+def warning_lines(output, text=""):
+    """The WARNING lines containing `text`, without 'WARNING: ' and the source location."""
+    return [re.sub(r" \([^()]*:\d+\)$", "", line[len("WARNING: "):]) for line in output.splitlines()
+            if line.startswith("WARNING: ") and text in line]
+
+
+def contact_time_step_warning(style, dt, k, m, mass_name, zeta, gear5):
+    """The time-step warning of a wire contact style (common/contact_checks.h), its numbers
+    computed here: a spring k on a mass m with damping ratio ζ, ω = √(k/m); velocity Verlet dt_crit = 2/ω (√(1+ζ²) − ζ),
+    gear5 0.313/ω (√(1+ζ²) − ζ), and at most 0.075/(ζ ω)."""
+    omega = math.sqrt(k / m)
+    damped = math.sqrt(1 + zeta * zeta) - zeta
+    critical = 2 / omega * damped
+    limit = min(0.313 / omega * damped, 0.075 / (zeta * omega) if zeta > 0 else math.inf) if gear5 else critical
+    return (f"{style}: timestep {dt:.6g} exceeds the stable limit {limit:.6g} of the "
+            f"{'gear5' if gear5 else 'verlet'} integrator for its contact springs (k {k:.6g} on mass {m:.6g}, "
+            f"{mass_name}, damping ratio {zeta:.3g}: contact critical time step {critical:.6g}); "
+            f"use a smaller timestep")
+
+
+def contact_overlap_warning(style, step, which, overlap, r_w, remedy):
+    """The large-overlap warning of a wire contact style (common/contact_checks.h)."""
+    return (f"{style}: at step {step} {which} overlap by {overlap:.3g} ({overlap / r_w:.4g} r_w, beyond 0.5 r_w: "
+            f"the soft contact assumes small overlaps); use a smaller timestep or {remedy}")
 
 
 def read_dump(path, columns=None):
