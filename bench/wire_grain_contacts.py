@@ -6,6 +6,7 @@ of one NSCD step with and without the coupling. All cases start from the same st
 after the other in this invocation; prints a table and the ratios.
 
     bench/wire_grain_contacts.py [--liggghts build/liggghts] [--steps 2000] [--drop 2000] [--np 1]
+        [--skins 0 0.02 0.05 0.1 0.2]
 
 The scene (atom_style hybrid polyhedron wire, Table 1 defaults everywhere):
   1. pile: 900 grains from two paper-style particle layers (create_grains layer, 450 each,
@@ -38,6 +39,8 @@ The scene (atom_style hybrid polyhedron wire, Table 1 defaults everywhere):
      of gathering + detection and of the solve, 5 walls) averaged over the run; b and d move
      the grains identically (in b the wire does not act on them), so their difference is
      noise. Contacts and evaluations are sampled at the NSCD steps (every 10th sub-step).
+  4. case a again for each `--skins` value (fix wire/grain skin: the pair cache, 0 = a full
+     search every sub-step): fix wire/grain's time per sub-step, evaluations, ratio to skin 0.
 
 The machine is shared (another job may run tests meanwhile): expect +-30 % between
 invocations; the per-style timers of one run are more reliable than loop-time differences.
@@ -319,6 +322,8 @@ def main():
     parser.add_argument("--drop", type=int, default=2000, help="sub-steps of the wire's fall before the timing")
     parser.add_argument("--seed", type=int, default=11)
     parser.add_argument("--np", type=int, default=1)
+    parser.add_argument("--skins", type=float, nargs="*", default=[0.0, 0.02, 0.05, 0.1, 0.2],
+                        help="fix wire/grain skin of the extra coupled cases (the pair cache; 0: search every sub-step)")
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     work = tempfile.mkdtemp(prefix="wiregrain-bench-")
@@ -346,6 +351,18 @@ def main():
         rows = thermo_rows(out, len(columns.split()))[1:]  # the setup row is not a timed step
         results[key] = dict(label=label, loop=seconds, steps=steps, t=timers(out),
                             stats=dict(zip(columns.split(), rows.mean(axis=0))))
+
+    # the coupled case again for each skin (keyword skin of fix wire/grain: the pair cache)
+    skin_results = []
+    columns = NSCD_STATS + " f_wg[1] f_wg[7]"
+    for skin in args.skins:
+        out = liggghts(args, work, f"in.skin{skin}", MEASURE.format(
+            gravity_group="all", pair=PAIR, wire=WIRE_FIXES + f"fix             wg wire wire/grain grains skin {skin}\n",
+            stats="thermo_style    custom step " + columns, steps=args.steps))
+        seconds, steps, _ = loop_time(out)
+        rows = thermo_rows(out, len(columns.split()))[1:]
+        skin_results.append((skin, seconds / steps * 1e3, timers(out)["fix wg"] / steps * 1e3,
+                             dict(zip(columns.split(), rows.mean(axis=0)))))
 
     a, b, c, d = (results[k] for k in "abcd")
     steps = a["steps"]
@@ -395,6 +412,14 @@ def main():
     print(f"one NSCD step (fix nscd/polyhedra): coupled {nscd['a']:.2f} ms, wire not coupled (b) {nscd['b']:.2f} ms, "
           f"grains alone {nscd['d']:.2f} ms; ratio coupled / alone {nscd['a'] / nscd['d']:.2f} "
           f"(b / d = {nscd['b'] / nscd['d']:.2f} is noise: the same grain motion)")
+    if skin_results:
+        print()
+        print("the pair cache (fix wire/grain skin), the coupled case a again per skin, one after the other:")
+        print(f"{'skin':>6}{'loop ms':>9}{'wire/grain ms':>15}{'evals':>8}{'contacts':>10}{'wire/grain / skin 0':>21}")
+        base = skin_results[0][2] if skin_results[0][0] == 0 else None
+        for skin, loop_ms, wg_ms, st in skin_results:
+            ratio = f"{wg_ms / base:21.2f}" if base else f"{'':>21}"
+            print(f"{skin:6g}{loop_ms:9.3f}{wg_ms:15.3f}{st['f_wg[7]']:8.0f}{st['f_wg[1]']:10.0f}{ratio}")
     coupled_step = nscd["a"] + 10 * wg
     whole_a, whole_d = a["loop"] / nscd_steps * 1e3, d["loop"] / nscd_steps * 1e3
     print(f"the grains' step with the coupling (NSCD + 10 sub-steps of fix wire/grain): {coupled_step:.2f} ms, "

@@ -28,6 +28,7 @@
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_list.h"
 #include "core/contact/held_grains.h"
+#include "core/contact/wire_grain_pairs.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
@@ -39,12 +40,14 @@ using wiregrain_lmp::vec3;
 namespace {
 // per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
 constexpr int kGrainRecord = 17;
+// keyword skin's default (see the README's measurements)
+constexpr double kDefaultSkin = 0.05;
 
 }  // namespace
 
 struct FixWireGrain::CoreState {
   std::unique_ptr<wiregrain::HeldGrains> held;
-  std::vector<int> held_type;  // atom type of each held grain
+  std::unique_ptr<wiregrain::WireGrainPairCache> pairs;  // keyword skin > 0
   wiregrain::GrainLoadSums sums;
   wiregrain::ContactList contacts;
 };
@@ -62,6 +65,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       held_version_(-1),
       segment_reach_(0.0),
       max_stretch_(0.5),
+      skin_(kDefaultSkin),
       stretch_warned_(false),
       summed_steps_(0),
       bead_force_(NULL),
@@ -89,11 +93,16 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       max_stretch_ = args.value_positive(key);
       continue;
     }
+    if (key == "skin") {
+      skin_ = args.value_nonnegative(key);
+      continue;
+    }
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_w", "nu_w", wire_given_)) continue;
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_p", "nu_p", grain_given_)) continue;
     if (!wiregrain_lmp::parse_friction_keyword(args, key, friction_)) args.unknown_keyword(key);
   }
   wiregrain_lmp::check_friction(args, friction_);
+  if (skin_ > 0.0) core_->pairs.reset(new wiregrain::WireGrainPairCache(skin_));
 
   restart_global = 1;
   vector_flag = 1;
@@ -262,13 +271,12 @@ void FixWireGrain::hold_grains() {
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
   std::vector<wiregrain::HeldGrain> grains(all.size() / kGrainRecord);
-  core_->held_type.assign(grains.size(), 0);
   for (size_t k = 0; k < grains.size(); k++) {
     const double *r = &all[k * kGrainRecord];
     wiregrain::HeldGrain &g = grains[k];
     g.tag = (long)r[0];
     g.shape = (int)r[1];
-    core_->held_type[k] = (int)r[2];
+    g.material = (int)r[2];
     g.position = vec3(r + 3);
     g.orientation = Eigen::Quaterniond(r[6], r[7], r[8], r[9]);
     g.motion.velocity = vec3(r + 10);
@@ -280,7 +288,8 @@ void FixWireGrain::hold_grains() {
   box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   try {
-    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, held_reach()));
+    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, held_reach() + skin_));
+    if (core_->pairs) core_->pairs->hold(*core_->held);
   } catch (const std::exception &e) {  // the same on every rank
     fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
   }
@@ -388,25 +397,31 @@ void FixWireGrain::evaluate(bool setup) {
       fail_one("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
                ", which is neither owned nor a ghost here");
     const wiregrain::WireSegmentState segment = segment_of(i, j);
+    // the pair's contact; returns its gap (for the pair cache)
+    const auto evaluate_pair = [&](int k, const Eigen::Vector3d &shift) {
+      evaluations++;
+      const long grain_tag = held.grain(k).tag;
+      const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
+          modulus_[type[i] * (ntypes + 1) + held.grain(k).material], wire_->wire_rest[i], segment.radius, friction_);
+      wiregrain::TangentialHistory h;
+      history_->lookup(i, (int)grain_tag, h);
+      wiregrain::TangentialHistory advanced = h;
+      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced);
+      if (!c.touching) return -c.overlap;  // a pair apart forgets its spring
+      history_->store(i, (int)grain_tag, setup ? h : advanced);
+      for (int e = 0; e < 3; e++) {
+        bead_force_[i][e] += c.force_bead0[e];
+        bead_force_[j][e] += c.force_bead1[e];
+      }
+      loads.add(grain_tag, c.force_grain, c.torque_grain);
+      record_contact(c, i, grain_tag);
+      return -c.overlap;
+    };
     try {
-      held.for_each_candidate(segment.x0, segment.x1, segment.radius, [&](int k, const Eigen::Vector3d &shift) {
-        evaluations++;
-        const long grain_tag = held.grain(k).tag;
-        const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
-            modulus_[type[i] * (ntypes + 1) + core_->held_type[k]], wire_->wire_rest[i], segment.radius, friction_);
-        wiregrain::TangentialHistory h;
-        history_->lookup(i, (int)grain_tag, h);
-        wiregrain::TangentialHistory advanced = h;
-        const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced);
-        if (!c.touching) return;  // a pair apart forgets its spring
-        history_->store(i, (int)grain_tag, setup ? h : advanced);
-        for (int e = 0; e < 3; e++) {
-          bead_force_[i][e] += c.force_bead0[e];
-          bead_force_[j][e] += c.force_bead1[e];
-        }
-        loads.add(grain_tag, c.force_grain, c.torque_grain);
-        record_contact(c, i, grain_tag);
-      });
+      if (core_->pairs)
+        core_->pairs->for_each_pair(tag[i], held, segment.x0, segment.x1, segment.radius, evaluate_pair);
+      else
+        held.for_each_candidate(segment.x0, segment.x1, segment.radius, 0.0, evaluate_pair);
     } catch (const std::exception &e) {  // InvalidArgument, NumericalFailure of the geometry
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
                " (a segment that grew by a fifth of its reach within one NSCD step?)");

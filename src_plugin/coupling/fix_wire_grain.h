@@ -110,6 +110,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   long held_version_;            // the NSCD fix's pose_version() of the held grains
   double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w
   double max_stretch_;           // keyword max_stretch: the strain the contact search allows
+  double skin_;                  // keyword skin: pairs kept while nothing moved more (0: search every step)
   bool stretch_warned_;          // the warning of a segment beyond max_stretch was given
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains

@@ -69,6 +69,30 @@ class Column(DeckTestCase):
         self.assertEqual((obs["U_s/L"], obs["z_wpc"]), (0.0, 0.0))
         self.assertGreater(obs["phi_p"], 0.0)
 
+    def test_early_end_of_both_phases(self):
+        # ke_stop far above any kinetic energy: the relaxation ends after t_quiet (two
+        # checks of t_check = 0.1), at t_dep + 0.2 = nlayers (t_layer + t_wire) + 0.2 = 2.2;
+        # the wall phase after max(t_quiet, free_dist a_max / v_wall) = max(0.2, 0.1)
+        early = run(COLUMN, variables=dict(TINY, ke_stop=1e9, t_quiet=0.2, t_check=0.1, free_dist=0.002))
+        self.assertRanCleanly(early)
+        relaxed = re.search(r"^in\.column relaxed at t = (\S+) ", early.output, re.M)
+        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
+                          early.output, re.M)
+        self.assertAlmostEqual(float(relaxed.group(1)), 2.0 + 0.2, delta=1e-12)
+        self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
+        self.assertAlmostEqual(float(final.group(1)), 2.2 + 0.2, delta=1e-12)
+        # ke_stop far below: the phases run in chunks of t_check to t_relax and t_end,
+        # the observables those of the straight run (one run per phase); the chunks' run
+        # boundaries change the wire's energy by round-off only
+        never = run(COLUMN, variables=dict(TINY, ke_stop=1e-30, t_quiet=0.2, t_check=0.1))
+        self.assertRanCleanly(never)
+        self.assertIn("in.column relaxed at t = 2.5 ", never.output)
+        a, b = final_observables(self.straight), final_observables(never)
+        print(f"\nstraight {a}\nin chunks {b}")
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-12)
+
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
@@ -82,6 +106,13 @@ class Column(DeckTestCase):
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (4 R = 4)"),
                                    ({"E_w": -5}, "pair wire/contact (id -): youngsModulus of atom type 2 must be "
                                                  "a finite number > 0, got -5"),
+                                   ({"dt_NSCD": 2.5e-4}, "in.column: dt_NSCD (0.00025) must be a multiple of dt_SP (1e-4)"),
+                                   ({"dt_NSCD": 5e-5}, "in.column: dt_NSCD (5e-05) must be a multiple of dt_SP (1e-4)"),
+                                   ({"dt_SP": 0}, "in.column: dt_SP must be > 0, got 0"),
+                                   ({"ke_stop": -1}, "in.column: ke_stop must be >= 0 (0: off), got -1"),
+                                   ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
+                                    "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
+                                   ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)

@@ -393,6 +393,38 @@ run             267
             np.testing.assert_allclose(b[column], a[column], rtol=0, atol=1e-13, err_msg=column)
 
 
+class PairReuse(DeckTestCase):
+    def test_the_pair_cache_gives_the_forces_of_a_search_every_step(self):
+        # keyword skin: the (segment, grain) pairs kept while nothing moved more than the
+        # skin; the pairs it evaluates include every touching one, in the same order, so
+        # the trajectory is that of skin 0 (a full search every sub-step) to the last bit.
+        # The cubes slide and tumble under the falling wire, contacts open and close.
+        made = three_cube_scene()
+        states, evaluations = {}, {}
+        for skin in (0, 0.05, 0.3):
+            r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact=f"skin {skin}") + f"""
+set             group grains vx 0.4
+set             group grains vy -0.2
+variable        evaluations equal f_wg[7]
+fix             count all ave/time 1 1 1 v_evaluations ave running
+thermo_style    custom step f_wg[1] f_count
+thermo          100
+dump            d all custom 1200 dump.s id x y z vx vy vz
+run             1200
+"""), "d"), workdir=made.workdir)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            self.assertGreater(t["wg[1]"].max(), 3)
+            states[skin] = read_dump(r.path("dump.s"))
+            evaluations[skin] = t["count"][-1]
+        print(f"\nsegment–grain evaluations per step: skin 0 {evaluations[0]:.2f}, 0.05 {evaluations[0.05]:.2f}, "
+              f"0.3 {evaluations[0.3]:.2f}")
+        for skin in (0.05, 0.3):
+            for column in ("x", "y", "z", "vx", "vy", "vz"):
+                np.testing.assert_array_equal(states[skin][column], states[0][column], err_msg=f"skin {skin} {column}")
+        self.assertLess(evaluations[0.05], evaluations[0])
+
+
 class Warnings(DeckTestCase):
     # The time step against the contact spring's stability limit, and overlaps beyond
     # 0.5 r_w (common/contact_checks.h), on one segment (beads 2 and 3) above or in a cube.
@@ -458,6 +490,8 @@ class Errors(DeckTestCase):
                    "fix wire/grain (id wg): mu_d (0.400000) must not exceed mu_s (0.300000)")
         self.check(nscd + "fix wg wire wire/grain grains max_stretch 0",
                    "fix wire/grain (id wg): value of 'max_stretch' must be > 0, got 0")
+        self.check(nscd + "fix wg wire wire/grain grains skin -0.1",
+                   "fix wire/grain (id wg): value of 'skin' must be >= 0, got -0.1")
         self.check(nscd + "fix wg wire wire/grain grains stiffness 3",
                    "fix wire/grain (id wg): unknown keyword 'stiffness'")
         self.check(nscd + "fix wg wire wire/grain grains mu_d",

@@ -12,6 +12,7 @@ namespace wiregrain {
 HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
                        double segment_reach)
     : grains_(std::move(grains)), segment_reach_(segment_reach), grid_(BroadPhaseGrid::unbounded(1.0)) {
+  std::stable_sort(grains_.begin(), grains_.end(), [](const HeldGrain& a, const HeldGrain& b) { return a.tag < b.tag; });
   if (!(segment_reach > 0.0) || !std::isfinite(segment_reach))
     throw InvalidArgument("segment_reach", "segment_reach must be finite and > 0, got " + format_number(segment_reach));
   double largest = 0.0;
@@ -45,6 +46,13 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
 int HeldGrains::index_of(long tag) const {
   const auto it = index_of_tag_.find(tag);
   return it == index_of_tag_.end() ? -1 : it->second;
+}
+
+bool HeldGrains::candidate_order(const Candidate& a, const Candidate& b) {
+  if (a.k != b.k) return a.k < b.k;
+  for (int d = 0; d < 3; ++d)
+    if (a.shift[d] != b.shift[d]) return a.shift[d] < b.shift[d];
+  return false;
 }
 
 void HeldGrains::check_reach(double reach) const {

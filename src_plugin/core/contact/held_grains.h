@@ -9,8 +9,13 @@
 // (given at construction), so every such grain is among the 27 cells around m
 // (broad_phase.h); a segment longer than allowed is an error, never a missed contact.
 // Periodic dimensions: the grain's image nearest to m, as LIGGGHTS' minimum image.
+// The grains are kept in the order of their tags and the candidates of a segment are
+// visited in that order, so that forces summed over them do not depend on how the ranks
+// gathered the grains or on the grid's cells (the pair cache, wire_grain_pairs.h, visits
+// the same pairs in the same order).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <unordered_map>
 #include <vector>
@@ -27,7 +32,8 @@ namespace wiregrain {
 
 struct HeldGrain {
   long tag = 0;
-  int shape = 0;  // index in the shape library
+  int shape = 0;     // index in the shape library
+  int material = 0;  // the caller's material index (the atom type), carried along
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   GrainMotion motion;
@@ -51,23 +57,30 @@ class HeldGrains {
   int size() const { return static_cast<int>(grains_.size()); }
   const HeldGrain& grain(int k) const { return grains_[k]; }
   const PosedShape& posed(int k) const { return posed_[k]; }
+  double bounding_radius(int k) const { return bounding_radius_[k]; }  // core + sweep, about the centre of mass
   // index of the grain with this tag, −1 if none
   int index_of(long tag) const;
   double segment_reach() const { return segment_reach_; }
 
   // Calls visit(k, shift) for every grain k whose bounding sphere, moved by the periodic
-  // image shift, meets the segment's bounding sphere (centre (x0+x1)/2, radius ℓ/2 + r_w).
-  // Throws InvalidArgument("segment", ...) when ℓ/2 + r_w exceeds segment_reach().
+  // image shift and grown by `margin` ≥ 0, meets the segment's bounding sphere (centre
+  // (x0+x1)/2, radius ℓ/2 + r_w): every grain within `margin` of the segment. In the order
+  // of k (the tags), then of the shift. Throws InvalidArgument("segment", ...) when
+  // ℓ/2 + r_w + margin exceeds segment_reach().
   template <class Visit>
-  void for_each_candidate(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double wire_radius,
+  void for_each_candidate(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double wire_radius, double margin,
                           Visit visit) const {
     const Eigen::Vector3d middle = 0.5 * (x0 + x1);
-    const double reach = 0.5 * (x1 - x0).norm() + wire_radius;
+    const double reach = 0.5 * (x1 - x0).norm() + wire_radius + margin;
     check_reach(reach);
+    std::vector<Candidate>& found = candidates_;
+    found.clear();
     grid_.for_each_near(middle, [&](int k, const Eigen::Vector3d& shift) {
       const double limit = bounding_radius_[k] + reach;
-      if ((grains_[k].position + shift - middle).squaredNorm() < limit * limit) visit(k, shift);
+      if ((grains_[k].position + shift - middle).squaredNorm() < limit * limit) found.push_back({k, shift});
     });
+    if (found.size() > 1) std::sort(found.begin(), found.end(), candidate_order);
+    for (const Candidate& c : found) visit(c.k, c.shift);
   }
 
   // The contact of segment `segment` with grain k seen at its image position + shift:
@@ -84,6 +97,12 @@ class HeldGrains {
   std::unordered_map<long, int> index_of_tag_;
   double segment_reach_;
   BroadPhaseGrid grid_;
+  struct Candidate {
+    int k;
+    Eigen::Vector3d shift;
+  };
+  mutable std::vector<Candidate> candidates_;  // scratch of for_each_candidate
+  static bool candidate_order(const Candidate& a, const Candidate& b);
   void check_reach(double reach) const;
 };
 

@@ -1,0 +1,51 @@
+#include "core/contact/wire_grain_pairs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+
+namespace wiregrain {
+
+WireGrainPairCache::WireGrainPairCache(double skin) : skin_(skin) {
+  if (!(skin > 0.0) || !std::isfinite(skin))
+    throw InvalidArgument("skin", "skin must be finite and > 0, got " + format_number(skin));
+}
+
+void WireGrainPairCache::hold(const HeldGrains& held) {
+  if (reference_.size() != static_cast<std::size_t>(held.size())) return reset(held);
+  double bound = 0.0;
+  for (int k = 0; k < held.size(); ++k) {
+    const HeldGrain& g = held.grain(k);
+    const auto it = reference_.find(g.tag);
+    if (it == reference_.end() || it->second.shape != g.shape) return reset(held);
+    const Pose& ref = it->second;
+    // 2 R |vec(q_ref⁻¹ q)| = 2 R sin(θ/2) (either sign of the quaternion)
+    const double turn = (ref.orientation.conjugate() * g.orientation.normalized()).vec().norm();
+    bound = std::max(bound, (g.position - ref.position).norm() + 2.0 * ref.bounding_radius * turn);
+  }
+  grain_bound_ = bound;
+  if (!(bound < 0.5 * skin_)) reset(held);  // also a non-finite pose
+}
+
+void WireGrainPairCache::reset(const HeldGrains& held) {
+  ++resets_;
+  ++epoch_;
+  grain_bound_ = 0.0;
+  reference_.clear();
+  entries_.clear();
+  for (int k = 0; k < held.size(); ++k) {
+    const HeldGrain& g = held.grain(k);
+    reference_[g.tag] = Pose{g.shape, held.bounding_radius(k), g.position, g.orientation.normalized()};
+  }
+}
+
+bool WireGrainPairCache::entry_valid(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                                     double radius) const {
+  if (e.epoch != epoch_ || e.radius != radius) return false;
+  const double moved = std::max((x0 - e.x0).norm(), (x1 - e.x1).norm());
+  return moved + grain_bound_ + e.grain_bound < skin_;  // false for NaN
+}
+
+}  // namespace wiregrain

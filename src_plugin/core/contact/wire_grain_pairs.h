@@ -1,0 +1,105 @@
+// Reuse of the wire–grain pairs between sub-steps and NSCD steps (issue 14, "contact
+// detection reuse"), as LIGGGHTS reuses its neighbour lists while nothing moved more
+// than a skin, but exact: the pairs evaluated are a superset of the touching ones, so
+// the forces are those of a full search, to the last bit (the pairs are visited in the
+// same order, HeldGrains' tag order).
+//
+// A segment's entry is built by the broad phase with the candidates grown by the skin s:
+// every grain whose exact gap to the segment (between the surfaces, sweeps included) is
+// below s is kept, in tag order. It stays valid while no excluded pair can have closed
+// its gap:
+//   d_seg + D_grains(now) + D_grains(build) < s,
+// d_seg = max(|x0 − x0_build|, |x1 − x1_build|) (every point of the segment is a convex
+// combination of its ends, so it moved at most that far), D_grains(t) the bound on how
+// far any surface point of any grain has moved from the reference poses by time t,
+//   D = max_g |c_g − c_g,ref| + 2 R_g |vec(q_g,ref⁻¹ q_g)|
+// (a body point at distance ≤ R_g from the centre of mass moves by the translation plus
+// at most 2 R_g sin(θ/2) for a rotation by θ; R_g the bounding radius); by the triangle
+// inequality the grains moved at most D(now) + D(build) since the entry was built. The
+// reference poses are reset (and every entry dropped) when D reaches s/2, when a grain
+// appears, disappears or changes its shape. An entry whose segment changed its radius is
+// rebuilt. Grains move only when fix nscd/polyhedra solves, so D is updated once per held
+// grain set (hold()); segments are checked at every visit.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "core/contact/held_grains.h"
+
+namespace wiregrain {
+
+class WireGrainPairCache {
+ public:
+  // skin > 0 and finite, else InvalidArgument("skin", ...)
+  explicit WireGrainPairCache(double skin);
+
+  double skin() const { return skin_; }
+  // The grains as held now (after every new HeldGrains): updates D, resets the reference
+  // when the grains changed or D ≥ skin / 2.
+  void hold(const HeldGrains& held);
+  // D of the last hold()
+  double grain_motion_bound() const { return grain_bound_; }
+
+  // Calls evaluate(k, shift) for every grain of `held` (the set of the last hold()) that
+  // may touch the segment [x0, x1] of radius r_w, in the order of HeldGrains'
+  // for_each_candidate; evaluate returns the pair's gap (≤ 0 touching), used when the
+  // segment's entry is being built. key: the segment's identity (its first bead's tag).
+  // Throws what for_each_candidate throws when the entry is rebuilt.
+  template <class Evaluate>
+  void for_each_pair(long key, const HeldGrains& held, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                     double wire_radius, Evaluate evaluate) {
+    Entry& entry = entries_[key];
+    if (entry_valid(entry, x0, x1, wire_radius)) {
+      for (const Pair& p : entry.pairs) evaluate(held.index_of(p.tag), p.shift);
+      return;
+    }
+    ++rebuilds_;
+    entry.epoch = epoch_;
+    entry.grain_bound = grain_bound_;
+    entry.x0 = x0;
+    entry.x1 = x1;
+    entry.radius = wire_radius;
+    entry.pairs.clear();
+    held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
+      if (evaluate(k, shift) < skin_) entry.pairs.push_back({held.grain(k).tag, shift});
+    });
+  }
+
+  // segment entries built since construction, reference resets
+  long rebuilds() const { return rebuilds_; }
+  long resets() const { return resets_; }
+
+ private:
+  struct Pair {
+    long tag;
+    Eigen::Vector3d shift;
+  };
+  struct Entry {
+    long epoch = -1;           // the reference it was built against
+    double grain_bound = 0.0;  // D at its build
+    Eigen::Vector3d x0, x1;
+    double radius = 0.0;
+    std::vector<Pair> pairs;
+  };
+  struct Pose {
+    int shape;
+    double bounding_radius;
+    Eigen::Vector3d position;
+    Eigen::Quaterniond orientation;
+  };
+  double skin_;
+  long epoch_ = 0;
+  double grain_bound_ = 0.0;
+  std::unordered_map<long, Pose> reference_;  // grain tag → pose at the last reset
+  std::unordered_map<long, Entry> entries_;   // segment key → entry
+  long rebuilds_ = 0, resets_ = 0;
+
+  bool entry_valid(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double radius) const;
+  void reset(const HeldGrains& held);
+};
+
+}  // namespace wiregrain
