@@ -543,17 +543,22 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
                               double sin_tol, double tight) {
   const int v = P.support_vertex(n);
   const double h = n.dot(P.vertices()[v]);
-  std::vector<int> support_set;
+  // S: every candidate contains v, so only the faces and edges at v are looked at (in
+  // ascending index, the tie order of a scan over all of them)
+  thread_local std::vector<int> support_set;
+  support_set.clear();
   for (int i = 0; i < static_cast<int>(P.vertices().size()); ++i)
     if (n.dot(P.vertices()[i]) >= h - tight) support_set.push_back(i);
 
-  const auto& faces = P.shape().faces();
-  const auto best_face_containing = [&](const std::vector<int>& required, double& best_cos) {
+  const ConvexShape& shape = P.shape();
+  const auto& faces = shape.faces();
+  const auto best_face_at_v = [&](bool whole_support_set, double& best_cos) {
     int best = -1;
     best_cos = -2.0;
-    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+    for (int f : shape.faces_at_vertex(v)) {
       bool contains = true;
-      for (int i : required) contains = contains && face_has_vertex(faces[f], i);
+      if (whole_support_set)
+        for (int i : support_set) contains = contains && face_has_vertex(faces[f], i);
       if (!contains) continue;
       const double c = P.face_normals()[f].dot(n);
       if (c > best_cos) {
@@ -564,20 +569,19 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
     return best;
   };
   double best_cos = -2.0;
-  int face = best_face_containing(support_set, best_cos);
-  if (face < 0) face = best_face_containing({v}, best_cos);  // S spans no face: rounding
+  int face = best_face_at_v(true, best_cos);
+  if (face < 0) face = best_face_at_v(false, best_cos);  // S spans no face: rounding
   if (face >= 0 && best_cos >= cos_tol) return {FeatureKind::face, face};
 
   if (support_set.size() <= 2) {
-    const auto& edges = P.shape().edges();
+    const auto& edges = shape.edges();
     int best_edge = -1;
     double best_sin = kInf;
-    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      const bool at_v = edges[e][0] == v || edges[e][1] == v;
+    for (int e : shape.edges_at_vertex(v)) {
       const bool is_s = support_set.size() == 2 &&
                         std::min(support_set[0], support_set[1]) == edges[e][0] &&
                         std::max(support_set[0], support_set[1]) == edges[e][1];
-      if (support_set.size() == 1 ? !at_v : !is_s) continue;
+      if (support_set.size() == 2 && !is_s) continue;
       const Vector3d dir = P.vertices()[edges[e][1]] - P.vertices()[edges[e][0]];
       const double s = std::abs(dir.dot(n)) / dir.norm();
       if (s < best_sin) {

@@ -120,6 +120,7 @@ ConvexShape ConvexShape::from_points(const std::vector<Vector3d>& points, double
     ConvexShape shape;
     shape.vertices_ = points;
     shape.sweep_radius_ = sweep_radius;
+    shape.index_adjacency();
     return shape;
   }
   if (points.size() < 4)
@@ -428,7 +429,17 @@ ConvexShape ConvexShape::from_hull_triangles(const std::vector<Vector3d>& points
     if (count != 2) throw NumericalFailure("hull edge not shared by exactly two faces");
     shape.edges_.push_back({edge.first, edge.second});
   }
+  shape.index_adjacency();
   return shape;
+}
+
+void ConvexShape::index_adjacency() {
+  faces_at_vertex_.assign(vertices_.size(), {});
+  edges_at_vertex_.assign(vertices_.size(), {});
+  for (int f = 0; f < static_cast<int>(faces_.size()); ++f)
+    for (int v : faces_[f].vertices) faces_at_vertex_[v].push_back(f);
+  for (int e = 0; e < static_cast<int>(edges_.size()); ++e)
+    for (int v : edges_[e]) edges_at_vertex_[v].push_back(e);
 }
 
 ConvexShape ConvexShape::random_ellipsoid(std::mt19937_64& rng, int n_vertices, double a,

@@ -109,6 +109,9 @@ class ConvexShape {
   const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
   const std::vector<std::array<int, 2>>& edges() const { return edges_; }
   const std::vector<Face>& faces() const { return faces_; }
+  // per vertex: the faces and the edges that contain it, ascending indices
+  const std::vector<int>& faces_at_vertex(int v) const { return faces_at_vertex_[v]; }
+  const std::vector<int>& edges_at_vertex(int v) const { return edges_at_vertex_[v]; }
   double sweep_radius() const { return sweep_radius_; }
   // True for a sphere: the core is one point (one vertex, no edges, no faces).
   bool is_sphere() const { return faces_.empty(); }
@@ -147,7 +150,9 @@ class ConvexShape {
   std::vector<Eigen::Vector3d> vertices_;
   std::vector<std::array<int, 2>> edges_;
   std::vector<Face> faces_;
+  std::vector<std::vector<int>> faces_at_vertex_, edges_at_vertex_;
   double sweep_radius_ = 0.0;
+  void index_adjacency();
 };
 
 // Polygons that draw a grain (body frame; each convex, counter-clockwise seen from
