@@ -184,6 +184,15 @@ if(WIREGRAIN_SANITIZE)
   # granular pair and wall styles, which the plugin does not use.
   set_source_files_properties("${LIGGGHTS_STAGED_SRC}/lammps.cpp" "${LIGGGHTS_STAGED_SRC}/pair_gran_proxy.cpp"
                               TARGET_DIRECTORY liggghts_upstream PROPERTIES COMPILE_OPTIONS "-fno-sanitize=all")
+  # lattice.cpp:89, Lattice::Lattice for "lattice none 1.0", which Domain's constructor
+  # sets up, calls force->numeric() before LAMMPS::create() has made the Force (the Domain
+  # comes first): a member call through the uninitialised LAMMPS::force, under ASan its
+  # malloc fill 0xbebebebebebebebe. Force::numeric does not touch `this` for "1.0", so the
+  # call works, but UBSan reports it on every run ("member call on misaligned address") and
+  # its vptr check reads through the pointer (SEGV). Upstream defect, left as it is; this
+  # file only is compiled without those three checks.
+  set_source_files_properties("${LIGGGHTS_STAGED_SRC}/lattice.cpp" TARGET_DIRECTORY liggghts_upstream
+                              PROPERTIES COMPILE_OPTIONS "-fno-sanitize=alignment,null,vptr")
 endif()
 
 set(WIREGRAIN_HAVE_VTK OFF)
