@@ -1,6 +1,7 @@
 """Run build/liggghts on a deck and read what it wrote; shared by the styles and
 regression tests. Paths come from the environment that ctest sets:
-LIGGGHTS (the executable), MPIEXEC (mpirun), WIREGRAIN_SOURCE (repository root)."""
+LIGGGHTS (the executable), MPIEXEC (mpirun), WIREGRAIN_SOURCE (repository root),
+WIREGRAIN_DECK_TIMEOUT (seconds one liggghts run may take; the sanitized tests set it)."""
 
 import math
 import os
@@ -14,7 +15,12 @@ import numpy as np
 LIGGGHTS = os.environ.get("LIGGGHTS", "liggghts")
 MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 SOURCE = os.environ.get("WIREGRAIN_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
-TIMEOUT = 600
+TIMEOUT = float(os.environ.get("WIREGRAIN_DECK_TIMEOUT", "600"))
+# The first line of a report of AddressSanitizer, LeakSanitizer or UndefinedBehaviorSanitizer
+# (a sanitized build, README: Tests, Sanitizers): a deck test fails on any of them, also
+# where the deck is meant to stop with an ERROR.
+SANITIZER_REPORT = re.compile(r"^==\d+==ERROR: (Address|Leak)Sanitizer|^\S+:\d+:\d+: runtime error: "
+                              r"|^SUMMARY: (Address|Leak|UndefinedBehavior)Sanitizer", re.M)
 
 
 class Run:
@@ -30,6 +36,10 @@ class Run:
 
     def errors(self):
         return [line for line in self.output.splitlines() if line.startswith("ERROR")]
+
+    def sanitizer_reports(self):
+        """The lines that open a sanitizer report (none in a build without sanitizers)."""
+        return [m.group(0) for m in SANITIZER_REPORT.finditer(self.output)]
 
     def thermo(self, which=-1):
         """The thermo table of a run (default the last; 0 the first) as {column: numpy array}."""
@@ -207,13 +217,19 @@ def deck(name):
 class DeckTestCase(unittest.TestCase):
     """Assertions shared by deck tests."""
 
+    def assertNoSanitizerReport(self, result):
+        if result.sanitizer_reports():
+            self.fail(f"sanitizer report in {result.workdir}:\n" + result.output[-12000:])
+
     def assertRanCleanly(self, result):
+        self.assertNoSanitizerReport(result)
         if result.returncode != 0 or result.errors():
             self.fail(f"liggghts failed (exit {result.returncode}) in {result.workdir}:\n"
                       + result.output[-4000:])
 
     def assertStopsWith(self, result, message):
         """The run must stop with 'ERROR: <message>' (and not crash or hang)."""
+        self.assertNoSanitizerReport(result)
         errors = result.errors()
         self.assertNotEqual(result.returncode, 0, "run did not fail:\n" + result.output[-2000:])
         self.assertTrue(errors, "no ERROR line; output:\n" + result.output[-2000:])
