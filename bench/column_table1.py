@@ -20,7 +20,9 @@ steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
                                (gather + detection) and f_nscd[23] (solve)
   communication, output        Comm, Outpt
   other                        the rest (gravity, computes, the loop itself)
-Extrapolation: each layer's deposition at the measured cost per step of that layer's run
+With --var dt_SP the extrapolation counts the steps of that dt_SP (in.column's dt_SP,
+dt_NSCD and skin set the wire's sub-step, the grains' step and fix wire/grain's pair
+cache). Extrapolation: each layer's deposition at the measured cost per step of that layer's run
 × the paper's 10^5 steps per layer, plus (600 − 140)/Δt_SP steps at the complete column's
 cost per step. The layers deposited faster than in the paper land on each other while
 still moving; the cost per step of a layer's run is what the extrapolation uses, so this
@@ -84,7 +86,9 @@ def main():
     parser.add_argument("--sample", type=int, default=2000)
     parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     args = parser.parse_args()
-    nlayers = int(dict(args.var).get("nlayers", NLAYERS))
+    given = dict(args.var)
+    nlayers = int(given.get("nlayers", NLAYERS))
+    dt = float(given.get("dt_SP", DT))  # the LIGGGHTS step of the run (in.column's dt_SP)
 
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
     t_relax = 2 * nlayers * args.t_layer + args.t_after
@@ -128,14 +132,14 @@ run {args.sample}
         print(f"{name:<22}{atoms:>7}{steps:>8}{1e3 * seconds / steps:>9.2f}")
     print(f"{'complete, walls moving':<22}{sample[2]:>7}{sample[0]:>8}{1e3 * sample[1] / sample[0]:>9.2f}")
 
-    paper_layer_steps = PAPER_T_LAYER / DT
-    paper_rest_steps = (PAPER_T_END - 2 * nlayers * PAPER_T_LAYER) / DT
+    paper_layer_steps = PAPER_T_LAYER / dt
+    paper_rest_steps = (PAPER_T_END - 2 * nlayers * PAPER_T_LAYER) / dt
     dep_seconds = sum(seconds / steps * paper_layer_steps for steps, seconds, _, _ in deposition)
     rest_seconds = sample[1] / sample[0] * paper_rest_steps
     print(f"\nthe paper's procedure extrapolated: deposition {dep_seconds / 3600:.2f} h "
           f"({2 * nlayers} x {paper_layer_steps:.0f} steps), relaxation + wall removal {rest_seconds / 3600:.2f} h "
           f"({paper_rest_steps:.0f} steps), total {(dep_seconds + rest_seconds) / 3600:.2f} h "
-          f"(the paper: about a week on one core; the bar: 2 h)")
+          f"(the paper: about a week on one core; issue 14's bar: 1 h)")
 
     # breakdown: deposition runs weighted by the paper's steps, the sample by the rest
     total_parts = {}

@@ -50,6 +50,9 @@ constexpr int kGrainRecord = 25;
 
 }  // namespace
 
+// keyword skin's default (README: the measurements)
+constexpr double kDefaultPairSkin = 0.1;
+
 struct FixNSCDPolyhedra::CoreState {
   wiregrain::GrainStepOptions options;
   std::vector<wiregrain::PlaneWall> walls;
@@ -61,6 +64,7 @@ struct FixNSCDPolyhedra::CoreState {
       if (!own_wall_friction[w]) walls[w].friction = options.friction;
   }
   wiregrain::GrainImpulseMemory impulses;
+  std::unique_ptr<wiregrain::GrainPairCache> pairs;  // keyword skin > 0
   wiregrain::ContactList published;
 };
 
@@ -78,6 +82,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
+  double skin = kDefaultPairSkin;
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "friction") core_->options.friction = args.value_nonnegative(key);
@@ -128,6 +133,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
         args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" + problem_file_ + "'");
     } else if (key == "margin") {
       core_->options.margin = args.value_nonnegative(key);
+    } else if (key == "skin") {
+      skin = args.value_nonnegative(key);
     } else if (key == "manifold") {
       const std::string v = args.value_word(key);
       if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
@@ -168,12 +175,13 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     }
   }
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
+  if (skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(skin));
   wall_fix_ids_.resize(core_->walls.size());
   core_->walls_take_grain_friction();
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 5;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 7;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -408,7 +416,8 @@ void FixNSCDPolyhedra::solve_step() {
   check_lost_grains((bigint)grains.size());
   wiregrain::GrainStepProblem problem;
   try {
-    problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses);
+    problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses,
+                                             core_->pairs.get());
   } catch (const std::exception &e) {  // the same on every rank (replicated solve)
     solve_failed(e);
   }
@@ -660,7 +669,10 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k < 6 + (int)wall_forces_.size()) return wall_forces_[k - 6];
   if (k < 8 + (int)wall_forces_.size()) return timings_[k - 6 - (int)wall_forces_.size()];
   if (k == 8 + (int)wall_forces_.size()) return largest_overlap_;
-  return stick_solves_[k - 9 - (int)wall_forces_.size()];
+  if (k < 11 + (int)wall_forces_.size()) return stick_solves_[k - 9 - (int)wall_forces_.size()];
+  // the pair cache: detections that searched (builds) and that reused the pairs
+  if (!core_->pairs) return 0.0;
+  return k == 11 + (int)wall_forces_.size() ? double(core_->pairs->builds()) : double(core_->pairs->reuses());
 }
 
 // restart: whether a solve happened, the sub-cycle state (steps summed, a pending move

@@ -278,6 +278,7 @@ class NscdKeywords(Table):
         (NSCD + "theta inf\nrun 1", P + "value of 'theta' must be a finite number, got 'inf'"),
         (NSCD + "wall 0 0 -2 0 0 1 wall_velocity 1 0 abc\nrun 1", P + "value of 'wall_velocity' must be a finite number, got 'abc'"),
         (NSCD + "margin -1\nrun 1", P + "value of 'margin' must be >= 0, got -1"),
+        (NSCD + "skin -0.1\nrun 1", P + "value of 'skin' must be >= 0, got -0.1"),
         (NSCD + "colour red\nrun 1", P + "unknown keyword 'colour'"),
         (NSCD + "write_problems 10\nrun 1", P + "missing value after 'write_problems'"),
         (NSCD + "wall_fix\nrun 1", P + "missing value after 'wall_fix'"),

@@ -510,6 +510,48 @@ read_restart heap.restart
         self.assertLess(restart, 1e-12)
 
 
+class PairReuse(DeckTestCase):
+    # keyword skin: the grain pairs kept between steps while no grain moved more than the
+    # skin allows (core/nscd/grain_pairs.h); every pair within the activation distance is
+    # among them, visited in the same order, so a pour into a box follows the trajectory
+    # of a search every step (skin 0) to the last bit, with 1 or 2 ranks
+    def test_pour_follows_the_full_search_to_the_bit(self):
+        made = run("""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+region box block -4 4 -4 4 0 12
+create_box 1 box
+region fill block -3 3 -3 3 1 8
+create_grains 1 30 random fill seed 11
+write_data grains.data
+grain_shapes write grains.shapes
+""")
+        self.assertRanCleanly(made)
+        body = RanksAndRestart.BODY + """
+thermo_style    custom step f_nscd[3] f_nscd[27] f_nscd[28]
+thermo          1500
+run             1500
+"""
+        states, counts = {}, {}
+        for skin, ranks in ((0, 1), (0.1, 1), (0.5, 2)):
+            text = full_precision(deck(body.replace("tolerance 1e-6", f"tolerance 1e-6 skin {skin}")
+                                       .replace("dump.h", f"dump_{skin}.h")), "d")
+            r = run(text, workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            states[skin] = read_dump(made.path(f"dump_{skin}.h"))
+            t = r.thermo()
+            counts[skin] = (t["nscd[27]"][-1], t["nscd[28]"][-1])
+        print(f"\nskin 0.1: {counts[0.1][0]:.0f} searches, {counts[0.1][1]:.0f} reuses; "
+              f"skin 0.5 (2 ranks): {counts[0.5][0]:.0f}, {counts[0.5][1]:.0f}")
+        for skin in (0.1, 0.5):
+            for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
+                np.testing.assert_array_equal(states[skin][column], states[0][column], err_msg=f"skin {skin} {column}")
+            self.assertGreater(counts[skin][1], counts[skin][0])  # mostly reused
+        self.assertEqual(counts[0], (0, 0))
+
+
 class IterationCap(DeckTestCase):
     # A cap of 1 sweep from zero impulses (no warm start) on a 5-cube stack at tolerance
     # 1e-15: every step hits it; the first 10 are named in warnings, all are counted in

@@ -66,6 +66,9 @@ void check_options(const ContactOptions& options) {
                                             std::to_string(options.max_points));
   if (std::isnan(options.feature_gap_limit))
     throw InvalidArgument("feature_gap_limit", "feature_gap_limit must not be NaN");
+  if (!(options.exit_beyond_activation >= 0.0))
+    throw InvalidArgument("exit_beyond_activation", "exit_beyond_activation must be >= 0, got " +
+                                                        number(options.exit_beyond_activation));
 }
 
 void check_not_nan(const char* name, double value) {
@@ -1104,7 +1107,7 @@ ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
   check_not_nan("activation_distance", activation_distance);
   check_options(options);
   const double r_a = a.sweep_radius(), r_b = b.sweep_radius();
-  const double reach = activation_distance + r_a + r_b;
+  const double reach = activation_distance + options.exit_beyond_activation + r_a + r_b;
   const CoreDistance cd = core_distance(a, b, reach > 0.0 ? reach : 0.0);  // inf: never
 
   ContactManifold m;

@@ -150,6 +150,12 @@ struct ContactOptions {
   // normal). Without them a grain tumbling onto another (or a wall) closes its next vertex
   // one step late: overlaps of ~1e-3 a_max in deposits (docs/core_contact.md).
   bool near_vertices = false;
+  // contact_manifold: GJK may stop once the gap is known to exceed activation_distance +
+  // this (≥ 0, +inf: never early); the
+  // manifold's gap is then a lower bound (method gjk_far). A pair within it gets its exact
+  // gap, and the same points as with 0. The grain pair cache (core/nscd/grain_pairs.h)
+  // passes its skin to learn which pairs lie beyond activation + skin.
+  double exit_beyond_activation = 0.0;
 };
 
 enum class FeatureKind { vertex, edge, face };

@@ -75,7 +75,7 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
 
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double h, const GrainStepOptions& options,
-                                     const GrainImpulseMemory& memory) {
+                                     const GrainImpulseMemory& memory, GrainPairCache* pairs) {
   options.validate();
   check_inputs(grains, library, walls, h);
   const int n = static_cast<int>(grains.size());
@@ -127,19 +127,39 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     c.position = p.position;
     points.push_back(c);
   };
-  if (n > 0) {
-    BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation);
+  // pairs a < b, b ascending for each a (grains in tag order): the same order whether the
+  // pairs come from the broad phase or from the pair cache (grain_pairs.h)
+  const auto add_pair_points = [&](int a, int b, const ContactManifold& m) {
+    for (const ContactPoint& p : m.points) add_point(a, b, p, options.friction, Eigen::Vector3d::Zero(), grains[a].tag);
+  };
+  if (n > 0 && pairs && pairs->valid(grains, library, activation)) {
+    pairs->count_reuse();
+    for (const auto& [a, b] : pairs->pairs())
+      add_pair_points(a, b, contact_manifold(posed[a], posed[b], activation, contact_options));
+  } else if (n > 0) {
+    const double skin = pairs ? pairs->skin() : 0.0;
+    ContactOptions build_options = contact_options;
+    build_options.exit_beyond_activation = skin;
+    if (pairs) pairs->begin_build();
+    BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
     for (const GrainState& g : grains) grid.insert(g.position);
+    std::vector<int> near;
     for (int a = 0; a < n; a++) {
       const double ra = library[grains[a].shape].bounding_radius;
+      near.clear();
       grid.for_each_near(grains[a].position, [&](int b, const Eigen::Vector3d&) {
         if (b <= a) return;
-        const double reach = ra + library[grains[b].shape].bounding_radius + activation;
-        if ((grains[b].position - grains[a].position).squaredNorm() >= reach * reach) return;
-        for (const ContactPoint& p : contact_manifold(posed[a], posed[b], activation, contact_options).points)
-          add_point(a, b, p, options.friction, Eigen::Vector3d::Zero(), grains[a].tag);
+        const double reach = ra + library[grains[b].shape].bounding_radius + activation + skin;
+        if ((grains[b].position - grains[a].position).squaredNorm() < reach * reach) near.push_back(b);
       });
+      std::sort(near.begin(), near.end());
+      for (int b : near) {
+        const ContactManifold m = contact_manifold(posed[a], posed[b], activation, build_options);
+        add_pair_points(a, b, m);
+        if (pairs && m.gap < activation + skin) pairs->keep(a, b);
+      }
     }
+    if (pairs) pairs->end_build(grains, library, activation);
   }
   for (int w = 0; w < (int)walls.size(); w++) {
     Plane plane;

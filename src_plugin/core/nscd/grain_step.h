@@ -35,6 +35,7 @@
 
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
+#include "core/nscd/grain_pairs.h"
 #include "core/nscd/nscd_solver.h"
 
 namespace wiregrain {
@@ -139,7 +140,8 @@ struct GrainStepResult {
 // (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data).
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double time_step,
-                                     const GrainStepOptions& options, const GrainImpulseMemory& memory);
+                                     const GrainStepOptions& options, const GrainImpulseMemory& memory,
+                                     GrainPairCache* pairs = nullptr);
 // Step 5; replaces `memory` by this step's impulses. NumericalFailure or InvalidArgument
 // from the solver.
 GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
