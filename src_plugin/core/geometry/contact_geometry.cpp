@@ -550,18 +550,27 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
   // ascending index, the tie order of a scan over all of them)
   thread_local std::vector<int> support_set;
   support_set.clear();
+  std::uint64_t support_mask = 0;  // the same set as bits, when the core has ≤ 64 vertices
   for (int i = 0; i < static_cast<int>(P.vertices().size()); ++i)
-    if (n.dot(P.vertices()[i]) >= h - tight) support_set.push_back(i);
+    if (n.dot(P.vertices()[i]) >= h - tight) {
+      support_set.push_back(i);
+      if (i < 64) support_mask |= std::uint64_t(1) << i;
+    }
 
   const ConvexShape& shape = P.shape();
   const auto& faces = shape.faces();
+  const auto& masks = shape.face_vertex_masks();
   const auto best_face_at_v = [&](bool whole_support_set, double& best_cos) {
     int best = -1;
     best_cos = -2.0;
     for (int f : shape.faces_at_vertex(v)) {
       bool contains = true;
-      if (whole_support_set)
-        for (int i : support_set) contains = contains && face_has_vertex(faces[f], i);
+      if (whole_support_set) {
+        if (!masks.empty())
+          contains = (support_mask & ~masks[f]) == 0;
+        else
+          for (int i : support_set) contains = contains && face_has_vertex(faces[f], i);
+      }
       if (!contains) continue;
       const double c = P.face_normals()[f].dot(n);
       if (c > best_cos) {

@@ -440,6 +440,13 @@ void ConvexShape::index_adjacency() {
     for (int v : faces_[f].vertices) faces_at_vertex_[v].push_back(f);
   for (int e = 0; e < static_cast<int>(edges_.size()); ++e)
     for (int v : edges_[e]) edges_at_vertex_[v].push_back(e);
+  face_vertex_masks_.clear();
+  if (vertices_.size() <= 64)
+    for (const Face& f : faces_) {
+      std::uint64_t mask = 0;
+      for (int v : f.vertices) mask |= std::uint64_t(1) << v;
+      face_vertex_masks_.push_back(mask);
+    }
 }
 
 ConvexShape ConvexShape::random_ellipsoid(std::mt19937_64& rng, int n_vertices, double a,

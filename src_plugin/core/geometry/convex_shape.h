@@ -112,6 +112,9 @@ class ConvexShape {
   // per vertex: the faces and the edges that contain it, ascending indices
   const std::vector<int>& faces_at_vertex(int v) const { return faces_at_vertex_[v]; }
   const std::vector<int>& edges_at_vertex(int v) const { return edges_at_vertex_[v]; }
+  // per face, with at most 64 vertices (else empty): bit i set when vertex i is a corner
+  // (one contiguous array: the contact geometry tests many faces of many shapes per step)
+  const std::vector<std::uint64_t>& face_vertex_masks() const { return face_vertex_masks_; }
   double sweep_radius() const { return sweep_radius_; }
   // True for a sphere: the core is one point (one vertex, no edges, no faces).
   bool is_sphere() const { return faces_.empty(); }
@@ -151,6 +154,7 @@ class ConvexShape {
   std::vector<std::array<int, 2>> edges_;
   std::vector<Face> faces_;
   std::vector<std::vector<int>> faces_at_vertex_, edges_at_vertex_;
+  std::vector<std::uint64_t> face_vertex_masks_;
   double sweep_radius_ = 0.0;
   void index_adjacency();
 };
