@@ -7,15 +7,18 @@ printed and a PNG drawn.
 
 Scene: a pile of 16 Table 1 grains (a paper-style particle layer, settled on the floor with
 damping), made 1000 times denser than Table 1 so that the wire cannot move them, and a
-double wire loop of R = 2 (126 beads, Table 1 wire) released 0.25 above the pile's top,
-falling onto it under gravity with a viscous damping of the beads (fix viscous 0.2, so
-that it comes to rest), for --t-drop time units. Everything Table 1 (E_w = 100, mu_w = 0.5, m_elo = 1,
+double wire loop of R = 2 (126 beads, Table 1 wire) released 0.1 above the pile's top,
+falling onto it under gravity with a viscous damping of the beads (fix viscous 0.005: a
+rate of 1.6 per time unit on Table 1's beads, so that it lands within about 1 and then
+comes to rest), for --t-drop time units. Everything Table 1 (E_w = 100, mu_w = 0.5, m_elo = 1,
 pair wire/contact, fix wire/wall floor, fix wire/grain with the default skin).
 
 Settings (columns: Δt_NSCD, Δt_SP, N = Δt_NSCD/Δt_SP, the wire's integrator):
   the paper's Δt_NSCD = 1e-3 with N = 10 (Δt_SP = 1e-4), 5, 2 and 1 (Δt_SP = 1e-3), Gear-5
   and velocity Verlet; Δt_NSCD = 2e-3 and 5e-4 at N = 1 and N = 10.
-Reference: Δt_NSCD = 1e-4, Δt_SP = 1e-5, Gear-5.
+References: Δt_NSCD = 1e-3 with Δt_SP = 1e-5 (N = 100: the sub-steps converged at the
+paper's grain step), and Δt_NSCD = 1e-4, Δt_SP = 1e-5 (both steps fine), Gear-5; each
+setting's errors against both.
 
 Errors against the reference at t = t_drop:
   force  the wire's force on each grain (fix wire/grain's per-atom f_wg[1..3], averaged
@@ -25,7 +28,7 @@ Errors against the reference at t = t_drop:
 The wire comes to rest on frictional contacts: its resting state depends on the path, so
 these errors measure how far a setting's trajectory strays, not a truncation order.
 Run time: LIGGGHTS' loop time of the drop (one rank), per simulated time unit.
-About 5 minutes (the reference is 2/3 of it)."""
+About 8 minutes (the two references are 2/3 of it)."""
 
 import argparse
 import os
@@ -61,6 +64,7 @@ run             6000
 fix_modify      nscd damping 0
 run             1000
 print           "PILE TOP $(c_top)"
+reset_timestep  0
 write_restart   pile.restart
 """
 
@@ -81,20 +85,20 @@ neigh_modify    delay 0
 fix             elastic wire wire/elastic
 fix             integr wire nve/gear scheme {scheme}
 fix             wg wire wire/grain grains
-fix             calm wire viscous 0.2
+fix             calm wire viscous 0.005
 timestep        {dt_sp}
 fix             mean grains ave/atom 1 {unit} {steps} f_wg[1] f_wg[2] f_wg[3]
 thermo_style    custom step f_wg[1] f_nscd[1]
 thermo          {thermo}
-run             {steps}
-dump            dg grains custom 1 grains.txt id f_mean[1] f_mean[2] f_mean[3]
+dump            dg grains custom {steps} grains.txt id f_mean[1] f_mean[2] f_mean[3]
 dump_modify     dg format "%d %.17g %.17g %.17g" sort id
-dump            dw wire custom 1 beads.txt id x y z
+dump            dw wire custom {steps} beads.txt id x y z
 dump_modify     dw format "%d %.17g %.17g %.17g" sort id
-run             0
+run             {steps}
 """
 
-REFERENCE = ("1e-4", "1e-5", "gear5")
+# two references: the sub-steps at the paper's Δt_NSCD (N = 100), and both steps fine
+REFERENCES = [("1e-3", "1e-5", "gear5"), ("1e-4", "1e-5", "gear5")]
 SETTINGS = [  # Δt_NSCD, Δt_SP, scheme
     ("1e-3", "1e-4", "gear5"), ("1e-3", "2e-4", "gear5"), ("1e-3", "5e-4", "gear5"), ("1e-3", "1e-3", "gear5"),
     ("1e-3", "1e-4", "verlet"), ("1e-3", "2e-4", "verlet"), ("1e-3", "5e-4", "verlet"), ("1e-3", "1e-3", "verlet"),
@@ -115,7 +119,7 @@ def liggghts(args, work, name, text):
 def read_columns(path):
     with open(path) as f:
         lines = f.read().splitlines()
-    k = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    k = max(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))  # the last snapshot
     return np.array([[float(w) for w in line.split()] for line in lines[k + 1:] if line.strip()])
 
 
@@ -125,7 +129,7 @@ def drop(args, work, dt_nscd, dt_sp, scheme, top):
     os.makedirs(sub, exist_ok=True)
     os.symlink(os.path.join(work, "pile.restart"), os.path.join(sub, "pile.restart"))
     steps = int(round(args.t_drop / float(dt_sp)))
-    out = liggghts(args, sub, "in.drop", DROP.format(z=top + 0.25 + 0.1, dt_nscd=dt_nscd, dt_sp=dt_sp, scheme=scheme,
+    out = liggghts(args, sub, "in.drop", DROP.format(z=top + 0.2, dt_nscd=dt_nscd, dt_sp=dt_sp, scheme=scheme,
                                                      steps=steps, thermo=max(1, steps // 10),
                                                      unit=int(round(1.0 / float(dt_sp)))))
     seconds = float(re.search(r"Loop time of (\S+) on \d+ procs for " + str(steps) + " steps", out).group(1))
@@ -144,30 +148,40 @@ def main():
     work = tempfile.mkdtemp(prefix="wiregrain-work-precision-")
     pile = liggghts(args, work, "in.pile", PILE)
     top = float(re.search(r"^PILE TOP (\S+)", pile, re.M).group(1))
-    print(f"pile of 16 grains, top at {top:.3f}; wire released at {top + 0.35:.3f}; t_drop = {args.t_drop:g}; "
+    print(f"pile of 16 grains, top at {top:.3f}; wire released at {top + 0.2:.3f}; t_drop = {args.t_drop:g}; "
           f"work dir {work}", flush=True)
 
-    reference = drop(args, work, *REFERENCE, top)
-    f_ref, x_ref = reference["forces"], reference["beads"]
-    print(f"reference Δt_NSCD {REFERENCE[0]}, Δt_SP {REFERENCE[1]}: {reference['seconds']:.1f} s; wire force on the "
-          f"grains |F_ref| = {np.linalg.norm(f_ref):.4g} (sum z {f_ref[:, 2].sum():.4g})", flush=True)
+    refs = []
+    for ref in REFERENCES:
+        r = drop(args, work, *ref, top)
+        refs.append(r)
+        print(f"reference Δt_NSCD {ref[0]}, Δt_SP {ref[1]}: {r['seconds']:.1f} s; wire force on the grains "
+              f"|F_ref| = {np.linalg.norm(r['forces']):.4g} (sum z {r['forces'][:, 2].sum():.4g})", flush=True)
+    ref_gap = np.sqrt(np.mean(np.sum((refs[0]["beads"] - refs[1]["beads"]) ** 2, axis=1))) / 0.1
+    print(f"the two references differ by {ref_gap:.3g} r_w (beads) and "
+          f"{np.linalg.norm(refs[0]['forces'] - refs[1]['forces']) / np.linalg.norm(refs[1]['forces']):.3g} (forces)")
+
+    def errors(r, ref):
+        return (np.linalg.norm(r["forces"] - ref["forces"]) / np.linalg.norm(ref["forces"]),
+                np.sqrt(np.mean(np.sum((r["beads"] - ref["beads"]) ** 2, axis=1))) / 0.1)
+
     rows = []
     for dt_nscd, dt_sp, scheme in SETTINGS:
         r = drop(args, work, dt_nscd, dt_sp, scheme, top)
-        force_error = np.linalg.norm(r["forces"] - f_ref) / np.linalg.norm(f_ref)
-        bead_error = np.sqrt(np.mean(np.sum((r["beads"] - x_ref) ** 2, axis=1))) / 0.1
         n = int(round(float(dt_nscd) / float(dt_sp)))
-        rows.append((dt_nscd, dt_sp, n, scheme, r["seconds"] / args.t_drop, force_error, bead_error, r["warnings"]))
-        print(f"  Δt_NSCD {dt_nscd:>5} Δt_SP {dt_sp:>5} N {n:>3} {scheme:<7} {r['seconds'] / args.t_drop:8.2f} s per "
-              f"time unit, force error {force_error:.3g}, beads {bead_error:.3g} r_w"
+        rows.append((dt_nscd, dt_sp, n, scheme, r["seconds"] / args.t_drop) + errors(r, refs[0]) + errors(r, refs[1])
+                    + (r["warnings"],))
+        print(f"  Δt_NSCD {dt_nscd:>5} Δt_SP {dt_sp:>5} N {n:>3} {scheme:<7} {rows[-1][4]:8.2f} s per time unit"
               + (f"; {r['warnings'][0]}" if r["warnings"] else ""), flush=True)
 
     print()
-    print(f"{'Δt_NSCD':>8}{'Δt_SP':>8}{'N':>4}  {'wire':<7}{'s per t':>9}{'speed-up':>9}{'force err':>11}{'bead err/r_w':>13}")
+    print(f"{'':34}{'against Δt_NSCD 1e-3, Δt_SP 1e-5':^26}{'against 1e-4, 1e-5':^26}")
+    print(f"{'Δt_NSCD':>8}{'Δt_SP':>8}{'N':>4}  {'wire':<7}{'s per t':>9}{'speed-up':>9}"
+          f"{'force':>13}{'beads/r_w':>13}{'force':>13}{'beads/r_w':>13}")
     base = rows[0][4]
-    for dt_nscd, dt_sp, n, scheme, seconds, fe, be, warnings in rows:
-        print(f"{dt_nscd:>8}{dt_sp:>8}{n:>4}  {scheme:<7}{seconds:9.2f}{base / seconds:9.2f}{fe:11.3g}{be:13.3g}"
-              + ("  (warned)" if warnings else ""))
+    for dt_nscd, dt_sp, n, scheme, seconds, fa, ba, fb, bb, warnings in rows:
+        print(f"{dt_nscd:>8}{dt_sp:>8}{n:>4}  {scheme:<7}{seconds:9.2f}{base / seconds:9.2f}"
+              f"{fa:13.3g}{ba:13.3g}{fb:13.3g}{bb:13.3g}" + ("  (warned)" if warnings else ""))
 
     try:
         import matplotlib
@@ -177,23 +191,27 @@ def main():
         print("matplotlib not available: no PNG")
         return
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
-    for ax, k, label in ((axes[0], 5, "force on the grains, relative error"), (axes[1], 6, "bead positions, RMS error / r_w")):
+    panels = ((axes[0], 6, "Δt_NSCD 1e-3, Δt_SP 1e-5"), (axes[1], 8, "Δt_NSCD 1e-4, Δt_SP 1e-5"))
+    for ax, k, reference in panels:
         for scheme, marker in (("gear5", "o"), ("verlet", "s")):
             for dt_nscd, color in (("1e-3", "C0"), ("5e-4", "C1"), ("2e-3", "C2")):
+                if k == 6 and dt_nscd != "1e-3":
+                    continue
                 pts = [(r[4], r[k], r[2]) for r in rows if r[3] == scheme and r[0] == dt_nscd]
                 if not pts:
                     continue
                 ax.plot([p[0] for p in pts], [max(p[1], 1e-16) for p in pts], marker=marker, color=color,
                         linestyle="-" if scheme == "gear5" else "--", label=f"Δt_NSCD {dt_nscd}, {scheme}")
                 for p in pts:
-                    ax.annotate(f"N={p[2]}", (p[0], max(p[1], 1e-16)), fontsize=7, xytext=(3, 3), textcoords="offset points")
+                    ax.annotate(f"N={p[2]}", (p[0], max(p[1], 1e-16)), fontsize=7, xytext=(3, 3),
+                                textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("run time per simulated time unit [s] (one rank)")
-        ax.set_ylabel(label)
+        ax.set_ylabel(f"bead positions, RMS error / r_w, against {reference}")
         ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
-    fig.suptitle(f"wire dropped on a pile of 16 grains, t = {args.t_drop:g}: error against Δt_NSCD 1e-4, Δt_SP 1e-5")
+        ax.legend(fontsize=7)
+    fig.suptitle(f"wire dropped on a pile of 16 grains, t = {args.t_drop:g}: error against fine references")
     fig.tight_layout()
     fig.savefig(args.out, dpi=120)
     print(f"wrote {args.out}")

@@ -41,7 +41,7 @@ namespace {
 // per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
 constexpr int kGrainRecord = 17;
 // keyword skin's default (see the README's measurements)
-constexpr double kDefaultSkin = 0.05;
+constexpr double kDefaultSkin = 0.1;
 
 }  // namespace
 
