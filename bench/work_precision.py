@@ -3,14 +3,14 @@
 settings of the wire-grain coupling, all cases side by side in one invocation, a table
 printed and a PNG drawn.
 
-    bench/work_precision.py [--liggghts build/liggghts] [--t-drop 4] [--out work_precision.png]
+    bench/work_precision.py [--liggghts build/liggghts] [--t-drop 6] [--mu-w 0.5] [--out work_precision.png]
 
 Scene: a pile of 16 Table 1 grains (a paper-style particle layer, settled on the floor with
 damping), made 1000 times denser than Table 1 so that the wire cannot move them, and a
 double wire loop of R = 2 (126 beads, Table 1 wire) released 0.1 above the pile's top,
 falling onto it under gravity with a viscous damping of the beads (fix viscous 0.005: a
 rate of 1.6 per time unit on Table 1's beads, so that it lands within about 1 and then
-comes to rest), for --t-drop time units. Everything Table 1 (E_w = 100, mu_w = 0.5, m_elo = 1,
+comes to rest), for --t-drop time units. Everything Table 1 (E_w = 100, mu_w = 0.5 or --mu-w, m_elo = 1,
 pair wire/contact, fix wire/wall floor, fix wire/grain with the default skin).
 
 Settings (columns: Δt_NSCD, Δt_SP, N = Δt_NSCD/Δt_SP, the wire's integrator):
@@ -74,17 +74,17 @@ group           grains type 1
 create_wire     2 loop 0 0 {z} 2 2 0.25
 group           wire type 2
 fix             g all gravity 1.0 vector 0 0 -1
-fix             floor wire wire/wall plane 0 0 0 0 0 1
+fix             floor wire wire/wall plane 0 0 0 0 0 1 mu_s {mu} mu_d {mu}
 fix             nscd grains nscd/polyhedra timestep {dt_nscd} wall_fix floor &
                 wall -3 0 0 1 0 0 wall_friction 0 wall 3 0 0 -1 0 0 wall_friction 0 &
                 wall 0 -3 0 0 1 0 wall_friction 0 wall 0 3 0 0 -1 0 wall_friction 0
-pair_style      wire/contact
+pair_style      wire/contact mu_s {mu} mu_d {mu}
 pair_coeff      * *
 neighbor        0.1 bin
 neigh_modify    delay 0
 fix             elastic wire wire/elastic
 fix             integr wire nve/gear scheme {scheme}
-fix             wg wire wire/grain grains
+fix             wg wire wire/grain grains mu_s {mu} mu_d {mu}
 fix             calm wire viscous 0.005
 timestep        {dt_sp}
 fix             mean grains ave/atom 1 {unit} {steps} f_wg[1] f_wg[2] f_wg[3]
@@ -129,7 +129,7 @@ def drop(args, work, dt_nscd, dt_sp, scheme, top):
     os.makedirs(sub, exist_ok=True)
     os.symlink(os.path.join(work, "pile.restart"), os.path.join(sub, "pile.restart"))
     steps = int(round(args.t_drop / float(dt_sp)))
-    out = liggghts(args, sub, "in.drop", DROP.format(z=top + 0.2, dt_nscd=dt_nscd, dt_sp=dt_sp, scheme=scheme,
+    out = liggghts(args, sub, "in.drop", DROP.format(z=top + 0.2, mu=args.mu_w, dt_nscd=dt_nscd, dt_sp=dt_sp, scheme=scheme,
                                                      steps=steps, thermo=max(1, steps // 10),
                                                      unit=int(round(1.0 / float(dt_sp)))))
     seconds = float(re.search(r"Loop time of (\S+) on \d+ procs for " + str(steps) + " steps", out).group(1))
@@ -143,6 +143,8 @@ def main():
     parser.add_argument("--liggghts", default=os.path.join(HERE, "..", "build", "liggghts"))
     parser.add_argument("--t-drop", type=float, default=6.0)
     parser.add_argument("--out", default="work_precision.png")
+    parser.add_argument("--mu-w", type=float, default=0.5,
+                        help="the wire's friction (wire-wire, wire-floor, wire-grain); 0: a frictionless drape")
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     work = tempfile.mkdtemp(prefix="wiregrain-work-precision-")
