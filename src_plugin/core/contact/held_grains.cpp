@@ -11,12 +11,13 @@ namespace wiregrain {
 
 HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
                        double segment_reach)
-    : grains_(std::move(grains)), segment_reach_(segment_reach), grid_(BroadPhaseGrid::unbounded(1.0)) {
+    : grains_(std::move(grains)), library_(&library), segment_reach_(segment_reach),
+      grid_(BroadPhaseGrid::unbounded(1.0)) {
   std::stable_sort(grains_.begin(), grains_.end(), [](const HeldGrain& a, const HeldGrain& b) { return a.tag < b.tag; });
   if (!(segment_reach > 0.0) || !std::isfinite(segment_reach))
     throw InvalidArgument("segment_reach", "segment_reach must be finite and > 0, got " + format_number(segment_reach));
   double largest = 0.0;
-  posed_.reserve(grains_.size());
+  posed_.resize(grains_.size());
   bounding_radius_.reserve(grains_.size());
   for (std::size_t k = 0; k < grains_.size(); ++k) {
     const HeldGrain& g = grains_[k];
@@ -26,7 +27,8 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
     if (!(g.position.allFinite() && g.orientation.coeffs().allFinite() && g.motion.velocity.allFinite() &&
           g.motion.angular_velocity.allFinite() && std::isfinite(g.motion.mass)))
       throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a non-finite pose or velocity");
-    posed_.emplace_back(library[g.shape].shape, g.position, g.orientation);
+    if (!(g.orientation.norm() > 0.0))
+      throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a zero orientation quaternion");
     bounding_radius_.push_back(library[g.shape].bounding_radius);
     largest = std::max(largest, library[g.shape].bounding_radius);
     index_of_tag_[g.tag] = static_cast<int>(k);
@@ -67,7 +69,7 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
   WireSegmentState moved = segment;
   moved.x0 -= shift;
   moved.x1 -= shift;
-  WireGrainContact c = wire_grain_contact(law, posed_[k], grains_[k].motion, moved, dt, history);
+  WireGrainContact c = wire_grain_contact(law, posed(k), grains_[k].motion, moved, dt, history);
   c.point += shift;
   return c;
 }

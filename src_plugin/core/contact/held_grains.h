@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -56,7 +57,12 @@ class HeldGrains {
 
   int size() const { return static_cast<int>(grains_.size()); }
   const HeldGrain& grain(int k) const { return grains_[k]; }
-  const PosedShape& posed(int k) const { return posed_[k]; }
+  // grain k posed, made on first use: the wire reaches few of the grains, and posing all
+  // of them every NSCD step was a fixed cost of the coupling (bench/column_table1.py at N = 1)
+  const PosedShape& posed(int k) const {
+    if (!posed_[k]) posed_[k].emplace((*library_)[grains_[k].shape].shape, grains_[k].position, grains_[k].orientation);
+    return *posed_[k];
+  }
   double bounding_radius(int k) const { return bounding_radius_[k]; }  // core + sweep, about the centre of mass
   // index of the grain with this tag, −1 if none
   int index_of(long tag) const;
@@ -92,7 +98,8 @@ class HeldGrains {
 
  private:
   std::vector<HeldGrain> grains_;
-  std::vector<PosedShape> posed_;
+  const ShapeLibrary* library_;
+  mutable std::vector<std::optional<PosedShape>> posed_;
   std::vector<double> bounding_radius_;
   std::unordered_map<long, int> index_of_tag_;
   double segment_reach_;
