@@ -81,6 +81,14 @@ class Column(DeckTestCase):
         self.assertAlmostEqual(float(relaxed.group(1)), 2.0 + 0.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.2 + 0.2, delta=1e-12)
+        # the same early end of the wall phase when continuing from the relaxed column
+        # (t_relax = 2.5): at 2.5 + 0.2
+        resumed = run(COLUMN, variables=dict(TINY, resume=1, ke_stop=1e9, t_quiet=0.2, t_check=0.1, free_dist=0.002),
+                      workdir=self.straight.workdir)
+        self.assertRanCleanly(resumed)
+        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = 2\.5\)",
+                          resumed.output, re.M)
+        self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
         # ke_stop far below: the phases run in chunks of t_check to t_relax and t_end,
         # the observables those of the straight run (one run per phase); the chunks' run
         # boundaries change the wire's energy by round-off only
