@@ -459,6 +459,23 @@ run             3
         self.assertFalse(os.path.exists(r.path("problem_1.txt")))
 
 
+def heap_of_30():
+    """grains.data and grains.shapes of 30 random grains in a 6 x 6 x 7 region of an
+    8 x 8 x 12 box (the decks of RanksAndRestart and PairReuse)."""
+    return run("""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+region box block -4 4 -4 4 0 12
+create_box 1 box
+region fill block -3 3 -3 3 1 8
+create_grains 1 30 random fill seed 11
+write_data grains.data
+grain_shapes write grains.shapes
+""")
+
+
 class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses and the stick-solve backoff) reproduces the straight run. The
@@ -472,18 +489,7 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
 """
 
     def test_same_state(self):
-        made = run("""
-units lj
-atom_style polyhedron
-atom_modify map array sort 0 0.0
-boundary f f f
-region box block -4 4 -4 4 0 12
-create_box 1 box
-region fill block -3 3 -3 3 1 8
-create_grains 1 30 random fill seed 11
-write_data grains.data
-grain_shapes write grains.shapes
-""")
+        made = heap_of_30()
         self.assertRanCleanly(made)
         text = full_precision(deck(self.BODY), "d")
         one = run(text + "run 2400\n", workdir=made.workdir)
@@ -516,18 +522,7 @@ class PairReuse(DeckTestCase):
     # among them, visited in the same order, so a pour into a box follows the trajectory
     # of a search every step (skin 0) to the last bit, with 1 or 2 ranks
     def test_pour_follows_the_full_search_to_the_bit(self):
-        made = run("""
-units lj
-atom_style polyhedron
-atom_modify map array sort 0 0.0
-boundary f f f
-region box block -4 4 -4 4 0 12
-create_box 1 box
-region fill block -3 3 -3 3 1 8
-create_grains 1 30 random fill seed 11
-write_data grains.data
-grain_shapes write grains.shapes
-""")
+        made = heap_of_30()
         self.assertRanCleanly(made)
         body = RanksAndRestart.BODY + """
 thermo_style    custom step f_nscd[3] f_nscd[27] f_nscd[28]

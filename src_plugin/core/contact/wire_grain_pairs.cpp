@@ -5,6 +5,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/validation.h"
+#include "core/geometry/motion_bound.h"
 
 namespace wiregrain {
 
@@ -21,9 +22,8 @@ void WireGrainPairCache::hold(const HeldGrains& held) {
     const auto it = reference_.find(g.tag);
     if (it == reference_.end() || it->second.shape != g.shape) return reset(held);
     const Pose& ref = it->second;
-    // 2 R |vec(q_ref⁻¹ q)| = 2 R sin(θ/2) (either sign of the quaternion)
-    const double turn = (ref.orientation.conjugate() * g.orientation.normalized()).vec().norm();
-    bound = std::max(bound, (g.position - ref.position).norm() + 2.0 * ref.bounding_radius * turn);
+    bound = std::max(bound, rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation,
+                                               ref.bounding_radius));
   }
   grain_bound_ = bound;
   if (!(bound < 0.5 * skin_)) reset(held);  // also a non-finite pose

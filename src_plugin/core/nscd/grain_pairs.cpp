@@ -5,6 +5,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/validation.h"
+#include "core/geometry/motion_bound.h"
 #include "core/nscd/grain_step.h"
 
 namespace wiregrain {
@@ -22,8 +23,8 @@ bool GrainPairCache::valid(const std::vector<GrainState>& grains, const ShapeLib
     const GrainState& g = grains[k];
     const Pose& ref = reference_[k];
     if (g.tag != ref.tag || g.shape != ref.shape || g.shape >= library.size()) return false;
-    const double turn = (ref.orientation.conjugate() * g.orientation.normalized()).vec().norm();
-    moved = std::max(moved, (g.position - ref.position).norm() + 2.0 * ref.bounding_radius * turn);
+    moved = std::max(moved, rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation,
+                                               ref.bounding_radius));
   }
   return 2.0 * moved + (activation - activation_) < skin_;  // false for NaN
 }
