@@ -38,8 +38,8 @@ using namespace FixConst;
 using wiregrain_lmp::vec3;
 
 namespace {
-// per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m
-constexpr int kGrainRecord = 17;
+// per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m radius
+constexpr int kGrainRecord = 18;
 // keyword skin's default (see the README's measurements)
 constexpr double kDefaultSkin = 0.1;
 
@@ -50,6 +50,7 @@ struct FixWireGrain::CoreState {
   std::unique_ptr<wiregrain::WireGrainPairCache> pairs;  // keyword skin > 0
   wiregrain::GrainLoadSums sums;
   wiregrain::ContactList contacts;
+  wiregrain::ShapeLibrary no_shapes;  // the library of a system without atom_style polyhedron
 };
 
 const wiregrain::ContactList &FixWireGrain::published_contacts() const { return core_->contacts; }
@@ -62,6 +63,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       grains_(NULL),
       nscd_(NULL),
       history_(NULL),
+      spheres_(false),
       held_version_(-1),
       segment_reach_(0.0),
       max_stretch_(0.5),
@@ -79,8 +81,9 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
   grains_ = AtomVecPolyhedron::of(atom);
-  if (!wire_ || !grains_)
-    args.fail("needs atom_style hybrid with wire and polyhedron, not '" + std::string(atom->atom_style) + "'");
+  if (!wire_ || !(grains_ || atom->sphere_flag))
+    args.fail("needs atom_style hybrid with wire and polyhedron (or sphere, granular), not '" +
+              std::string(atom->atom_style) + "'");
   if (args.done()) args.fail("expected the grain group after 'wire/grain'");
   grain_group_ = args.next_keyword();
   const int igroup = group->find(grain_group_.c_str());
@@ -149,39 +152,68 @@ void FixWireGrain::fail_one(const std::string &what) {
   throw std::logic_error(what);  // not reached
 }
 
-// The groups (beads that are not grains; grains with a shape, all integrated by one
-// fix nscd/polyhedra), the moduli per type pair and the segment reach.
+bool FixWireGrain::is_polyhedron(int i) const { return grains_ && atom->shapetype && atom->shapetype[i] >= 0; }
+
+bool FixWireGrain::is_grain(int i) const {
+  return (atom->mask[i] & grain_groupbit_) && (spheres_ ? !(atom->mask[i] & groupbit) : is_polyhedron(i));
+}
+
+// The groups (beads that are not grains; grains: the polyhedra of the grain group, all
+// integrated by one fix nscd/polyhedra, or else its stock spheres), the moduli per type
+// pair and the segment reach.
 void FixWireGrain::init() {
   const int igroup = group->find(grain_group_.c_str());
   if (igroup < 0) fail("grain group '" + grain_group_ + "' no longer exists");
   grain_groupbit_ = group->bitmask[igroup];
-  const int *mask = atom->mask, *shape = atom->shapetype;
+  const int *mask = atom->mask, *prev = wire_->wire_prev, *next = wire_->wire_next;
   const double *rest = wire_->wire_rest, *radius = atom->radius;
-  double local[5] = {0, 0, 0, 0, 0}, global[5];  // beads, grains, grains in the wire group, max rest, max radius
+  // beads, polyhedra, polyhedra in the wire group, other atoms of the grain group, of these
+  // the linked wire beads and those in the wire group; max rest, max radius
+  double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
   for (int i = 0; i < atom->nlocal; i++) {
-    const bool grain = shape[i] >= 0;
+    const bool polyhedron = is_polyhedron(i);
     if (mask[i] & groupbit) {
-      if (grain) local[2] += 1.0;
+      if (polyhedron) local[2] += 1.0;
       else {
         local[0] += 1.0;
-        local[3] = std::max(local[3], rest[i]);
-        local[4] = std::max(local[4], radius[i]);
+        local[6] = std::max(local[6], rest[i]);
+        local[7] = std::max(local[7], radius[i]);
       }
     }
-    if ((mask[i] & grain_groupbit_) && grain) local[1] += 1.0;
+    if (!(mask[i] & grain_groupbit_)) continue;
+    if (polyhedron) local[1] += 1.0;
+    else {
+      local[3] += 1.0;
+      if (prev[i] || next[i]) local[4] += 1.0;
+      if (mask[i] & groupbit) local[5] += 1.0;
+    }
   }
-  MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(local + 3, global + 3, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (global[0] == 0.0) fail("wire group '" + std::string(group->names[this->igroup]) + "' has no wire beads");
-  if (global[1] == 0.0) fail("grain group '" + grain_group_ + "' has no grains");
+  MPI_Allreduce(local, global, 6, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local + 6, global + 6, 2, MPI_DOUBLE, MPI_MAX, world);
+  const std::string wire_group = group->names[this->igroup];
+  if (global[0] == 0.0) fail("wire group '" + wire_group + "' has no wire beads");
   if (global[2] > 0.0)
-    fail("wire group '" + std::string(group->names[this->igroup]) + "' holds " + std::to_string((long)global[2]) +
+    fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[2]) +
          " grains (give the wire beads only)");
-  segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[3] + global[4];
+  spheres_ = global[1] == 0.0;
+  if (spheres_) {  // stock granular spheres
+    if (global[3] == 0.0 || !atom->sphere_flag)
+      fail("grain group '" + grain_group_ +
+           "' has no grains (polyhedra, or spheres of atom_style sphere or granular in the hybrid)");
+    if (global[4] > 0.0)
+      fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[4]) +
+           " wire beads (give the grains only)");
+    if (global[5] > 0.0)
+      fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[5]) +
+           " grains (give the wire beads only)");
+  }
+  segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[6] + global[7];
 
-  // the one fix nscd/polyhedra that integrates all grains of the grain group
+  // the one fix nscd/polyhedra that integrates all grains of the grain group; stock
+  // spheres are integrated by LIGGGHTS every step (fix nve/sphere)
   nscd_ = NULL;
-  for (int k = 0; k < modify->nfix && !nscd_; k++) {
+  const int *shape = atom->shapetype;
+  for (int k = 0; k < modify->nfix && !nscd_ && !spheres_; k++) {
     FixNSCDPolyhedra *candidate = dynamic_cast<FixNSCDPolyhedra *>(modify->fix[k]);
     if (!candidate) continue;
     long outside = 0, total;
@@ -190,7 +222,8 @@ void FixWireGrain::init() {
     MPI_Allreduce(&outside, &total, 1, MPI_LONG, MPI_SUM, world);
     if (total == 0) nscd_ = candidate;
   }
-  if (!nscd_) fail("needs a fix nscd/polyhedra that integrates all grains of group '" + grain_group_ + "'");
+  if (!nscd_ && !spheres_)
+    fail("needs a fix nscd/polyhedra that integrates all grains of group '" + grain_group_ + "'");
 
   const int ntypes = atom->ntypes;
   modulus_.assign((ntypes + 1) * (ntypes + 1), 0.0);
@@ -217,7 +250,7 @@ void FixWireGrain::setup_pre_force(int /*vflag*/) {
 }
 
 void FixWireGrain::post_force(int /*vflag*/) {
-  if (held_version_ != nscd_->pose_version()) hold_grains();
+  if (spheres_ || held_version_ != nscd_->pose_version()) hold_grains();
   evaluate(false);
 }
 
@@ -225,7 +258,7 @@ void FixWireGrain::post_force(int /*vflag*/) {
 // bead type and a grain type present (the longest segment, the thickest bead) on the
 // lightest bead alone: the grain is held during the wire's sub-steps, and heavier.
 void FixWireGrain::check_time_step() {
-  const int ntypes = atom->ntypes, *type = atom->type, *mask = atom->mask, *shape = atom->shapetype;
+  const int ntypes = atom->ntypes, *type = atom->type, *mask = atom->mask;
   const int *next = wire_->wire_next, *prev = wire_->wire_prev;
   // per type: a bead of a segment present, a grain present; then the longest rest
   // length, the largest radius, −the lightest bead's mass
@@ -233,7 +266,7 @@ void FixWireGrain::check_time_step() {
   const int beads = 0, grains = ntypes + 1, extremes = 2 * ntypes + 2;
   local[extremes + 2] = -INFINITY;
   for (int i = 0; i < atom->nlocal; i++) {
-    if ((mask[i] & grain_groupbit_) && shape[i] >= 0) local[grains + type[i]] = 1.0;
+    if (is_grain(i)) local[grains + type[i]] = 1.0;
     if (!(mask[i] & groupbit) || (!next[i] && !prev[i])) continue;
     local[beads + type[i]] = 1.0;
     if (next[i]) local[extremes] = std::max(local[extremes], wire_->wire_rest[i]);
@@ -258,15 +291,19 @@ void FixWireGrain::check_time_step() {
   time_step_check_.check(lmp, "fix", "wire/grain", id, springs);
 }
 
-// All grains of the group, as the NSCD fix left them, on every rank.
+// All grains of the group, as the NSCD fix left them (stock spheres: as they are this
+// step), on every rank.
 void FixWireGrain::hold_grains() {
   std::vector<double> mine;
+  const double identity[4] = {1.0, 0.0, 0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & grain_groupbit_) || atom->shapetype[i] < 0) continue;
-    const double *x = atom->x[i], *q = atom->quaternion[i], *v = atom->v[i], *w = atom->omega[i];
-    const double record[kGrainRecord] = {double(atom->tag[i]), double(atom->shapetype[i]), double(atom->type[i]),
+    if (!is_grain(i)) continue;
+    const double *x = atom->x[i], *q = spheres_ ? identity : atom->quaternion[i], *v = atom->v[i],
+                 *w = atom->omega[i];
+    const double shape = spheres_ ? wiregrain::HeldGrain::kSphere : atom->shapetype[i];
+    const double record[kGrainRecord] = {double(atom->tag[i]), shape, double(atom->type[i]),
                                          x[0], x[1], x[2], q[0], q[1], q[2], q[3], v[0], v[1], v[2], w[0], w[1], w[2],
-                                         atom->rmass[i]};
+                                         atom->rmass[i], atom->radius[i]};
     mine.insert(mine.end(), record, record + kGrainRecord);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
@@ -282,18 +319,20 @@ void FixWireGrain::hold_grains() {
     g.motion.velocity = vec3(r + 10);
     g.motion.angular_velocity = vec3(r + 13);
     g.motion.mass = r[16];
+    if (g.shape == wiregrain::HeldGrain::kSphere) g.sphere_radius = r[17];
   }
   wiregrain::GrainBox box;
   box.lo = vec3(domain->boxlo);
   box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   try {
-    core_->held.reset(new wiregrain::HeldGrains(grains, grains_->shapes(), box, held_reach() + skin_));
+    core_->held.reset(new wiregrain::HeldGrains(grains, grains_ ? grains_->shapes() : core_->no_shapes, box,
+                                                held_reach() + skin_));
     if (core_->pairs) core_->pairs->hold(*core_->held);
   } catch (const std::exception &e) {  // the same on every rank
     fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
   }
-  held_version_ = nscd_->pose_version();
+  held_version_ = spheres_ ? -1 : nscd_->pose_version();
 }
 
 // The reach of the contact search for the coming NSCD step: segment_reach_ (max_stretch),
@@ -442,7 +481,7 @@ void FixWireGrain::evaluate(bool setup) {
     return;
   }
   summed_steps_++;
-  if (nscd_->solves_at_end_of_step(update->ntimestep)) {  // the last sub-step of the NSCD step
+  if (spheres_ || nscd_->solves_at_end_of_step(update->ntimestep)) {  // the last sub-step of the NSCD step
     apply_grain_loads(core_->sums, summed_steps_);
     core_->sums.clear();
     summed_steps_ = 0;

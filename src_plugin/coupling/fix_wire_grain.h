@@ -106,6 +106,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   class AtomVecPolyhedron *grains_;
   class FixNSCDPolyhedra *nscd_;
   class FixWireContactHistory *history_;
+  bool spheres_;                 // the grains are stock spheres (no fix nscd/polyhedra, no sub-cycling)
   std::string history_id_;
   long held_version_;            // the NSCD fix's pose_version() of the held grains
   double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w
@@ -126,6 +127,8 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   long deepest_grain_;
   double deepest_overlap_, deepest_radius_;
 
+  bool is_polyhedron(int i) const;
+  bool is_grain(int i) const;  // atom i is one of the grains the wire touches
   void hold_grains();
   void check_time_step();
   double held_reach();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "core/contact/wire_grain_contact.h"
 
@@ -212,4 +213,100 @@ TEST(WireOnSphere, SegmentAcrossTheTopIsPushedOutThroughTheCentre) {
   EXPECT_NEAR((c.force_grain - Vector3d(0, 0, -fn)).norm(), 0.0, 1e-14);
   EXPECT_NEAR((c.point - Vector3d(0, 0, radius - 0.5 * kOverlap)).norm(), 0.0, 1e-14);
   EXPECT_NEAR(c.torque_grain.norm(), 0.0, 1e-16);
+}
+
+// wire_sphere_contact, the closed form for stock spheres, against the general path on a
+// one-vertex grain (ConvexShape::sphere: GJK geometry, a different code): random
+// segments around spheres of several radii, moving and spinning, friction and damping on,
+// the tangential springs of both carried over 20 steps.
+TEST(WireOnStockSphere, ClosedFormEqualsTheGeneralPathOnAOneVertexGrain) {
+  std::mt19937 rng(7);
+  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto random_vector = [&](double scale) {
+    return Vector3d(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale));
+  };
+  int touching = 0, clamped = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double radius = uniform(0.3, 1.5);
+    const Vector3d centre = random_vector(1.0);
+    const ConvexShape ball = ConvexShape::sphere(radius);
+    GrainMotion motion;
+    motion.mass = uniform(1.0, 10.0);
+    motion.velocity = random_vector(0.2);
+    motion.angular_velocity = random_vector(0.5);
+    WireSegmentState s;
+    s.radius = kWireRadius;
+    s.m0 = s.m1 = 0.01;
+    // a segment of length 0.2–0.8 whose foot is 0.9–1.0 of contact distance from the centre
+    const Vector3d direction = random_vector(1.0).normalized();
+    const Vector3d across = direction.unitOrthogonal();
+    const double length = uniform(0.2, 0.8), foot = uniform(-0.6, 1.4);
+    const double distance = (radius + kWireRadius) * uniform(0.9, 1.02);
+    s.x0 = centre + distance * across - foot * length * direction;
+    s.x1 = s.x0 + length * direction;
+    s.v0 = random_vector(0.3);
+    s.v1 = random_vector(0.3);
+    TangentialHistory closed, general;
+    for (int step = 0; step < 20; ++step) {
+      const PosedShape grain{ball, centre, Eigen::Quaterniond::Identity()};
+      const WireGrainContact a = wire_sphere_contact(law(0.3), centre, radius, motion, s, 1e-3, closed);
+      const WireGrainContact b = wire_grain_contact(law(0.3), grain, motion, s, 1e-3, general);
+      ASSERT_EQ(a.touching, b.touching) << "trial " << trial << " step " << step;
+      EXPECT_NEAR(a.overlap, b.overlap, 1e-12);
+      if (a.touching) {
+        ++touching;
+        if (a.load_parameter == 0.0 || a.load_parameter == 1.0) ++clamped;
+        EXPECT_NEAR(a.load_parameter, b.load_parameter, 1e-10);
+        EXPECT_NEAR((a.force_bead0 - b.force_bead0).norm(), 0.0, 1e-11);
+        EXPECT_NEAR((a.force_bead1 - b.force_bead1).norm(), 0.0, 1e-11);
+        EXPECT_NEAR((a.torque_grain - b.torque_grain).norm(), 0.0, 1e-11);
+        EXPECT_EQ(a.sliding, b.sliding);
+      }
+      s.x0 += 1e-3 * s.v0;
+      s.x1 += 1e-3 * s.v1;
+    }
+  }
+  EXPECT_GT(touching, 1000);  // most pairs touch, some at a clamped end
+  EXPECT_GT(clamped, 100);
+}
+
+// Beyond the end x1 the foot is clamped to t = 1: bead 1 takes the whole force, along
+// x1 − c, of magnitude k_n (R + r_w − |x1 − c|).
+TEST(WireOnStockSphere, PastTheEndOfTheSegmentTheLastBeadTakesTheWholeForce) {
+  const double radius = 1.0;
+  GrainMotion motion;
+  motion.mass = 4.0;
+  WireSegmentState s;
+  s.radius = kWireRadius;
+  s.m0 = s.m1 = 0.01;
+  const Vector3d out = Vector3d(1.0, 2.0, 2.0) / 3.0;
+  s.x1 = (radius + kWireRadius - kOverlap) * out;
+  s.x0 = s.x1 + 0.4 * out.unitOrthogonal() + 0.3 * out;  // leaning away: the foot beyond x1
+  TangentialHistory history;
+  const WireGrainContact c = wire_sphere_contact(law(), Vector3d::Zero(), radius, motion, s, 1e-4, history);
+  ASSERT_TRUE(c.touching);
+  EXPECT_EQ(c.load_parameter, 1.0);
+  EXPECT_NEAR(c.overlap, kOverlap, 1e-14);
+  EXPECT_NEAR(c.force_bead0.norm(), 0.0, 1e-16);
+  EXPECT_NEAR((c.force_bead1 - 15.7 * kOverlap * out).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(c.torque_grain.norm(), 0.0, 1e-15);
+}
+
+// An axis through the centre (a wire pushed through a sphere): a finite force k_n (R + r_w)
+// across the segment, never NaN.
+TEST(WireOnStockSphere, AnAxisThroughTheCentreGetsAFiniteForceAcrossTheSegment) {
+  GrainMotion motion;
+  motion.mass = 4.0;
+  WireSegmentState s;
+  s.radius = kWireRadius;
+  s.m0 = s.m1 = 0.01;
+  s.x0 = Vector3d(-0.2, 0.0, 0.0);
+  s.x1 = Vector3d(0.2, 0.0, 0.0);
+  TangentialHistory history;
+  const WireGrainContact c = wire_sphere_contact(law(), Vector3d::Zero(), 1.0, motion, s, 1e-4, history);
+  ASSERT_TRUE(c.touching);
+  EXPECT_NEAR(c.normal.norm(), 1.0, 1e-15);
+  EXPECT_NEAR(c.normal.dot(s.x1 - s.x0), 0.0, 1e-15);
+  EXPECT_NEAR(c.normal_force, 15.7 * (1.0 + kWireRadius), 1e-12);
+  EXPECT_TRUE((c.force_bead0 + c.force_bead1).allFinite());
 }

@@ -45,17 +45,27 @@ Vector3d random_step(std::mt19937_64& rng, double length) {
   return u(rng) * Vector3d(n(rng), n(rng), n(rng)).normalized();
 }
 
+// The exact gap of segment s and grain k; a stock sphere by the general geometry of a
+// one-vertex grain (not the closed form HeldGrains uses for it).
+double exact_gap(const HeldGrains& held, int k, const Segment& s) {
+  const HeldGrain& g = held.grain(k);
+  if (g.shape != HeldGrain::kSphere) return segment_contact(held.posed(k), s.x0, s.x1, kWireRadius).gap;
+  const ConvexShape ball = ConvexShape::sphere(g.sphere_radius);
+  return segment_contact(PosedShape(ball, g.position, Quaterniond::Identity()), s.x0, s.x1, kWireRadius).gap;
+}
+
 // Tags of the grains touching the segment, by the exact gap against every grain.
 std::vector<long> touching_brute_force(const HeldGrains& held, const Segment& s) {
   std::vector<long> tags;
   for (int k = 0; k < held.size(); ++k)
-    if (segment_contact(held.posed(k), s.x0, s.x1, kWireRadius).gap <= 0.0) tags.push_back(held.grain(k).tag);
+    if (exact_gap(held, k, s) <= 0.0) tags.push_back(held.grain(k).tag);
   std::sort(tags.begin(), tags.end());
   return tags;
 }
 
 // Grains on a jittered 4 × 4 × 2 lattice (spacing 1.9, bounding radius ≤ 1.05), tags in
-// scrambled order, and wire segments threaded between them.
+// scrambled order, and wire segments threaded between them. The grains are cubes,
+// ellipsoids and stock spheres (radius 0.8) in turn.
 class PairCache : public ::testing::Test {
  protected:
   PairCache() : rng(20261124) {
@@ -70,7 +80,11 @@ class PairCache : public ::testing::Test {
         for (int l = 0; l < 2; ++l) {
           HeldGrain g;
           g.tag = tags[grains.size()];
-          g.shape = static_cast<int>(grains.size() % 2);
+          g.shape = static_cast<int>(grains.size() % 3);
+          if (g.shape == 2) {
+            g.shape = HeldGrain::kSphere;
+            g.sphere_radius = 0.8;
+          }
           g.position = Vector3d(1.9 * i + jitter(rng), 1.9 * j + jitter(rng), 1.9 * l + jitter(rng));
           g.orientation = random_rotation(rng);
           g.motion.mass = 1.0;
@@ -117,7 +131,7 @@ TEST_F(PairCache, VisitsEveryTouchingPairInTagOrderWhileSegmentsAndGrainsMove) {
       cache.for_each_pair(long(key), held, s.x0, s.x1, kWireRadius, [&](int k, const Vector3d& shift) {
         EXPECT_EQ(shift, Vector3d::Zero());
         visited.push_back(held.grain(k).tag);
-        const double gap = segment_contact(held.posed(k), s.x0, s.x1, kWireRadius).gap;
+        const double gap = exact_gap(held, k, s);
         if (gap <= 0.0) touching.push_back(held.grain(k).tag);
         return gap;
       });
@@ -213,6 +227,22 @@ TEST_F(PairCache, AGrainAddedOrRemovedResetsTheReference) {
   grains[0].shape = 1 - grains[0].shape;
   cache.hold(hold());
   EXPECT_EQ(cache.resets(), 3);
+  ASSERT_EQ(grains[2].shape, HeldGrain::kSphere);
+  grains[2].sphere_radius *= 1.01;  // a sphere that grew (fix adapt/radius, insertion)
+  cache.hold(hold());
+  EXPECT_EQ(cache.resets(), 4);
+}
+
+TEST_F(PairCache, ASphereNeedsAFinitePositiveRadius) {
+  for (double bad : {0.0, -0.8, std::nan(""), double(INFINITY)}) {
+    grains[2].sphere_radius = bad;
+    try {
+      hold();
+      FAIL() << "accepted sphere radius " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.argument()), "sphere_radius");
+    }
+  }
 }
 
 TEST(PairCacheArguments, SkinMustBePositiveAndFinite) {

@@ -503,7 +503,8 @@ class Errors(DeckTestCase):
 
     def test_groups_and_the_nscd_fix(self):
         self.check("fix nscd grains nscd/polyhedra\nfix wg wire wire/grain wire",
-                   "fix wire/grain (id wg): grain group 'wire' has no grains")
+                   "fix wire/grain (id wg): grain group 'wire' has no grains (polyhedra, or spheres of "
+                   "atom_style sphere or granular in the hybrid)")
         self.check("fix nscd grains nscd/polyhedra\nfix wg grains wire/grain grains",
                    "fix wire/grain (id wg): wire group 'grains' has no wire beads")
         self.check("fix nscd grains nscd/polyhedra\nfix wg all wire/grain grains",
@@ -544,8 +545,8 @@ create_box 1 box
 create_wire 1 line 0 0 0 1 0 0
 fix wg all wire/grain all
 """
-        self.assertStopsWith(run(text), "fix wire/grain (id wg): needs atom_style hybrid with wire and polyhedron, "
-                                        "not 'wire'")
+        self.assertStopsWith(run(text), "fix wire/grain (id wg): needs atom_style hybrid with wire and polyhedron "
+                                        "(or sphere, granular), not 'wire'")
 
 
 class Capstan(DeckTestCase):
@@ -584,12 +585,21 @@ class Capstan(DeckTestCase):
         points = first + arc + last
         return "\n".join(f"{x!r} 0.0 {z!r}" for x, z in points) + "\n", chord, tangent0, tangent1
 
-    def slip_ratio(self, wrap):
-        text, chord, tangent0, tangent1 = self.polyline(wrap)
-        made = scene([(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)],
+    def make_scene(self, polyline, chord):
+        """The sphere (atom 1, group grains) at the origin and the wire (atoms 2...,
+        group wire) through `polyline`, as a data file; returns the run that wrote it."""
+        return scene([(0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)],
                      [f"polyline wire.txt segment {chord!r} radius {self.WIRE_RADIUS}"],
                      shape=f"sphere {self.RADIUS}", sweep=None, density=1e6, box=(-3, 3, -3, 3, -3, 3),
-                     files={"wire.txt": text})
+                     files={"wire.txt": polyline})
+
+    def make_deck(self, body):
+        """The deck that reads the scene and runs `body` (which defines fix wg)."""
+        return deck("fix             nscd grains nscd/polyhedra\n" + body)
+
+    def slip_ratio(self, wrap):
+        text, chord, tangent0, tangent1 = self.polyline(wrap)
+        made = self.make_scene(text, chord)
         target = np.exp(self.MU * wrap)
         # T₂/T₁ rises from 1 to 0.8 e^{μθ} in 2 time units (a first run), then by
         # 0.4 e^{μθ} in 10 (a second run, whose thermo table is read)
@@ -598,13 +608,12 @@ class Capstan(DeckTestCase):
         t1 = self.T1
         # T₁ pulls the first bead (atom 2: the grain is atom 1) back along the first leg,
         # T₂ pulls the last bead on along the last
-        r = run(deck(f"""
+        r = run(self.make_deck(f"""
 variable        last equal count(all)
 group           pulled1 id 2
 group           pulled2 id ${{last}}
 fix             elastic wire wire/elastic m_rot 0
 fix             integr wire nve/gear
-fix             nscd grains nscd/polyhedra
 fix             wg wire wire/grain grains mu_s {self.MU} mu_d {self.MU}
 fix             calm wire viscous 0.0002
 timestep        1e-4

@@ -21,7 +21,11 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
   bounding_radius_.reserve(grains_.size());
   for (std::size_t k = 0; k < grains_.size(); ++k) {
     const HeldGrain& g = grains_[k];
-    if (g.shape < 0 || g.shape >= library.size())
+    if (g.shape == HeldGrain::kSphere) {
+      if (!(g.sphere_radius > 0.0) || !std::isfinite(g.sphere_radius))
+        throw InvalidArgument("sphere_radius", "sphere " + std::to_string(g.tag) + " has radius " +
+                                                   format_number(g.sphere_radius) + " (finite and > 0 expected)");
+    } else if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("shape", "grain " + std::to_string(g.tag) + " has shape " + std::to_string(g.shape) +
                                          ", not one of the " + std::to_string(library.size()) + " library shapes");
     if (!(g.position.allFinite() && g.orientation.coeffs().allFinite() && g.motion.velocity.allFinite() &&
@@ -29,8 +33,9 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
       throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a non-finite pose or velocity");
     if (!(g.orientation.norm() > 0.0))
       throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a zero orientation quaternion");
-    bounding_radius_.push_back(library[g.shape].bounding_radius);
-    largest = std::max(largest, library[g.shape].bounding_radius);
+    const double bounding = g.shape == HeldGrain::kSphere ? g.sphere_radius : library[g.shape].bounding_radius;
+    bounding_radius_.push_back(bounding);
+    largest = std::max(largest, bounding);
     index_of_tag_[g.tag] = static_cast<int>(k);
   }
   const double cell = largest + segment_reach;
@@ -69,7 +74,10 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
   WireSegmentState moved = segment;
   moved.x0 -= shift;
   moved.x1 -= shift;
-  WireGrainContact c = wire_grain_contact(law, posed(k), grains_[k].motion, moved, dt, history);
+  const HeldGrain& g = grains_[k];
+  WireGrainContact c = g.shape == HeldGrain::kSphere
+                           ? wire_sphere_contact(law, g.position, g.sphere_radius, g.motion, moved, dt, history)
+                           : wire_grain_contact(law, posed(k), g.motion, moved, dt, history);
   c.point += shift;
   return c;
 }

@@ -1,5 +1,7 @@
 // The grains as the wire sees them during one NSCD step (paper Sec. 2.4, Fig. 5): posed
 // once, held in place for the N wire sub-steps, with the velocity of the last NSCD step.
+// Stock granular spheres (shape kSphere, integrated by LIGGGHTS every step) are held for
+// one step and touched through the closed form wire_sphere_contact.
 // A broad-phase grid over their centres finds the grains within reach of a wire segment;
 // wire_grain_contact (wire_grain_contact.h) then gives the exact contact.
 //
@@ -32,8 +34,10 @@
 namespace wiregrain {
 
 struct HeldGrain {
+  static constexpr int kSphere = -1;  // `shape` of a stock granular sphere (no library shape)
   long tag = 0;
-  int shape = 0;     // index in the shape library
+  int shape = 0;     // index in the shape library, or kSphere
+  double sphere_radius = 0.0;  // shape == kSphere: its radius (wire_sphere_contact)
   int material = 0;  // the caller's material index (the atom type), carried along
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
@@ -49,15 +53,15 @@ struct GrainBox {
 class HeldGrains {
  public:
   // segment_reach: the largest ℓ/2 + r_w of a segment that will be queried (> 0).
-  // Throws InvalidArgument: a grain's shape not in the library ("shape"), a non-finite
-  // pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
+  // Throws InvalidArgument: a grain's shape not in the library ("shape"), a sphere whose
+  // radius is not finite and > 0 ("sphere_radius"), a non-finite pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
   // shorter than twice the interaction distance ("box").
   HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
              double segment_reach);
 
   int size() const { return static_cast<int>(grains_.size()); }
   const HeldGrain& grain(int k) const { return grains_[k]; }
-  // grain k posed, made on first use: the wire reaches few of the grains, and posing all
+  // grain k posed (a library shape, not a sphere), made on first use: the wire reaches few of the grains, and posing all
   // of them every NSCD step was a fixed cost of the coupling (bench/column_table1.py at N = 1)
   const PosedShape& posed(int k) const {
     if (!posed_[k]) posed_[k].emplace((*library_)[grains_[k].shape].shape, grains_[k].position, grains_[k].orientation);

@@ -34,17 +34,24 @@ WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape&
   out.overlap = -g.gap;
   out.normal = g.normal;
   if (!(out.overlap > 0.0)) return out;
-  out.touching = true;
   const double t = load_point_parameter(grain, g, segment, ContactOptions().angle_tolerance);
+  load_touching_pair(law, grain.position(), motion, segment, t, dt, history, out);
+  return out;
+}
+
+void load_touching_pair(const SoftContactLaw& law, const Eigen::Vector3d& centre, const GrainMotion& motion,
+                        const WireSegmentState& segment, double t, double dt, TangentialHistory& history,
+                        WireGrainContact& out) {
+  out.touching = true;
   out.load_parameter = t;
   const Eigen::Vector3d axis_point = segment.x0 + t * (segment.x1 - segment.x0);
-  out.point = axis_point - (segment.radius - 0.5 * out.overlap) * g.normal;
-  const Eigen::Vector3d arm = out.point - grain.position();
+  out.point = axis_point - (segment.radius - 0.5 * out.overlap) * out.normal;
+  const Eigen::Vector3d arm = out.point - centre;
   const Eigen::Vector3d wire_velocity = (1.0 - t) * segment.v0 + t * segment.v1;
   const Eigen::Vector3d grain_velocity = motion.velocity + motion.angular_velocity.cross(arm);
   const double wire_mass = segment.m0 + segment.m1;
   const double effective_mass = wire_mass * motion.mass / (wire_mass + motion.mass);
-  const SoftContactForce f = soft_contact_force(law, out.overlap, g.normal, wire_velocity - grain_velocity, dt,
+  const SoftContactForce f = soft_contact_force(law, out.overlap, out.normal, wire_velocity - grain_velocity, dt,
                                                 effective_mass, history);
   out.normal_force = f.normal_force;
   out.sliding = history.sliding;
@@ -52,6 +59,30 @@ WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape&
   out.force_bead1 = t * f.force;
   out.force_grain = -(out.force_bead0 + out.force_bead1);
   out.torque_grain = arm.cross(out.force_grain);
+}
+
+WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vector3d& centre, double sphere_radius,
+                                     const GrainMotion& motion, const WireSegmentState& segment, double dt,
+                                     TangentialHistory& history) {
+  WireGrainContact out;
+  SegmentContact& g = out.geometry;
+  const Eigen::Vector3d axis = segment.x1 - segment.x0;
+  const double length2 = axis.squaredNorm();
+  g.t = length2 > 0.0 ? std::min(1.0, std::max(0.0, (centre - segment.x0).dot(axis) / length2)) : 0.0;
+  g.t_begin = g.t_end = g.t;
+  g.point_on_segment = segment.x0 + g.t * axis;
+  g.point_on_core = centre;
+  const Eigen::Vector3d out_of_centre = g.point_on_segment - centre;
+  g.distance = out_of_centre.norm();
+  g.gap = g.distance - (sphere_radius + segment.radius);
+  if (g.distance > 0.0)
+    g.normal = out_of_centre / g.distance;
+  else  // the axis through the centre: any way out across the segment
+    g.normal = length2 > 0.0 ? Eigen::Vector3d(axis.unitOrthogonal()) : Eigen::Vector3d::UnitZ();
+  out.overlap = -g.gap;
+  out.normal = g.normal;
+  if (!(out.overlap > 0.0)) return out;
+  load_touching_pair(law, centre, motion, segment, g.t, dt, history, out);
   return out;
 }
 

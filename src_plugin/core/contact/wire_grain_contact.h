@@ -80,4 +80,21 @@ WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape&
                                     const GrainMotion& motion, const WireSegmentState& segment,
                                     double dt, TangentialHistory& history);
 
+// The force of a touching pair whose overlap and normal are in `out`, loaded at t on the
+// axis (the part after the geometry above, for grains of any kind): the body's centre of
+// mass `centre`. Sets touching and everything after `normal`.
+void load_touching_pair(const SoftContactLaw& law, const Eigen::Vector3d& centre, const GrainMotion& motion,
+                        const WireSegmentState& segment, double t, double dt, TangentialHistory& history,
+                        WireGrainContact& out);
+
+// The same contact against a sphere of radius R centred at c (a stock LIGGGHTS granular
+// sphere; fix wire/sphere), in closed form: t = clamp((c − x0)·a / |a|², 0, 1) with
+// a = x1 − x0, x(t) the foot of c on the segment, d = |x(t) − c|, overlap R + r_w − d,
+// n = (x(t) − c)/d; an axis through the centre (d = 0) takes a unit normal ⟂ a. The
+// load point is the foot, unique for a sphere. Same force as against a polyhedron
+// whose core is the point c (ConvexShape::sphere), without the GJK of the general path.
+WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vector3d& centre, double sphere_radius,
+                                     const GrainMotion& motion, const WireSegmentState& segment, double dt,
+                                     TangentialHistory& history);
+
 }  // namespace wiregrain

@@ -20,7 +20,8 @@ void WireGrainPairCache::hold(const HeldGrains& held) {
   for (int k = 0; k < held.size(); ++k) {
     const HeldGrain& g = held.grain(k);
     const auto it = reference_.find(g.tag);
-    if (it == reference_.end() || it->second.shape != g.shape) return reset(held);
+    if (it == reference_.end() || it->second.shape != g.shape || it->second.bounding_radius != held.bounding_radius(k))
+      return reset(held);
     const Pose& ref = it->second;
     bound = std::max(bound, rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation,
                                                ref.bounding_radius));

@@ -17,7 +17,7 @@
 // at most 2 R_g sin(θ/2) for a rotation by θ; R_g the bounding radius); by the triangle
 // inequality the grains moved at most D(now) + D(build) since the entry was built. The
 // reference poses are reset (and every entry dropped) when D reaches s/2, when a grain
-// appears, disappears or changes its shape. An entry whose segment changed its radius is
+// appears, disappears or changes its shape or bounding radius (a sphere that grew). An entry whose segment changed its radius is
 // rebuilt. Grains move only when fix nscd/polyhedra solves, so D is updated once per held
 // grain set (hold()); segments are checked at every visit.
 #pragma once
