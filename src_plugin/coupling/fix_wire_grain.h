@@ -26,6 +26,11 @@
    step, which averages over its N steps, applies (Σ F)/N over h = N dt: the grain gets
    exactly the impulse dt·ΣF the wire received.
 
+   Stock LIGGGHTS spheres: a grain group without polyhedra is taken as granular spheres
+   (atom_style sphere/granular in the hybrid, integrated by fix nve/sphere every step):
+   the same law, the geometry in closed form (wire_sphere_contact), the spheres gathered
+   and their forces and torques applied every step (no sub-cycling).
+
    Tangential springs per (segment, grain), kept by the segment's first bead in fix
    WIRE_GRAIN_HISTORY_<ID> (migrate, restart; dropped when the pair separates).
 
