@@ -20,11 +20,10 @@
 using namespace LAMMPS_NS;
 
 ComputeColumnHeight::ComputeColumnHeight(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), quantile_(0.98), grains_(NULL) {
+    : Compute(lmp, iarg, narg, arg), quantile_(0.98), grains_(atom) {
   wiregrain_lmp::StyleArgs args(error, "compute", "column/height", id, narg, arg, iarg);
-  grains_ = AtomVecPolyhedron::of(atom);
-  if (!grains_)
-    args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
+  std::string why;
+  if (!grains_.available(why)) args.fail(why);
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "quantile") quantile_ = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
@@ -38,7 +37,7 @@ ComputeColumnHeight::ComputeColumnHeight(LAMMPS *lmp, int &iarg, int narg, char 
 void ComputeColumnHeight::init() {
   long local = 0, total = 0;
   for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0) local++;
+    if ((atom->mask[i] & groupbit) && grains_.is_grain(i)) local++;
   MPI_Allreduce(&local, &total, 1, MPI_LONG, MPI_SUM, world);
   if (total == 0)
     wiregrain_lmp::style_error(error, "compute", "column/height", id,
@@ -49,11 +48,7 @@ double ComputeColumnHeight::compute_scalar() {
   invoked_scalar = update->ntimestep;
   std::vector<double> tops;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || atom->shapetype[i] < 0) continue;
-    const double *x = atom->x[i], *q = atom->quaternion[i];
-    const wiregrain::PosedShape grain(grains_->shapes()[atom->shapetype[i]].shape, Eigen::Vector3d(x[0], x[1], x[2]),
-                                      Eigen::Quaterniond(q[0], q[1], q[2], q[3]));
-    tops.push_back(wiregrain::grain_top(grain));
+    if ((atom->mask[i] & groupbit) && grains_.is_grain(i)) tops.push_back(grains_.top(i));
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, tops);
   scalar = all.empty() ? 0.0 : wiregrain::quantile(all, quantile_);

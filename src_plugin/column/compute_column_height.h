@@ -5,7 +5,7 @@
    compute ID grain-group column/height [quantile 0.98]
 
    scalar = the q-quantile of the grains' top heights (each grain's highest point: core
-   vertex + sweep radius), linear interpolation between order statistics
+   vertex + sweep radius; stock spheres, common/grain_atoms.h: centre + radius), linear interpolation between order statistics
    (core/column/observables.h); q = 1 is the highest point of all. With q = 0.98 the top
    2 % of the grains are ignored (18 of the paper's 915), so one grain resting on top of
    the column or caught on the wire above it does not change the height.
@@ -22,6 +22,7 @@ ComputeStyle(column/height,ComputeColumnHeight)
 #ifndef LMP_COMPUTE_COLUMN_HEIGHT_H
 #define LMP_COMPUTE_COLUMN_HEIGHT_H
 
+#include "common/grain_atoms.h"
 #include "compute.h"
 
 namespace LAMMPS_NS {
@@ -34,7 +35,7 @@ class ComputeColumnHeight : public Compute {
 
  private:
   double quantile_;
-  class AtomVecPolyhedron *grains_;
+  wiregrain_lmp::GrainAtoms grains_;
 };
 
 }  // namespace LAMMPS_NS

@@ -20,10 +20,10 @@
 using namespace LAMMPS_NS;
 
 ComputeColumnRetention::ComputeColumnRetention(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), wire_groupbit_(0), axis_given_(false), fixed_radius_(0.0) {
+    : Compute(lmp, iarg, narg, arg), grains_(atom), wire_groupbit_(0), axis_given_(false), fixed_radius_(0.0) {
   wiregrain_lmp::StyleArgs args(error, "compute", "column/retention", id, narg, arg, iarg);
-  if (!AtomVecPolyhedron::of(atom))
-    args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
+  std::string why;
+  if (!grains_.available(why)) args.fail(why);
   if (args.done()) args.fail("expected the wire group or 'radius r' after 'column/retention'");
   const std::string first = args.next_keyword();
   if (first == "radius") {
@@ -63,8 +63,8 @@ void ComputeColumnRetention::init() {
   }
   long local[2] = {0, 0}, total[2];  // grains, beads
   for (int i = 0; i < atom->nlocal; i++) {
-    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0) local[0]++;
-    if ((atom->mask[i] & wire_groupbit_) && atom->shapetype[i] < 0) local[1]++;
+    if ((atom->mask[i] & groupbit) && grains_.is_grain(i)) local[0]++;
+    if ((atom->mask[i] & wire_groupbit_) && !grains_.is_grain(i)) local[1]++;
   }
   MPI_Allreduce(local, total, 2, MPI_LONG, MPI_SUM, world);
   if (total[0] == 0)
@@ -84,8 +84,8 @@ void ComputeColumnRetention::compute_vector() {
   std::vector<Eigen::Vector3d> beads, grains;
   for (int i = 0; i < atom->nlocal; i++) {
     const Eigen::Vector3d x(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
-    if ((atom->mask[i] & wire_groupbit_) && atom->shapetype[i] < 0) beads.push_back(x);
-    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0) grains.push_back(x);
+    if ((atom->mask[i] & wire_groupbit_) && !grains_.is_grain(i)) beads.push_back(x);
+    if ((atom->mask[i] & groupbit) && grains_.is_grain(i)) grains.push_back(x);
   }
   double local[2] = {beads.empty() ? 0.0 : wiregrain::mean_axis_distance(beads, axis) * double(beads.size()),
                      double(beads.size())},

@@ -20,6 +20,7 @@ ComputeStyle(column/retention,ComputeColumnRetention)
 
 #include <string>
 
+#include "common/grain_atoms.h"
 #include "compute.h"
 
 namespace LAMMPS_NS {
@@ -32,6 +33,7 @@ class ComputeColumnRetention : public Compute {
   void compute_vector();
 
  private:
+  wiregrain_lmp::GrainAtoms grains_;
   std::string wire_group_;
   int wire_groupbit_;
   bool axis_given_;

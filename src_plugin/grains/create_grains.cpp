@@ -146,8 +146,11 @@ void CreateGrains::command(int narg, char **arg) {
   wiregrain_lmp::StyleArgs args(error, "command", "create_grains", id, narg, arg, 0);
   if (domain->box_exist == 0) args.fail("create a simulation box first");
   AtomVecPolyhedron *poly = AtomVecPolyhedron::of(atom);
-  if (!poly)
-    args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
+  // without atom_style polyhedron: stock granular spheres of the grains' volumes
+  const bool spheres = !poly && atom->sphere_flag;
+  if (!poly && !spheres)
+    args.fail("needs atom_style polyhedron or sphere (granular), plain or in a hybrid, not '" +
+              std::string(atom->atom_style) + "'");
   if (domain->triclinic) args.fail("triclinic boxes are not supported");
   if (narg < 4) args.fail("expected: create_grains type N layer|random region-ID ...");
 
@@ -222,6 +225,8 @@ void CreateGrains::command(int narg, char **arg) {
     }
   }
   if (!have_seed) args.fail("missing keyword 'seed' (a positive integer for the random numbers)");
+  if (spheres && !shapes_file.empty())
+    args.fail("keyword 'write_shapes' applies to polyhedra (atom_style polyhedron), not to spheres");
   // a sphere is the one-vertex grain whose sweep radius is its radius R
   if (choice.kind == "sphere" && have_sweep)
     args.fail("keyword 'sweep' does not apply to 'shape sphere' (its radius is the sweep radius)");
@@ -284,12 +289,23 @@ void CreateGrains::command(int narg, char **arg) {
   }
 
   // Shapes, generated identically on every rank and added to every rank's library in the
-  // same order.
+  // same order (spheres: to a library of this command only).
   std::mt19937_64 rng(seed);
   const int n = static_cast<int>(n_grains);
   std::vector<int> shape_of(n);
   std::vector<Eigen::Quaterniond> body_to_input(n);
-  const int library_before = poly->shapes().size();
+  wiregrain::ShapeLibrary own_library;
+  const auto add_shape = [&](const wiregrain::ConvexShape &shape, double q[4]) {
+    if (poly) return poly->add_shape(shape, q, NULL);
+    wiregrain::ShapeLibrary::Placement placement;
+    const int index = own_library.add(shape, &placement);
+    q[0] = placement.rotation.w();
+    q[1] = placement.rotation.x();
+    q[2] = placement.rotation.y();
+    q[3] = placement.rotation.z();
+    return index;
+  };
+  const int library_before = poly ? poly->shapes().size() : 0;
   try {
     if (choice.kind == "ellipsoid") {
       for (int k = 0; k < n; k++) {
@@ -297,7 +313,7 @@ void CreateGrains::command(int narg, char **arg) {
         const wiregrain::ConvexShape s = wiregrain::ConvexShape::random_ellipsoid(
             rng, static_cast<int>(n_vertices), a, b_over_a, c_over_a, sweep);
         double q[4];
-        shape_of[k] = poly->add_shape(s, q, NULL);
+        shape_of[k] = add_shape(s, q);
         body_to_input[k] = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
       }
     } else {
@@ -315,7 +331,7 @@ void CreateGrains::command(int narg, char **arg) {
       else
         s.reset(new wiregrain::ConvexShape(wiregrain::ConvexShape::from_vertex_file(choice.path, sweep)));
       double q[4];
-      const int index = poly->add_shape(*s, q, NULL);
+      const int index = add_shape(*s, q);
       for (int k = 0; k < n; k++) {
         shape_of[k] = index;
         body_to_input[k] = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
@@ -327,7 +343,17 @@ void CreateGrains::command(int narg, char **arg) {
   } catch (const wiregrain::NumericalFailure &e) {
     args.fail("'shape " + choice.kind + "': " + e.what());
   }
-  const wiregrain::ShapeLibrary &library = poly->shapes();
+  // spheres: each grain becomes the sphere of its volume (the swept one), placed in its stead
+  if (spheres) {
+    const int generated = own_library.size();
+    std::vector<int> sphere_of(generated);
+    for (int s = 0; s < generated; s++) {
+      const double radius = std::cbrt(3.0 * own_library[s].volume / (4.0 * kPi));
+      sphere_of[s] = own_library.add(wiregrain::ConvexShape::sphere(radius));
+    }
+    for (int k = 0; k < n; k++) shape_of[k] = sphere_of[shape_of[k]];
+  }
+  const wiregrain::ShapeLibrary &library = poly ? poly->shapes() : own_library;
 
   // Existing atoms, gathered on every rank: x, quaternion, shape, radius, tag, next bead.
   constexpr int kValues = 11;
@@ -335,8 +361,8 @@ void CreateGrains::command(int narg, char **arg) {
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     for (int d = 0; d < 3; d++) mine.push_back(atom->x[i][d]);
-    for (int d = 0; d < 4; d++) mine.push_back(atom->quaternion[i][d]);
-    mine.push_back(atom->shapetype[i]);
+    for (int d = 0; d < 4; d++) mine.push_back(poly ? atom->quaternion[i][d] : double(d == 0));
+    mine.push_back(poly ? atom->shapetype[i] : -1);
     mine.push_back(atom->radius[i]);
     mine.push_back(atom->tag[i]);
     mine.push_back(wire ? wire->wire_next[i] : 0);
@@ -462,12 +488,20 @@ void CreateGrains::command(int narg, char **arg) {
     const int i = atom->nlocal - 1;
     atom->tag[i] = maxtag + 1 + k;
     atom->image[i] = image;
+    for (int d = 0; d < 3; d++) atom->v[i][d] = atom->omega[i][d] = 0.0;
+    if (spheres) {  // as LIGGGHTS' `set ... diameter D density rho` makes it
+      const double r = library[shape_of[k]].shape.sweep_radius();
+      atom->radius[i] = r;
+      atom->rmass[i] = rho * 4.0 * kPi / 3.0 * r * r * r;
+      if (atom->density_flag) atom->density[i] = rho;
+      continue;
+    }
     const Eigen::Quaterniond &q = orientation[k];
     atom->quaternion[i][0] = q.w();
     atom->quaternion[i][1] = q.x();
     atom->quaternion[i][2] = q.y();
     atom->quaternion[i][3] = q.z();
-    for (int d = 0; d < 3; d++) atom->v[i][d] = atom->omega[i][d] = atom->angmom[i][d] = 0.0;
+    for (int d = 0; d < 3; d++) atom->angmom[i][d] = 0.0;
     poly->assign_shape(i, shape_of[k], rho);
   }
 
@@ -511,11 +545,13 @@ void CreateGrains::command(int narg, char **arg) {
 
   if (comm->me == 0) {
     char line[512];
-    std::string msg = "create_grains: " + std::to_string(n) + " grains (" +
+    std::string msg = "create_grains: " + std::to_string(n) + (spheres ? " spheres of the grains' volumes (" : " grains (") +
                       (layer ? "layer of " + std::to_string(sites.size()) + " lattice sites" : std::string("random")) +
                       " in region " + region_id + "), atom IDs " + std::to_string(maxtag + 1) + ".." +
-                      std::to_string(maxtag + n) + ", library shapes " + std::to_string(library_before) + ".." +
-                      std::to_string(library.size() - 1) + "\n";
+                      std::to_string(maxtag + n) +
+                      (spheres ? std::string("\n")
+                               : ", library shapes " + std::to_string(library_before) + ".." +
+                                     std::to_string(library.size() - 1) + "\n");
     if (close_pairs > 0)
       snprintf(line, sizeof line,
                "create_grains: minimum gap %.17g over %ld close pairs (bounding spheres meet), %ld attempts\n",

@@ -101,6 +101,20 @@ class Column(DeckTestCase):
             self.assertEqual(a[name], b[name], name)
         self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-12)
 
+    def test_stock_spheres_on_two_ranks(self):
+        # the same deck with -var grains spheres (stock Hertz spheres of the grains'
+        # volumes, fix nve/sphere, fix wall/gran with moving mesh walls): runs to the end
+        spheres = run(COLUMN, variables=dict(TINY, grains="spheres"), np_ranks=2)
+        self.assertRanCleanly(spheres)
+        self.assertIn("in.column: grain model 'spheres'", spheres.output)
+        self.assertIn("create_grains: 12 spheres of the grains' volumes", spheres.output)
+        obs = final_observables(spheres)
+        print(f"\ntiny column of stock spheres, 2 ranks: {obs}")
+        self.assertGreater(obs["phi_p"], 0.5)
+        self.assertGreater(obs["z_wpc"], 0.0)
+        self.assertGreater(obs["U_s/L"], 0.0)
+        self.assertGreater(obs["H_n"], 0.0)
+
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
@@ -121,6 +135,7 @@ class Column(DeckTestCase):
                                    ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
+                                   ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)

@@ -36,6 +36,43 @@ run             0
         print(f"\ncolumn height: max {t['top'][0]:.12g}, q = 0.75 {t['q75'][0]:.12g}, default q = 0.98 {t['h'][0]:.12g}")
 
 
+class StockSpheres(DeckTestCase):
+    def test_height_and_retention_of_spheres_beside_a_wire(self):
+        # atom_style hybrid wire sphere: six spheres of radii 0.5..1 at known places and a
+        # one-turn loop of radius 2 (its beads are not grains): tops z + r, the cylinder
+        # of the beads' mean distance 2
+        spheres = [(0.0, 0.0, 1.0, 0.5), (1.5, 0.0, 3.0, 0.6), (0.0, -2.5, 1.0, 0.7), (-4.0, 0.0, 4.0, 0.8),
+                   (3.0, 3.0, 6.0, 0.9), (-1.0, 1.0, 2.0, 1.0)]
+        made = "\n".join(f"create_atoms    1 single {x} {y} {z}\nset             atom {k + 1} diameter {2 * r} density 1"
+                         for k, (x, y, z, r) in enumerate(spheres))
+        r = run(f"""
+units           lj
+atom_style      hybrid wire sphere
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -6 6 -6 6 -1 9
+create_box      2 box
+{made}
+create_wire     2 loop 0 0 6.5 2.0 1 0.3
+group           grains type 1
+group           wire type 2
+compute         top all column/height quantile 1
+compute         h all column/height quantile 0.5
+compute         phi all column/retention wire axis 0 0
+thermo_style    custom step c_top c_h c_phi[1] c_phi[2] c_phi[3] c_phi[4]
+thermo_modify   format float %.15g
+run             0
+""")
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        tops = [z + radius for _, _, z, radius in spheres]
+        self.assertAlmostEqual(t["top"][0], max(tops), delta=1e-12)
+        self.assertAlmostEqual(t["h"][0], np.quantile(tops, 0.5), delta=1e-12)
+        self.assertAlmostEqual(t["phi[2]"][0], 2.0, delta=1e-12)
+        inside = sum(math.hypot(x, y) < 2.0 for x, y, _, _ in spheres)
+        self.assertEqual((t["phi[3]"][0], t["phi[4]"][0]), (inside, len(spheres)))
+
+
 class Retention(DeckTestCase):
     def test_grains_inside_the_wire_cylinder(self):
         # a one-turn loop of radius 2 about the box axis (0, 0); grains at horizontal

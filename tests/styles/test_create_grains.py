@@ -565,6 +565,54 @@ create_grains   1 {n} layer cyl 2 seed 8 spacing 2.5 a_max 0.9 a_min 0.7 write_s
                                   f"{len(sites) + 1} grains asked, {len(sites)} sites")
 
 
+class StockSpheres(DeckTestCase):
+    """Without atom_style polyhedron, create_grains makes stock granular spheres, each of
+    the (swept) volume the grain of the same command would have: the same sites, the same
+    volumes in the same order, as the polyhedra's write_shapes file gives them."""
+
+    SPHERE_HEADER = HEADER.replace("atom_style      polyhedron", "atom_style      sphere")
+    SPHERE_FOOTER = """
+dump            d all custom 1 dump.s id x y z radius mass
+dump_modify     d format "%d %.17g %.17g %.17g %.17g %.17g"
+run             0
+"""
+
+    def test_spheres_of_the_grains_volumes(self):
+        for mode in ("layer cont 1.5", "random cont"):
+            command = f"""
+region          cont block -7 7 -4 4 0 10
+create_grains   1 40 {mode} seed 5 a_max 1.0 density 2.0"""
+            polyhedra = run(HEADER + command + " write_shapes shapes.txt\n" + FOOTER)
+            self.assertRanCleanly(polyhedra)
+            spheres = run(self.SPHERE_HEADER + command + "\n" + self.SPHERE_FOOTER)
+            self.assertRanCleanly(spheres)
+            self.assertIn("create_grains: 40 spheres of the grains' volumes", spheres.output)
+            grains = read_shapes(polyhedra.path("shapes.txt"))
+            d = read_dump(spheres.path("dump.s"))
+            volume = np.array([g.volume for g in grains])
+            np.testing.assert_allclose(4.0 / 3.0 * np.pi * d["radius"] ** 3, volume, rtol=1e-13, atol=0)
+            np.testing.assert_allclose(d["mass"], 2.0 * volume, rtol=1e-13, atol=0)
+            centres = np.array([d["x"], d["y"], d["z"]]).T
+            if mode.startswith("layer"):  # on the lattice sites of the polyhedra
+                np.testing.assert_array_equal(centres, np.array([g.x for g in grains]))
+            apart = [np.linalg.norm(centres[i] - centres[j]) - d["radius"][i] - d["radius"][j]
+                     for i in range(len(centres)) for j in range(i)]
+            self.assertGreater(min(apart), 0.0)
+            print(f"\n{mode}: 40 spheres of the grains' volumes, radii {d['radius'].min():.4f}.."
+                  f"{d['radius'].max():.4f}, smallest gap {min(apart):.4g}")
+
+    def test_errors(self):
+        text = self.SPHERE_HEADER + "region cont block -7 7 -4 4 0 4\n"
+        self.assertStopsWith(run(text + "create_grains 1 4 random cont seed 1 write_shapes s.txt\n"),
+                             "command create_grains (id -): keyword 'write_shapes' applies to polyhedra "
+                             "(atom_style polyhedron), not to spheres")
+        atomic = HEADER.replace("atom_style      polyhedron", "atom_style      atomic")
+        self.assertStopsWith(run(atomic + "region cont block -7 7 -4 4 0 4\n"
+                                 "create_grains 1 4 random cont seed 1\n"),
+                             "command create_grains (id -): needs atom_style polyhedron or sphere (granular), "
+                             "plain or in a hybrid, not 'atomic'")
+
+
 class Errors(DeckTestCase):
     def check(self, command, message, header=HEADER, files=None, pattern=None):
         text = header + "region cont block -7 7 -4 4 0 4\n" + command + "\nrun 0\n"
@@ -611,8 +659,6 @@ class Errors(DeckTestCase):
         self.check("create_grains 1 10 layer cont 2 seed 1 spacing 1.2", "grain ",
                    pattern=r"grain \d+ of 10 at the lattice site \(\S+, \S+, 2\) overlaps other grains in all "
                            r"1000 orientations tried \(increase 'spacing' or 'attempts'\)")
-        sphere = HEADER.replace("polyhedron", "sphere")
-        self.check(base, "needs atom_style polyhedron (or hybrid with polyhedron), not 'sphere'", header=sphere)
 
     def test_could_only_place(self):
         text = HEADER + "region cont block -2 2 -2 2 0 2\ncreate_grains 1 40 random cont seed 1 attempts 50\nrun 0\n"

@@ -1,0 +1,39 @@
+#include "grain_atoms.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "atom_vec_wire.h"
+
+#include "core/column/observables.h"
+#include "core/geometry/shape_library.h"
+
+namespace wiregrain_lmp {
+
+GrainAtoms::GrainAtoms(LAMMPS_NS::Atom *atom)
+    : atom_(atom), polyhedra_(LAMMPS_NS::AtomVecPolyhedron::of(atom)), wire_(LAMMPS_NS::AtomVecWire::of(atom)) {}
+
+bool GrainAtoms::available(std::string &why) const {
+  if (polyhedra_ || atom_->sphere_flag) return true;
+  why = "needs atom_style polyhedron or sphere (granular), plain or in a hybrid, not '" +
+        std::string(atom_->atom_style) + "'";
+  return false;
+}
+
+bool GrainAtoms::is_grain(int i) const {
+  if (polyhedra_) return atom_->shapetype[i] >= 0;
+  return !(wire_ && (wire_->wire_prev[i] || wire_->wire_next[i]));
+}
+
+double GrainAtoms::top(int i) const {
+  const double *x = atom_->x[i];
+  if (!polyhedra_) return x[2] + atom_->radius[i];
+  const double *q = atom_->quaternion[i];
+  const wiregrain::PosedShape grain(polyhedra_->shapes()[atom_->shapetype[i]].shape, Eigen::Vector3d(x[0], x[1], x[2]),
+                                    Eigen::Quaterniond(q[0], q[1], q[2], q[3]));
+  return wiregrain::grain_top(grain);
+}
+
+}  // namespace wiregrain_lmp

@@ -1,0 +1,34 @@
+// Which atoms are grains, for the column observables: the polyhedra of atom_style
+// polyhedron, or, in a system without it, the stock granular spheres (atom_style sphere or
+// granular) that are not wire beads (no chain links). Not a style of its own.
+#ifndef WIREGRAIN_GRAIN_ATOMS_H
+#define WIREGRAIN_GRAIN_ATOMS_H
+
+#include <string>
+
+namespace LAMMPS_NS {
+class Atom;
+class AtomVecPolyhedron;
+class AtomVecWire;
+}  // namespace LAMMPS_NS
+
+namespace wiregrain_lmp {
+
+class GrainAtoms {
+ public:
+  explicit GrainAtoms(LAMMPS_NS::Atom *atom);
+  // false when the atom style has neither polyhedra nor spheres; `why` then says so
+  bool available(std::string &why) const;
+  bool is_grain(int i) const;
+  // the grain's highest point (core vertex + sweep radius; a sphere's centre + radius)
+  double top(int i) const;
+
+ private:
+  LAMMPS_NS::Atom *atom_;
+  LAMMPS_NS::AtomVecPolyhedron *polyhedra_;
+  LAMMPS_NS::AtomVecWire *wire_;
+};
+
+}  // namespace wiregrain_lmp
+
+#endif
