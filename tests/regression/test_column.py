@@ -106,7 +106,7 @@ class Column(DeckTestCase):
         # volumes, fix nve/sphere, fix wall/gran with moving mesh walls): runs to the end
         spheres = run(COLUMN, variables=dict(TINY, grains="spheres"), np_ranks=2)
         self.assertRanCleanly(spheres)
-        self.assertIn("in.column: grain model 'spheres'", spheres.output)
+        self.assertIn("in.column: grain model spheres (nscd or spheres)", spheres.output)
         self.assertIn("create_grains: 12 spheres of the grains' volumes", spheres.output)
         obs = final_observables(spheres)
         print(f"\ntiny column of stock spheres, 2 ranks: {obs}")
@@ -136,6 +136,7 @@ class Column(DeckTestCase):
                                     "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
+                                   ({"grains": "cubes"}, "Label wasn't found in input script"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)
