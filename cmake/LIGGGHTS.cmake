@@ -67,7 +67,7 @@ set(_style_classes ANGLE_CLASS:angle ATOM_CLASS:atom BOND_CLASS:bond COMMAND_CLA
     COMPUTE_CLASS:compute DUMP_CLASS:dump FIX_CLASS:fix PAIR_CLASS:pair REGION_CLASS:region)
 
 set(LIGGGHTS_STAGED_SRC "${LIGGGHTS_STAGE}/src")
-file(GLOB _patches "${CMAKE_SOURCE_DIR}/cmake/patches/*.patch")
+file(GLOB _patches CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/cmake/patches/*.patch")
 list(SORT _patches)
 set(_stage_key "${_upstream}")
 foreach(_p IN LISTS _patches)

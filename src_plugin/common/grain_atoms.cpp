@@ -27,6 +27,8 @@ bool GrainAtoms::is_grain(int i) const {
   return !(wire_ && (wire_->wire_prev[i] || wire_->wire_next[i]));
 }
 
+bool GrainAtoms::is_polyhedron(int i) const { return polyhedra_ && atom_->shapetype[i] >= 0; }
+
 double GrainAtoms::top(int i) const {
   const double *x = atom_->x[i];
   if (!polyhedra_) return x[2] + atom_->radius[i];

@@ -20,6 +20,7 @@ class GrainAtoms {
   // false when the atom style has neither polyhedra nor spheres; `why` then says so
   bool available(std::string &why) const;
   bool is_grain(int i) const;
+  bool is_polyhedron(int i) const;  // a grain of atom_style polyhedron (else a stock sphere)
   // the grain's highest point (core vertex + sweep radius; a sphere's centre + radius)
   double top(int i) const;
 

@@ -387,6 +387,7 @@ wiregrain::WireSegmentState FixWireGrain::segment_of(int i, int j) const {
 // Statistics and the published record of a touching pair (segment from bead i).
 void FixWireGrain::record_contact(const wiregrain::WireGrainContact &c, int i, long grain_tag) {
   local_stats_[0] += 1.0;
+  segment_contacts_[i]++;
   if (c.sliding) local_stats_[4] += 1.0;
   local_stats_[1] = std::max(local_stats_[1], c.overlap);
   if (c.overlap / atom->radius[i] > local_stats_[2]) {
@@ -423,6 +424,7 @@ void FixWireGrain::evaluate(bool setup) {
   wiregrain::GrainLoadSums step_loads;
   wiregrain::GrainLoadSums &loads = setup ? step_loads : core_->sums;
   core_->contacts.clear();
+  segment_contacts_.assign(nlocal, 0);
   for (double &s : local_stats_) s = 0.0;
   stats_step_ = -1;
   long evaluations = 0;
@@ -498,6 +500,7 @@ void FixWireGrain::apply_bead_forces() {
       output_[i][e] = bead_force_[i][e];
       output_[i][3 + e] = 0.0;
     }
+    output_[i][3] = segment_contacts_[i];
   }
 }
 

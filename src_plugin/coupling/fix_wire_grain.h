@@ -43,7 +43,9 @@
 
    Outputs: vector [contacts, largest overlap, largest overlap / r_w, force of the wire on
    the grains averaged over the last NSCD step (x, y, z), exact segment–grain evaluations
-   of the step, contacts sliding (on the Coulomb limit)]; per-atom array (6): beads: force from the grains this step (3), 0 0 0;
+   of the step, contacts sliding (on the Coulomb limit)]; per-atom array (6): beads: force
+   from the grains this step (3), the grains touching the bead's segment (its sum over the
+   beads over the segments is z_wpc), 0, 0;
    grains: force and torque from the wire averaged over the last NSCD step. Publishes its
    contacts (kind wire_grain, a = the segment's first bead, b = the grain). */
 
@@ -121,6 +123,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
   double **output_;              // per-atom array (see above)
+  std::vector<int> segment_contacts_;  // this step, per owned bead: grains touching its segment
   int nmax_ghost_;
   double local_stats_[5];        // contacts, overlap, overlap / r_w, evaluations, sliding contacts
   double global_stats_[8];

@@ -66,6 +66,7 @@ void ComputeWireEnergy::init() {
 }
 
 void ComputeWireEnergy::check_current() {
+  if (!source_) init();  // defined since the last run and invoked before the next (write_dump)
   if (update->ntimestep != source_->energies_step())
     wiregrain_lmp::style_error(error, "compute", "wire/energy", id,
                                "fix wire/elastic has not computed this step (use the compute "

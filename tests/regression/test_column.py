@@ -3,9 +3,16 @@
 relaxed column's restart file gives the straight run's observables, and the deck's own
 checks of its variables stop with an ERROR."""
 
+import glob
+import json
+import os
 import re
+import subprocess
+import sys
 
-from liggghts_run import DeckTestCase, deck, main, run
+import numpy as np
+
+from liggghts_run import SOURCE, DeckTestCase, deck, main, run
 
 COLUMN = deck("input_scripts/in.column")
 TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "every_obs": 1000}
@@ -15,6 +22,42 @@ NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc")
 def final_observables(result):
     line = next(l for l in result.output.splitlines() if l.startswith("in.column final:"))
     return {name: float(re.search(re.escape(name) + r" = (\S+)", line).group(1)) for name in NAMES}
+
+
+def dump_observables(result, *options):
+    """postprocess/observables.py on the run's relaxed and final dumps: the final snapshot's
+    observables, H_n relative to the relaxed one."""
+    dumps = [sorted(glob.glob(result.path(f"post/column_{when}_*.dump")))[-1] for when in ("relaxed", "final")]
+    out = subprocess.run([sys.executable, os.path.join(SOURCE, "postprocess", "observables.py"), *dumps, "--json",
+                          *options], capture_output=True, text=True, check=True).stdout
+    return json.loads(out.splitlines()[-1])
+
+
+def minimal_dump(path):
+    """A dump custom file read the shortest way (not observables.py's reader): {column: array}."""
+    lines = open(path).read().splitlines()
+    start = lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS")))
+    names = lines[start].split()[2:]
+    table = np.loadtxt(lines[start + 1:], ndmin=2)
+    return dict(zip(names, table.T))
+
+
+def assert_dump_observables_match(test, result, *options):
+    obs, final = dump_observables(result, *options), final_observables(result)
+    print(f"\nfrom the dumps {obs}\nfrom the computes {final}")
+    test.assertAlmostEqual(obs["H_n"], final["H_n"], delta=1e-14)
+    test.assertEqual(obs["phi_p"], final["phi_p"])
+    test.assertAlmostEqual(obs["U_s/L"] / final["U_s/L"], 1.0, delta=1e-12)
+    test.assertAlmostEqual(obs["z_wpc"], final["z_wpc"], delta=1e-14)
+    # an independent reader: the 0.98 quantile of the tops of the final dump over that of
+    # the relaxed one, and the wire–grain contacts per segment
+    dumps = [minimal_dump(sorted(glob.glob(result.path(f"post/column_{w}_*.dump")))[-1])
+             for w in ("relaxed", "final")]
+    height = [np.quantile(d["c_gs[7]"][d["type"] == 1], 0.98) for d in dumps]
+    test.assertAlmostEqual(height[1] / height[0], final["H_n"], delta=1e-14)
+    beads = dumps[1]["type"] == 2
+    segments = np.count_nonzero(dumps[1]["c_energy[3]"][beads] > 0)
+    test.assertAlmostEqual(dumps[1]["f_wg[4]"][beads].sum() / segments, final["z_wpc"], delta=1e-14)
 
 
 class Column(DeckTestCase):
@@ -31,6 +74,12 @@ class Column(DeckTestCase):
         self.assertGreater(obs["z_wpc"], 0.0)
         self.assertGreater(obs["U_s/L"], 0.0)
         self.assertGreater(obs["H_n"], 0.0)
+
+    def test_observables_from_the_dumps(self):
+        # post/column_relaxed_*.dump, post/column_final_*.dump and post/shapes.txt of the
+        # run: the tops recomputed from the shapes and quaternions
+        self.assertRanCleanly(self.straight)
+        assert_dump_observables_match(self, self.straight, "--shapes", self.straight.path("post/shapes.txt"))
 
     def test_two_ranks(self):
         two = run(COLUMN, variables=TINY, np_ranks=2)
@@ -114,6 +163,8 @@ class Column(DeckTestCase):
         self.assertGreater(obs["z_wpc"], 0.0)
         self.assertGreater(obs["U_s/L"], 0.0)
         self.assertGreater(obs["H_n"], 0.0)
+        # from the dumps (tops z + radius, as for any code's spheres)
+        assert_dump_observables_match(self, spheres)
 
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
