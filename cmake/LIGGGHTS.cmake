@@ -195,6 +195,16 @@ if(WIREGRAIN_SANITIZE)
                               PROPERTIES COMPILE_OPTIONS "-fno-sanitize=alignment,null,vptr")
 endif()
 
+# LIGGGHTS' superquadric grains (atom_style superquadric, fix nve/superquadric, pair gran
+# on superquadrics): its Makefile.auto switches them on with these two definitions (and
+# std::beta of C++17). They change the layout of class Atom, so every object, the plugin's
+# too, is compiled with them (PUBLIC). Off by default: a separate build directory.
+option(WIREGRAIN_SUPERQUADRIC "Build LIGGGHTS with its superquadric (non-spherical) particles" OFF)
+if(WIREGRAIN_SUPERQUADRIC)
+  target_compile_definitions(liggghts_upstream PUBLIC SUPERQUADRIC_ACTIVE_FLAG NONSPHERICAL_ACTIVE_FLAG)
+  message(STATUS "wiregrain: LIGGGHTS superquadrics enabled")
+endif()
+
 set(WIREGRAIN_HAVE_VTK OFF)
 if(WIREGRAIN_WITH_VTK)
   # VTK 9 by components, without its Qt parts. LIGGGHTS' own CMakeLists relies on

@@ -63,6 +63,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       grains_(NULL),
       nscd_(NULL),
       history_(NULL),
+      grain_atoms_(atom),
       spheres_(false),
       held_version_(-1),
       segment_reach_(0.0),
@@ -152,10 +153,9 @@ void FixWireGrain::fail_one(const std::string &what) {
   throw std::logic_error(what);  // not reached
 }
 
-bool FixWireGrain::is_polyhedron(int i) const { return grains_ && atom->shapetype && atom->shapetype[i] >= 0; }
-
 bool FixWireGrain::is_grain(int i) const {
-  return (atom->mask[i] & grain_groupbit_) && (spheres_ ? !(atom->mask[i] & groupbit) : is_polyhedron(i));
+  if (!(atom->mask[i] & grain_groupbit_)) return false;
+  return spheres_ ? !(atom->mask[i] & groupbit) : grain_atoms_.is_polyhedron(i);
 }
 
 // The groups (beads that are not grains; grains: the polyhedra of the grain group, all
@@ -171,7 +171,7 @@ void FixWireGrain::init() {
   // the linked wire beads and those in the wire group; max rest, max radius
   double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
   for (int i = 0; i < atom->nlocal; i++) {
-    const bool polyhedron = is_polyhedron(i);
+    const bool polyhedron = grain_atoms_.is_polyhedron(i);
     if (mask[i] & groupbit) {
       if (polyhedron) local[2] += 1.0;
       else {

@@ -63,6 +63,7 @@ FixStyle(wire/grain,FixWireGrain)
 #include <vector>
 
 #include "common/contact_checks.h"
+#include "common/grain_atoms.h"
 #include "common/contact_publisher.h"
 #include "common/plugin_material.h"
 #include "core/contact/contact_materials.h"
@@ -113,6 +114,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   class AtomVecPolyhedron *grains_;
   class FixNSCDPolyhedra *nscd_;
   class FixWireContactHistory *history_;
+  wiregrain_lmp::GrainAtoms grain_atoms_;  // which atoms are polyhedra
   bool spheres_;                 // the grains are stock spheres (no fix nscd/polyhedra, no sub-cycling)
   std::string history_id_;
   long held_version_;            // the NSCD fix's pose_version() of the held grains
@@ -135,7 +137,6 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   long deepest_grain_;
   double deepest_overlap_, deepest_radius_;
 
-  bool is_polyhedron(int i) const;
   bool is_grain(int i) const;  // atom i is one of the grains the wire touches
   void hold_grains();
   void check_time_step();
