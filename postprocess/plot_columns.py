@@ -7,7 +7,9 @@ as a line coloured by its elastic strain energy per bead.
 
 RUN: a run directory of input_scripts/in.column (or of postprocess/sweep.py), whose post/
 holds the grains_final_STEP.vtp and wire_final_STEP.vtp the deck writes at its end (a run
-without wire has no wire file), or a grains VTP file itself (the wire file is then looked
+without wire has no wire file; a run of stock spheres, `-var grains spheres`, has
+grains_final_STEP.vtk, LIGGGHTS' legacy VTK with a radius per point, drawn as spheres),
+or a grains VTP file itself (the wire file is then looked
 for beside it, with "grains" replaced by "wire"). All panels share one length scale, in
 a_max, so that columns of different R compare. Reads VTK's XML with Debian's
 python3-vtk9; draws with python3-matplotlib."""
@@ -26,6 +28,7 @@ from matplotlib import cm, colors  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkIOLegacy import vtkGenericDataObjectReader  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
 
 
@@ -47,22 +50,55 @@ def cells(cell_array):
 
 
 def final_files(run):
-    """(grains VTP, wire VTP or None) of a run directory or a grains VTP."""
+    """(grains VTP or sphere VTK, wire VTP or None) of a run directory or a grains file."""
     if os.path.isfile(run):
         grains = run
     else:
         found = sorted(glob.glob(os.path.join(run, "post", "grains_final_*.vtp")))
+        found = found or sorted(f for f in glob.glob(os.path.join(run, "post", "grains_final_*.vtk"))
+                                if "boundingBox" not in f)
         if not found:
-            sys.exit(f"plot_columns.py: no post/grains_final_*.vtp in {run}")
+            sys.exit(f"plot_columns.py: no post/grains_final_*.vtp (or .vtk) in {run}")
         grains = found[-1]
     wire = os.path.join(os.path.dirname(grains), os.path.basename(grains).replace("grains", "wire"))
+    wire = os.path.splitext(wire)[0] + ".vtp"
     return grains, wire if os.path.exists(wire) else None
 
 
+def sphere_faces(centres, radii, subdivisions=8):
+    """Each sphere as a latitude–longitude mesh of quadrilaterals (for Poly3DCollection)."""
+    theta = np.linspace(0.0, np.pi, subdivisions + 1)
+    phi = np.linspace(0.0, 2.0 * np.pi, 2 * subdivisions + 1)
+    unit = np.stack([np.outer(np.sin(theta), np.cos(phi)), np.outer(np.sin(theta), np.sin(phi)),
+                     np.outer(np.cos(theta), np.ones_like(phi))], axis=-1)
+    faces = []
+    for c, r in zip(centres, radii):
+        p = c + r * unit
+        for i in range(subdivisions):
+            for j in range(2 * subdivisions):
+                faces.append(np.array([p[i, j], p[i + 1, j], p[i + 1, j + 1], p[i, j + 1]]))
+    return faces
+
+
+def grain_faces(path):
+    """The faces of the grains of a polyhedron VTP or a sphere VTK (points with radius)."""
+    if path.endswith(".vtp"):
+        grains = read_polydata(path)
+        points = vtk_to_numpy(grains.GetPoints().GetData())
+        return [points[f] for f in cells(grains.GetPolys())]
+    reader = vtkGenericDataObjectReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    radius = data.GetPointData().GetArray("radius") if data is not None and data.GetPoints() else None
+    if radius is None:
+        sys.exit(f"plot_columns.py: {path} holds no points with a radius array")
+    return sphere_faces(vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(radius))
+
+
 def draw(ax, grains_path, wire_path, energy_norm):
-    grains = read_polydata(grains_path)
-    points = vtk_to_numpy(grains.GetPoints().GetData())
-    faces = [points[f] for f in cells(grains.GetPolys())]
+    faces = grain_faces(grains_path)
+    points = np.concatenate(faces)
     # a fixed light from above-front: shade each face by its normal
     normals = [np.cross(f[1] - f[0], f[2] - f[0]) for f in faces]
     light = np.array([0.3, -0.5, 0.8]) / np.linalg.norm([0.3, -0.5, 0.8])

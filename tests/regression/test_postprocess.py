@@ -3,6 +3,7 @@ again, reports a failed run and tries it again; the plot scripts read its output
 write PNGs. On the tiny column without wire (a second per run)."""
 
 import csv
+import glob
 import json
 import os
 import subprocess
@@ -85,6 +86,28 @@ class Sweep(DeckTestCase):
         for png in ("sweep.png", "plot_column.py.png", "plot_columns.py.png"):
             with open(os.path.join(self.work, png), "rb") as f:
                 self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", png)
+
+    def test_sphere_column(self):
+        # a column of stock spheres (-var grains spheres): plot_columns.py draws its
+        # legacy VTK, observables.py reads its dumps without a shape library
+        out = os.path.join(self.work, "spheres")
+        status, text = script("sweep.py", "grains", "spheres", "--seeds", "11", "--out", out, "--liggghts", LIGGGHTS,
+                              "--var", "wire", "0", *TINY, cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        run_dir = os.path.join(out, "grains=spheres", "seed=11")
+        status, text = script("plot_columns.py", run_dir, "-o", "spheres.png", cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        with open(os.path.join(self.work, "spheres.png"), "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        dumps = [sorted(glob.glob(os.path.join(run_dir, "post", f"column_{w}_*.dump")))[-1]
+                 for w in ("relaxed", "final")]
+        status, text = script("observables.py", *dumps, "--radius", "3", "--json", cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        with open(os.path.join(run_dir, "final.json")) as f:
+            final = json.load(f)
+        obs = json.loads(text.splitlines()[-1])
+        self.assertAlmostEqual(obs["H_n"], final["H_n"], delta=1e-14)
+        self.assertEqual(obs["phi_p"], final["phi_p"])
 
 
 if __name__ == "__main__":
