@@ -1,0 +1,63 @@
+#!/usr/bin/python3
+"""Benchmark: the same column deck with each grain model, one after the other on the same
+ranks: wall time, its ratio, and the final observables.
+
+    bench/grain_models.py [--liggghts build/liggghts] [--np 1] [--deck examples/column/in.column_small]
+        [--seed 4242] [--var NAME VALUE ...]
+
+Runs DECK with -var grains nscd (rigid spheropolyhedra, fix nscd/polyhedra: the paper) and
+-var grains spheres (stock Hertz spheres of the same volumes, fix nve/sphere), each in a
+fresh directory, and prints per model the wall time of the liggghts process, the time
+LIGGGHTS reports for its runs (the sum of its "Loop time" lines), the final H_n, φ_p, U_s/L
+and z_wpc, and the ratio spheres / nscd of the times. Run it on an otherwise idle machine."""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+FINAL = re.compile(r"^in\.column final: H_n = (\S+) phi_p = (\S+) U_s/L = (\S+) z_wpc = (\S+)", re.M)
+
+
+def run(args, model):
+    work = tempfile.mkdtemp(prefix=f"wiregrain-bench-{model}-")
+    cmd = [] if args.np == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
+    cmd += [os.path.abspath(args.liggghts), "-in", os.path.abspath(args.deck), "-var", "grains", model,
+            "-var", "root", ROOT, "-var", "seed", str(args.seed), "-var", "vtk", "0"]
+    for name, value in args.var:
+        cmd += ["-var", name, value]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.perf_counter() - start
+    final = FINAL.findall(proc.stdout)
+    if proc.returncode != 0 or not final:
+        sys.exit(f"grain_models.py: the {model} run failed in {work}:\n{proc.stdout[-3000:]}")
+    loop = sum(float(t) for t in re.findall(r"^Loop time of (\S+)", proc.stdout, re.M))
+    return wall, loop, [float(v) for v in final[-1]]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
+    parser.add_argument("--np", type=int, default=1)
+    parser.add_argument("--deck", default=os.path.join(ROOT, "examples", "column", "in.column_small"))
+    parser.add_argument("--seed", type=int, default=4242)
+    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
+    args = parser.parse_args()
+    results = {model: run(args, model) for model in ("nscd", "spheres")}
+    print(f"# {os.path.relpath(args.deck, ROOT)}, seed {args.seed}, {args.np} rank(s)")
+    print(f"{'model':8s} {'wall [s]':>9s} {'loops [s]':>9s} {'H_n':>8s} {'phi_p':>7s} {'U_s/L':>10s} {'z_wpc':>7s}")
+    for model, (wall, loop, obs) in results.items():
+        print(f"{model:8s} {wall:9.1f} {loop:9.1f} {obs[0]:8.4f} {obs[1]:7.4f} {obs[2]:10.3e} {obs[3]:7.4f}")
+    ratio_wall = results["spheres"][0] / results["nscd"][0]
+    ratio_loop = results["spheres"][1] / results["nscd"][1]
+    print(f"spheres / nscd: wall {ratio_wall:.2f}, loops {ratio_loop:.2f}")
+
+
+if __name__ == "__main__":
+    main()
