@@ -88,11 +88,12 @@ class Sweep(DeckTestCase):
                 self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", png)
 
     def test_sphere_column(self):
-        # a column of stock spheres (-var grains spheres): plot_columns.py draws its
-        # legacy VTK, observables.py reads its dumps without a shape library
+        # a column of stock spheres (-var grains spheres, with rolling friction):
+        # plot_columns.py draws its legacy VTK, observables.py reads its dumps without a
+        # shape library
         out = os.path.join(self.work, "spheres")
         status, text = script("sweep.py", "grains", "spheres", "--seeds", "11", "--out", out, "--liggghts", LIGGGHTS,
-                              "--var", "wire", "0", *TINY, cwd=self.work)
+                              "--var", "wire", "0", "--var", "mu_roll", "0.1", *TINY, cwd=self.work)
         self.assertEqual(status, 0, text[-2000:])
         run_dir = os.path.join(out, "grains=spheres", "seed=11")
         status, text = script("plot_columns.py", run_dir, "-o", "spheres.png", cwd=self.work)
