@@ -167,47 +167,59 @@ void FixWireGrain::init() {
   grain_groupbit_ = group->bitmask[igroup];
   const int *mask = atom->mask, *prev = wire_->wire_prev, *next = wire_->wire_next;
   const double *rest = wire_->wire_rest, *radius = atom->radius;
-  // beads, polyhedra, polyhedra in the wire group, other atoms of the grain group, of these
-  // the linked wire beads and those in the wire group; max rest, max radius
-  double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
+  // counts (summed over the ranks), then extremes (maximised)
+  enum {
+    kBeads,             // wire-group atoms that are no polyhedra
+    kPolyhedra,         // polyhedra of the grain group
+    kPolyhedraInWire,   // polyhedra in the wire group
+    kOthers,            // other atoms of the grain group (stock spheres)
+    kOthersLinked,      // ... of these the linked wire beads
+    kOthersInWire,      // ... and those in the wire group
+    kCounts,
+    kMaxRest = kCounts, // the longest rest length of the wire group
+    kMaxRadius,         // its thickest bead
+    kValues
+  };
+  double local[kValues] = {}, global[kValues];
   for (int i = 0; i < atom->nlocal; i++) {
     const bool polyhedron = grain_atoms_.is_polyhedron(i);
     if (mask[i] & groupbit) {
-      if (polyhedron) local[2] += 1.0;
+      if (polyhedron) local[kPolyhedraInWire] += 1.0;
       else {
-        local[0] += 1.0;
-        local[6] = std::max(local[6], rest[i]);
-        local[7] = std::max(local[7], radius[i]);
+        local[kBeads] += 1.0;
+        local[kMaxRest] = std::max(local[kMaxRest], rest[i]);
+        local[kMaxRadius] = std::max(local[kMaxRadius], radius[i]);
       }
     }
     if (!(mask[i] & grain_groupbit_)) continue;
-    if (polyhedron) local[1] += 1.0;
+    if (polyhedron) local[kPolyhedra] += 1.0;
     else {
-      local[3] += 1.0;
-      if (prev[i] || next[i]) local[4] += 1.0;
-      if (mask[i] & groupbit) local[5] += 1.0;
+      local[kOthers] += 1.0;
+      if (prev[i] || next[i]) local[kOthersLinked] += 1.0;
+      if (mask[i] & groupbit) local[kOthersInWire] += 1.0;
     }
   }
-  MPI_Allreduce(local, global, 6, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(local + 6, global + 6, 2, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(local, global, kCounts, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local + kCounts, global + kCounts, kValues - kCounts, MPI_DOUBLE, MPI_MAX, world);
   const std::string wire_group = group->names[this->igroup];
-  if (global[0] == 0.0) fail("wire group '" + wire_group + "' has no wire beads");
-  if (global[2] > 0.0)
-    fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[2]) +
+  if (global[kBeads] == 0.0) fail("wire group '" + wire_group + "' has no wire beads");
+  if (global[kPolyhedraInWire] > 0.0)
+    fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kPolyhedraInWire]) +
          " grains (give the wire beads only)");
-  spheres_ = global[1] == 0.0;
+  spheres_ = global[kPolyhedra] == 0.0;
   if (spheres_) {  // stock granular spheres
-    if (global[3] == 0.0 || !atom->sphere_flag)
+    if (global[kOthers] == 0.0 || !atom->sphere_flag)
       fail("grain group '" + grain_group_ +
            "' has no grains (polyhedra, or spheres of atom_style sphere or granular in the hybrid)");
-    if (global[4] > 0.0)
-      fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[4]) +
+    if (global[kOthersLinked] > 0.0)
+      fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[kOthersLinked]) +
            " wire beads (give the grains only)");
-    if (global[5] > 0.0)
-      fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[5]) +
+    if (global[kOthersInWire] > 0.0)
+      fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kOthersInWire]) +
            " grains (give the wire beads only)");
   }
-  segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[6] + global[7];
+  segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[kMaxRest] + global[kMaxRadius];
+  const double longest_segment = global[kMaxRest];
 
   // the one fix nscd/polyhedra that integrates all grains of the grain group; stock
   // spheres are integrated by LIGGGHTS every step (fix nve/sphere)
@@ -236,7 +248,7 @@ void FixWireGrain::init() {
   history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
   comm->ghost_velocity = 1;  // the damping needs the velocity of the segment's ghost bead
   // the next bead of an owned bead must be owned or a ghost
-  wiregrain_lmp::ensure_ghost_reach(lmp, (1.0 + max_stretch_) * global[3] + neighbor->skin);
+  wiregrain_lmp::ensure_ghost_reach(lmp, (1.0 + max_stretch_) * longest_segment + neighbor->skin);
   held_version_ = -1;
 }
 

@@ -362,6 +362,30 @@ run             400
         for column in ("x", "y", "z", "vx", "vy", "vz"):
             np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-12, err_msg=column)
 
+    def test_long_segments_across_the_subdomain_boundary(self):
+        # segments of length 2 (beads at x = ±1, ±3) over three small cubes (edge 0.2),
+        # no pair style and no fix wire/elastic (a chain of free beads): only fix
+        # wire/grain's ghost reach, (1 + max_stretch) × the longest rest length + the
+        # neighbour skin, makes the far bead of the segment across x = 0 a ghost (the
+        # grains' neighbour cutoff, 0.8, does not); 2 ranks give the state of 1
+        cubes = [(x, 0.0, 0.15, 1.0, 0.0, 0.0, 0.0) for x in (-2.0, 0.3, 2.0)]
+        made = scene(cubes, ["line -3 0.02 0.45 3 0.02 0.45 segment 2.0 radius 0.1"], shape="cube 0.2",
+                     sweep=0.05, box=(-4, 4, -2, 2, -0.5, 2))
+        states = []
+        for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
+            body = COUPLED.format(g=G, every=5, contact="").replace("fix             elastic wire wire/elastic\n", "")
+            r = run(full_precision(deck(body + """
+thermo_style    custom step f_wg[1]
+thermo          50
+dump            d all custom 400 dump.s id x y z vx vy vz
+run             400
+""", processors=grid), "d"), np_ranks=ranks, workdir=made.workdir)
+            self.assertRanCleanly(r)
+            self.assertGreater(r.thermo()["wg[1]"].max(), 0)
+            states.append(read_dump(r.path("dump.s")))
+        for column in ("x", "y", "z", "vx", "vy", "vz"):
+            np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-12, err_msg=column)
+
     def test_restart_in_the_middle_of_a_sub_cycle_continues_the_straight_run(self):
         # N = 5; the restart file is written after step 233, three sub-steps into an NSCD
         # step; the straight run also stops and goes on at 233 (a run boundary: setup)
