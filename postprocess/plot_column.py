@@ -2,7 +2,7 @@
 """The column during wall removal (the paper's Fig. 7): H_n and the wire's elastic energy,
 normalised by its maximum, against the time since the walls started to move.
 
-    postprocess/plot_column.py RUN [RUN ...] -o column.png [--legend A B ...]
+    postprocess/plot_column.py RUN [RUN ...] -o column.png [--legend A B ...] [--colors C ...] [--no-energy]
 
 RUN: a column.obs written by input_scripts/in.column, or a directory holding one (a run
 directory of postprocess/sweep.py). column.obs starts at t_relax, when the walls start to
@@ -39,9 +39,12 @@ def main():
     parser.add_argument("runs", nargs="+")
     parser.add_argument("-o", "--output", required=True)
     parser.add_argument("--legend", nargs="+", default=None)
+    parser.add_argument("--colors", nargs="+", default=None, help="a matplotlib colour per run (e.g. one per model)")
+    parser.add_argument("--no-energy", action="store_true", help="H_n only")
     args = parser.parse_args()
-    if args.legend and len(args.legend) != len(args.runs):
-        parser.error(f"--legend needs one label per run ({len(args.runs)})")
+    for name in ("legend", "colors"):
+        if getattr(args, name) and len(getattr(args, name)) != len(args.runs):
+            parser.error(f"--{name} needs one value per run ({len(args.runs)})")
 
     fig, height_axis = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
     energy_axis = height_axis.twinx()
@@ -49,14 +52,15 @@ def main():
         obs = read_obs(run)
         since = obs["t"] - obs["t"][0]
         label = args.legend[k] if args.legend else run
-        line, = height_axis.plot(since, obs["H_n"], label=f"H_n {label}")
+        line, = height_axis.plot(since, obs["H_n"], label=f"H_n {label}",
+                                 color=args.colors[k] if args.colors else None)
         peak = obs["U_s/L"].max()
-        if peak > 0.0:
+        if peak > 0.0 and not args.no_energy:
             energy_axis.plot(since, obs["U_s/L"] / peak, ls="--", color=line.get_color(),
                              label=f"U_s / max U_s {label}")
     height_axis.set_xlabel("t − t_relax  [√(a_max / g)]")
     height_axis.set_ylabel("H_n = H / H(t_relax)  (solid)")
-    energy_axis.set_ylabel("U_s / max U_s  (dashed)")
+    energy_axis.set_ylabel("" if args.no_energy else "U_s / max U_s  (dashed)")
     energy_axis.set_ylim(0.0, 1.05)
     height_axis.grid(alpha=0.3)
     handles = height_axis.get_legend_handles_labels()[0] + energy_axis.get_legend_handles_labels()[0]
