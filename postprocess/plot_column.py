@@ -60,7 +60,9 @@ def main():
                              label=f"U_s / max U_s {label}")
     height_axis.set_xlabel("t − t_relax  [√(a_max / g)]")
     height_axis.set_ylabel("H_n = H / H(t_relax)  (solid)")
-    energy_axis.set_ylabel("" if args.no_energy else "U_s / max U_s  (dashed)")
+    energy_axis.set_ylabel("U_s / max U_s  (dashed)")
+    if args.no_energy:
+        energy_axis.set_axis_off()
     energy_axis.set_ylim(0.0, 1.05)
     height_axis.grid(alpha=0.3)
     handles = height_axis.get_legend_handles_labels()[0] + energy_axis.get_legend_handles_labels()[0]
