@@ -1,13 +1,25 @@
 #!/usr/bin/python3
 """The column observables (H, H_n, φ_p, U_s/L, z_wpc; input_scripts/README.md) from a
 LIGGGHTS/LAMMPS `dump custom` text file, so that they can be had from any run that wrote
-one: ours (in.column writes post/column_STEP.dump at t_relax and at the end), a stock
-LIGGGHTS sphere run, or another code's dump in the same format.
+one: ours (in.column writes post/column_relaxed_STEP.dump and post/column_final_STEP.dump),
+a stock LIGGGHTS sphere run, or another code's dump in the same format; or from the VTK
+files of the deck (post/grains_{relaxed,final}_STEP.vtp with the wire_..._STEP.vtp beside
+it; .vtk for stock spheres).
 
-    postprocess/observables.py DUMP [DUMP ...] [--h0 H0] [--shapes FILE] [--grain-type 1]
+    postprocess/observables.py FILE [FILE ...] [--h0 H0] [--shapes FILE] [--grain-type 1]
         [--wire-type 2] [--axis X Y] [--radius R] [--quantile 0.98] [--json]
 
 Every snapshot of every file is one line: step, H, H_n, φ_p, U_s/L, z_wpc.
+
+A FILE ending in .vtp is a `dump polyhedron/vtk` snapshot of the grains: a grain's centre
+and top are its cell arrays `center` and `top`, its type the cell array `type`. One ending
+in .vtk is a legacy VTK of spheres (LIGGGHTS' `dump custom/vtk ... x y z radius`): top =
+z + radius. The wire is the `dump wire/vtk` file beside it (the name with "grains"
+replaced by "wire", .vtp), if there is one: beads are its points, their energies its point
+arrays `stretching_energy` and `bending_energy` (`energy` keyword), a bead's segment the
+line from it to the next point of its polyline (none for a chain's last bead), the grains
+touching it the point array `grain_contacts` (`grains` keyword). The step is the last
+number in the grains file's name. Reading VTK needs python3-vtk9.
 
 - Grains are the atoms of --grain-type, wire beads those of --wire-type.
 - H: the --quantile (numpy's linear interpolation) of the grains' tops. A grain's top is
@@ -54,6 +66,61 @@ def read_dump(path):
         snapshots.append((step, {name: rows[:, j] for j, name in enumerate(names)}))
         k += 9 + n
     return snapshots
+
+
+def read_vtk(path):
+    """A VTK snapshot of the grains (and the wire file beside it) as the columns of a dump
+    custom snapshot: [(step, {column: array})]."""
+    import vtk_files as vf
+    columns = {name: [] for name in ("type", "x", "y", "z", "radius", "c_gs[7]", "c_energy[1]", "c_energy[2]",
+                                     "c_energy[3]", "f_wg[4]")}
+    if path.endswith(".vtk"):
+        centres, arrays = vf.read_legacy_spheres(path)
+        grain_type = arrays["type"] if "type" in arrays else np.ones(len(centres))
+        tops = centres[:, 2] + arrays["radius"]
+        radii = arrays["radius"]
+    else:
+        grains = vf.read_polydata(path)
+        ids, centers, tops_per_face = (vf.cell_array(grains, name) for name in ("id", "center", "top"))
+        if ids is None or centers is None or tops_per_face is None:
+            sys.exit(f"observables.py: {path} has no cell arrays id, center and top (dump polyhedron/vtk "
+                     "writes them since session 11; read an older run's dump custom files instead)")
+        first = np.unique(ids, return_index=True)[1]  # one face per grain
+        centres, tops = centers[first], tops_per_face[first]
+        grain_type = vf.cell_array(grains, "type")[first]
+        radii = np.full(len(first), math.nan)
+    n = len(centres)
+    columns["type"].append(grain_type)
+    for d, name in enumerate("xyz"):
+        columns[name].append(centres[:, d])
+    columns["radius"].append(radii)
+    columns["c_gs[7]"].append(tops)
+    for name in ("c_energy[1]", "c_energy[2]", "c_energy[3]", "f_wg[4]"):
+        columns[name].append(np.full(n, math.nan))
+    wire_path = vf.wire_beside(path)
+    if wire_path:
+        wire = vf.read_polydata(wire_path)
+        beads = vf.vtk_to_numpy(wire.GetPoints().GetData())
+        length = np.zeros(len(beads))
+        for line in vf.cells(wire.GetLines()):
+            # consecutive points of a polyline: the segment from a bead to the next
+            # (a closed ring repeats its first point at the end)
+            length[line[:-1]] = np.linalg.norm(beads[line[1:]] - beads[line[:-1]], axis=1)
+        nan = np.full(len(beads), math.nan)
+        stretching, bending, contacts = (vf.point_array(wire, name) for name in
+                                         ("stretching_energy", "bending_energy", "grain_contacts"))
+        columns["type"].append(vf.point_array(wire, "type"))
+        for d, name in enumerate("xyz"):
+            columns[name].append(beads[:, d])
+        columns["radius"].append(nan)
+        columns["c_gs[7]"].append(nan)
+        columns["c_energy[1]"].append(nan if stretching is None else stretching)
+        columns["c_energy[2]"].append(nan if bending is None else bending)
+        columns["c_energy[3]"].append(length)
+        columns["f_wg[4]"].append(nan if contacts is None else contacts)
+    atoms = {name: np.concatenate(parts).astype(float) for name, parts in columns.items()
+             if wire_path or not name.startswith(("c_energy", "f_wg"))}
+    return [(vf.step_of(path), atoms)]
 
 
 def read_shapes(path):
@@ -130,7 +197,8 @@ def main(argv=None):
     if not args.json:
         print("# step H H_n phi_p U_s/L z_wpc")
     for path in args.dumps:
-        for step, atoms in read_dump(path):
+        snapshots = read_vtk(path) if path.endswith((".vtp", ".vtk")) else read_dump(path)
+        for step, atoms in snapshots:
             obs = observables(atoms, args, shapes)
             h0 = h0 if h0 is not None else obs["H"]
             obs["H_n"] = obs["H"] / h0

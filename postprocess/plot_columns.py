@@ -27,26 +27,8 @@ import numpy as np  # noqa: E402
 from matplotlib import cm, colors  # noqa: E402
 from matplotlib.ticker import MaxNLocator  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
+from vtk_files import cells, read_legacy_spheres, read_polydata, wire_beside  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkIOLegacy import vtkGenericDataObjectReader  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
-
-
-def read_polydata(path):
-    reader = vtkXMLPolyDataReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    if data.GetNumberOfPoints() == 0:
-        sys.exit(f"plot_columns.py: {path} holds no points (not a VTK XML PolyData file?)")
-    return data
-
-
-def cells(cell_array):
-    """A vtkCellArray as a list of point-index arrays."""
-    offsets = vtk_to_numpy(cell_array.GetOffsetsArray())
-    connectivity = vtk_to_numpy(cell_array.GetConnectivityArray())
-    return [connectivity[offsets[k]:offsets[k + 1]] for k in range(len(offsets) - 1)]
 
 
 def final_files(run):
@@ -60,9 +42,7 @@ def final_files(run):
         if not found:
             sys.exit(f"plot_columns.py: no post/grains_final_*.vtp (or .vtk) in {run}")
         grains = found[-1]
-    wire = os.path.join(os.path.dirname(grains), os.path.basename(grains).replace("grains", "wire"))
-    wire = os.path.splitext(wire)[0] + ".vtp"
-    return grains, wire if os.path.exists(wire) else None
+    return grains, wire_beside(grains)
 
 
 def sphere_faces(centres, radii, subdivisions=8):
@@ -86,14 +66,8 @@ def grain_faces(path):
         grains = read_polydata(path)
         points = vtk_to_numpy(grains.GetPoints().GetData())
         return [points[f] for f in cells(grains.GetPolys())]
-    reader = vtkGenericDataObjectReader()
-    reader.SetFileName(path)
-    reader.Update()
-    data = reader.GetOutput()
-    radius = data.GetPointData().GetArray("radius") if data is not None and data.GetPoints() else None
-    if radius is None:
-        sys.exit(f"plot_columns.py: {path} holds no points with a radius array")
-    return sphere_faces(vtk_to_numpy(data.GetPoints().GetData()), vtk_to_numpy(radius))
+    centres, arrays = read_legacy_spheres(path)
+    return sphere_faces(centres, arrays["radius"])
 
 
 def draw(ax, grains_path, wire_path, energy_norm):

@@ -12,6 +12,7 @@
 #include "error.h"
 #include "update.h"
 
+#include "core/column/observables.h"
 #include "core/geometry/convex_shape.h"
 #include "core/geometry/shape_library.h"
 #include "plugin_args.h"
@@ -161,14 +162,26 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
     cell_values[k]->SetName(cell_names[k]);
     cell_values[k]->SetNumberOfTuples(ncells);
   }
+  // the grain's centre of mass and the height of its highest point (swept, as compute
+  // grain/shape's top), on each of its faces: postprocess/observables.py reads H and φ_p here
+  auto centers = vtkSmartPointer<vtkDoubleArray>::New();
+  centers->SetName("center");
+  centers->SetNumberOfComponents(3);
+  centers->SetNumberOfTuples(ncells);
+  auto tops = vtkSmartPointer<vtkDoubleArray>::New();
+  tops->SetName("top");
+  tops->SetNumberOfTuples(ncells);
   auto polys = vtkSmartPointer<vtkCellArray>::New();
   polys->AllocateExact(ncells, npoints);
 
   vtkIdType p = 0, c = 0;
   for (int r : rows) {
-    const Eigen::Matrix3d rotation =
-        Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized().toRotationMatrix();
+    const Eigen::Quaterniond orientation =
+        Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized();
+    const Eigen::Matrix3d rotation = orientation.toRotationMatrix();
     const Eigen::Vector3d centre(value(r, X), value(r, Y), value(r, Z));
+    const double top =
+        wiregrain::grain_top(wiregrain::PosedShape(library[static_cast<int>(value(r, SHAPE))].shape, centre, orientation));
     const int grain_values[3] = {static_cast<int>(value(r, TAG)), static_cast<int>(value(r, TYPE)),
                                  static_cast<int>(value(r, SHAPE))};
     for (const auto &polygon : polygons[static_cast<int>(value(r, SHAPE))]) {
@@ -182,6 +195,8 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
         p++;
       }
       for (int k = 0; k < 3; k++) cell_values[k]->SetValue(c, grain_values[k]);
+      centers->SetTuple3(c, centre.x(), centre.y(), centre.z());
+      tops->SetValue(c, top);
       c++;
     }
   }
@@ -192,6 +207,8 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
   poly->GetPointData()->AddArray(velocity);
   poly->GetPointData()->AddArray(angular_velocity);
   for (int k = 0; k < 3; k++) poly->GetCellData()->AddArray(cell_values[k]);
+  poly->GetCellData()->AddArray(centers);
+  poly->GetCellData()->AddArray(tops);
 
   if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
     error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());

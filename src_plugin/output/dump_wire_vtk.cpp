@@ -33,10 +33,12 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Columns of one bead in the dump buffer.
-enum Column { TAG, TYPE, PREV, NEXT, X, Y, Z, VX, VY, VZ, E_STRETCH, E_BEND };
-constexpr int kColumnsWithoutEnergy = 10;
-constexpr int kColumnsWithEnergy = 12;
+// Columns of one bead in the dump buffer: these, then with `energy` the stretching and
+// bending energies, then with `grains` the force from the grains (3) and the number of
+// grains touching the bead's segment.
+enum Column { TAG, TYPE, PREV, NEXT, X, Y, Z, VX, VY, VZ, kBaseColumns };
+constexpr int kEnergyColumns = 2;
+constexpr int kGrainColumns = 4;
 
 const char *const kKind = "dump";
 const char *const kStyle = "wire/vtk";
@@ -50,7 +52,8 @@ struct Chain {
 }  // namespace
 
 DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
-    : DumpVtp(lmp, narg, arg, kStyle), energy_fix_(-1), wire_(NULL) {
+    : DumpVtp(lmp, narg, arg, kStyle), energy_fix_(-1), grain_fix_(-1), energy_column_(-1), grain_column_(-1),
+      wire_(NULL) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
@@ -64,6 +67,8 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
     const std::string key = args.next_keyword();
     if (key == "energy") {
       energy_fix_id_ = args.value_word(key);
+    } else if (key == "grains") {
+      grain_fix_id_ = args.value_word(key);
     } else if (key == "format") {
       take_format(args);
     } else {
@@ -71,8 +76,17 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
     }
   }
   if (!energy_fix_id_.empty()) find_energy_fix(false);
+  if (!grain_fix_id_.empty()) find_grain_fix(false);
 
-  size_one = energy_fix_id_.empty() ? kColumnsWithoutEnergy : kColumnsWithEnergy;
+  size_one = kBaseColumns;
+  if (!energy_fix_id_.empty()) {
+    energy_column_ = size_one;
+    size_one += kEnergyColumns;
+  }
+  if (!grain_fix_id_.empty()) {
+    grain_column_ = size_one;
+    size_one += kGrainColumns;
+  }
 }
 
 DumpWireVTK::~DumpWireVTK() {}
@@ -90,8 +104,24 @@ int DumpWireVTK::find_energy_fix(bool at_init) {
   return ifix;
 }
 
+// The fix wire/grain whose per-atom array gives each bead's force from the grains
+// (columns 1-3) and the number of grains touching its segment (column 4).
+int DumpWireVTK::find_grain_fix(bool at_init) {
+  const int ifix = modify->find_fix(grain_fix_id_.c_str());
+  if (ifix < 0)
+    wiregrain_lmp::style_error(error, kKind, kStyle, id,
+                               "grains fix '" + grain_fix_id_ + "' does not exist" +
+                                   (at_init ? " (was it unfixed?)" : " (define it before the dump)"));
+  if (std::string(modify->fix[ifix]->style) != "wire/grain")
+    wiregrain_lmp::style_error(error, kKind, kStyle, id,
+                               "grains fix '" + grain_fix_id_ + "' is a fix " + modify->fix[ifix]->style +
+                                   ", not a fix wire/grain");
+  return ifix;
+}
+
 void DumpWireVTK::init_style() {
   energy_fix_ = energy_fix_id_.empty() ? -1 : find_energy_fix(true);
+  grain_fix_ = grain_fix_id_.empty() ? -1 : find_grain_fix(true);
 }
 
 void DumpWireVTK::pack(int *ids) {
@@ -101,6 +131,7 @@ void DumpWireVTK::pack(int *ids) {
   const tagint *image = atom->image;
   const wiregrain_lmp::WireEnergySource *energy =
       energy_fix_ >= 0 ? dynamic_cast<const wiregrain_lmp::WireEnergySource *>(modify->fix[energy_fix_]) : NULL;
+  double **from_grains = grain_fix_ >= 0 ? modify->fix[grain_fix_]->array_atom : NULL;
 
   int m = 0, n = 0;
   for (int i = 0; i < nlocal; i++) {
@@ -120,9 +151,11 @@ void DumpWireVTK::pack(int *ids) {
     row[VZ] = v[i][2];
     if (energy) {
       const wiregrain::BeadElasticEnergy e = energy->bead_energy(i);
-      row[E_STRETCH] = e.stretching;
-      row[E_BEND] = e.bending;
+      row[energy_column_] = e.stretching;
+      row[energy_column_ + 1] = e.bending;
     }
+    if (from_grains)
+      for (int k = 0; k < kGrainColumns; k++) row[grain_column_ + k] = from_grains[i][k];
     if (ids) ids[n] = tag[i];
     m += size_one;
     n++;
@@ -192,7 +225,17 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
   velocity->SetName("velocity");
   velocity->SetNumberOfComponents(3);
   velocity->SetNumberOfTuples(nrows);
-  const bool with_energy = size_one == kColumnsWithEnergy;
+  const bool with_energy = energy_column_ >= 0, with_grains = grain_column_ >= 0;
+  vtkSmartPointer<vtkDoubleArray> grain_force, grain_contacts;
+  if (with_grains) {
+    grain_force = vtkSmartPointer<vtkDoubleArray>::New();
+    grain_force->SetName("grain_force");
+    grain_force->SetNumberOfComponents(3);
+    grain_force->SetNumberOfTuples(nrows);
+    grain_contacts = vtkSmartPointer<vtkDoubleArray>::New();
+    grain_contacts->SetName("grain_contacts");
+    grain_contacts->SetNumberOfTuples(nrows);
+  }
   vtkSmartPointer<vtkDoubleArray> energies[3];
   const char *energy_names[3] = {"stretching_energy", "bending_energy", "elastic_energy"};
   if (with_energy)
@@ -216,9 +259,14 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
       types->SetValue(p, static_cast<int>(value(r, TYPE)));
       velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
       if (with_energy) {
-        energies[0]->SetValue(p, value(r, E_STRETCH));
-        energies[1]->SetValue(p, value(r, E_BEND));
-        energies[2]->SetValue(p, value(r, E_STRETCH) + value(r, E_BEND));
+        const double stretching = value(r, energy_column_), bending = value(r, energy_column_ + 1);
+        energies[0]->SetValue(p, stretching);
+        energies[1]->SetValue(p, bending);
+        energies[2]->SetValue(p, stretching + bending);
+      }
+      if (with_grains) {
+        grain_force->SetTuple3(p, value(r, grain_column_), value(r, grain_column_ + 1), value(r, grain_column_ + 2));
+        grain_contacts->SetValue(p, value(r, grain_column_ + 3));
       }
       p++;
     }
@@ -248,6 +296,10 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
   poly->GetPointData()->AddArray(velocity);
   if (with_energy)
     for (int k = 0; k < 3; k++) poly->GetPointData()->AddArray(energies[k]);
+  if (with_grains) {
+    poly->GetPointData()->AddArray(grain_force);
+    poly->GetPointData()->AddArray(grain_contacts);
+  }
   poly->GetCellData()->AddArray(wire_index);
 
   if (!wiregrain_lmp::write_vtp(poly, path, ascii_))

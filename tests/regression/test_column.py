@@ -33,6 +33,16 @@ def dump_observables(result, *options):
     return json.loads(out.splitlines()[-1])
 
 
+def vtk_observables(result):
+    """postprocess/observables.py on the run's relaxed and final grain VTK files (the wire
+    files beside them): the final snapshot's observables, H_n relative to the relaxed one."""
+    files = [sorted(f for f in glob.glob(result.path(f"post/grains_{when}_*.vt[pk]")) if "boundingBox" not in f)[-1]
+             for when in ("relaxed", "final")]
+    out = subprocess.run([sys.executable, os.path.join(SOURCE, "postprocess", "observables.py"), *files, "--json"],
+                         capture_output=True, text=True, check=True).stdout
+    return json.loads(out.splitlines()[-1])
+
+
 def minimal_dump(path):
     """A dump custom file read the shortest way (not observables.py's reader): {column: array}."""
     lines = open(path).read().splitlines()
@@ -60,6 +70,20 @@ def assert_dump_observables_match(test, result, *options):
     test.assertAlmostEqual(dumps[1]["f_wg[4]"][beads].sum() / segments, final["z_wpc"], delta=1e-14)
 
 
+def assert_vtk_observables_match(test, result, h_n_delta=1e-14):
+    # the same from the VTK files: centres and tops of the grains are cell arrays, the
+    # segment lengths come from the wire's points (the computes take them from the fix)
+    obs, final = vtk_observables(result), final_observables(result)
+    print(f"\nfrom the VTK files {obs}")
+    test.assertAlmostEqual(obs["H_n"], final["H_n"], delta=h_n_delta)
+    test.assertEqual(obs["phi_p"], final["phi_p"])
+    # L here is the polylines' length at the written (corrected) bead positions; fix
+    # wire/elastic's segment lengths, like its energies, are those of its last force
+    # evaluation, at the Gear-predicted positions of the step: measured 1.6e-10 apart
+    test.assertAlmostEqual(obs["U_s/L"] / final["U_s/L"], 1.0, delta=5e-10)
+    test.assertAlmostEqual(obs["z_wpc"], final["z_wpc"], delta=1e-14)
+
+
 class Column(DeckTestCase):
     @classmethod
     def setUpClass(cls):
@@ -80,6 +104,22 @@ class Column(DeckTestCase):
         # run: the tops recomputed from the shapes and quaternions
         self.assertRanCleanly(self.straight)
         assert_dump_observables_match(self, self.straight, "--shapes", self.straight.path("post/shapes.txt"))
+
+    def test_observables_from_the_vtk_files(self):
+        # post/grains_{relaxed,final}_*.vtp and the wire files beside them
+        self.assertRanCleanly(self.straight)
+        assert_vtk_observables_match(self, self.straight)
+        # the wire file's grain_force is fix wire/grain's per-bead force, as in the dump
+        sys.path.insert(0, os.path.join(SOURCE, "postprocess"))
+        import vtk_files
+        wire = vtk_files.read_polydata(sorted(glob.glob(self.straight.path("post/wire_final_*.vtp")))[-1])
+        dump = minimal_dump(sorted(glob.glob(self.straight.path("post/column_final_*.dump")))[-1])
+        row = {int(i): k for k, i in enumerate(dump["id"])}
+        rows = [row[int(i)] for i in vtk_files.point_array(wire, "id")]
+        force = np.stack([dump[f"f_wg[{c}]"][rows] for c in (1, 2, 3)], axis=1)
+        self.assertGreater(np.abs(force).max(), 0.0)
+        np.testing.assert_array_equal(vtk_files.point_array(wire, "grain_force"), force)
+        np.testing.assert_array_equal(vtk_files.point_array(wire, "grain_contacts"), dump["f_wg[4]"][rows])
 
     def test_two_ranks(self):
         two = run(COLUMN, variables=TINY, np_ranks=2)
@@ -163,8 +203,11 @@ class Column(DeckTestCase):
         self.assertGreater(obs["z_wpc"], 0.0)
         self.assertGreater(obs["U_s/L"], 0.0)
         self.assertGreater(obs["H_n"], 0.0)
-        # from the dumps (tops z + radius, as for any code's spheres)
+        # from the dumps (tops z + radius, as for any code's spheres) and from the VTK
+        # files (LIGGGHTS' legacy VTK of the spheres, our wire VTP)
         assert_dump_observables_match(self, spheres)
+        # (LIGGGHTS' legacy VTK holds 6 significant digits: its points are ASCII floats)
+        assert_vtk_observables_match(self, spheres, h_n_delta=1e-5)
 
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),

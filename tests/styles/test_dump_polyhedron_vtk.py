@@ -160,7 +160,9 @@ class PolyhedronVTK(DeckTestCase):
                                   "angular_velocity": ("point_array", 3, 24 * n),
                                   "id": ("cell_array", 1, 6 * n),
                                   "type": ("cell_array", 1, 6 * n),
-                                  "shape": ("cell_array", 1, 6 * n)})
+                                  "shape": ("cell_array", 1, 6 * n),
+                                  "center": ("cell_array", 3, 6 * n),
+                                  "top": ("cell_array", 1, 6 * n)})
         m = Mesh(path)
         ids = m.cell_arrays["id"].astype(int)
         self.assertEqual(ids.tolist(), sorted(ids.tolist()))  # grains in id order
@@ -182,6 +184,15 @@ class PolyhedronVTK(DeckTestCase):
             np.testing.assert_allclose(edges, 1.0, rtol=0, atol=1e-12)
             normal = newell_normal(p)  # counter-clockwise seen from outside: outward
             np.testing.assert_allclose(p @ normal, half, rtol=0, atol=1e-12)
+        # cell arrays: the grain's centre, and its top = the highest cube corner + the
+        # sweep radius (corners: the points moved back along their face's normal with
+        # `sweep yes`), whatever `sweep` says
+        np.testing.assert_allclose(m.cell_arrays["center"], [centres[g] for g in ids], rtol=0, atol=1e-14)
+        highest = {}
+        for face, grain in zip(m.polys, ids):
+            corners = m.points[face] - (SWEEP if sweep else 0.0) * newell_normal(m.points[face] - centres[grain])
+            highest[grain] = max(highest.get(grain, -np.inf), corners[:, 2].max())
+        np.testing.assert_allclose(m.cell_arrays["top"], [highest[g] + SWEEP for g in ids], rtol=0, atol=1e-12)
         return m
 
     def test_cube_grains_one_and_two_ranks(self):
@@ -236,7 +247,7 @@ class PolyhedronVTK(DeckTestCase):
                                                    for f in g["faces"]))
             self.assertEqual(len(m.polys), n_faces)
             self.assertEqual(sorted(arrays),
-                             ["angular_velocity", "id", "shape", "type", "velocity"])
+                             ["angular_velocity", "center", "id", "shape", "top", "type", "velocity"])
             ids = m.cell_arrays["id"].astype(int)
             expected_ids, expected_shapes, expected_points = [], [], []
             for tag in sorted(grains):
@@ -252,6 +263,11 @@ class PolyhedronVTK(DeckTestCase):
             self.assertEqual(m.cell_arrays["shape"].astype(int).tolist(), expected_shapes)
             got = np.concatenate([m.points[f] for f in m.polys])
             np.testing.assert_allclose(got, np.concatenate(expected_points), rtol=0, atol=1e-12)
+            # top: the highest vertex of the posed hull + the sweep radius
+            top = {tag: (g["vertices"] @ rotation_matrix(g["q"]).T)[:, 2].max() + g["x"][2] + g["sweep"]
+                   for tag, g in grains.items()}
+            np.testing.assert_allclose(m.cell_arrays["top"], [top[i] for i in ids], rtol=0, atol=1e-12)
+            np.testing.assert_allclose(m.cell_arrays["center"], [grains[i]["x"] for i in ids], rtol=0, atol=1e-12)
             if sweep:
                 continue
             for tag, g in grains.items():  # Euler's formula per grain, faces outward

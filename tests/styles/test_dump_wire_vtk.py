@@ -324,6 +324,18 @@ class Errors(DeckTestCase):
         self.check("dump d all wire/vtk 10 wire_*.vtp energy nope",
                    "dump wire/vtk (id d): energy fix 'nope' does not exist")
 
+    def test_grains_fix_not_wire_grain(self):
+        self.check("dump d all wire/vtk 10 wire_*.vtp grains el",
+                   "dump wire/vtk (id d): grains fix 'el' is a fix wire/elastic, not a fix wire/grain")
+
+    def test_grains_fix_missing(self):
+        self.check("dump d all wire/vtk 10 wire_*.vtp grains nope",
+                   "dump wire/vtk (id d): grains fix 'nope' does not exist (define it before the dump)")
+
+    def test_grains_missing_value(self):
+        self.check("dump d all wire/vtk 10 wire_*.vtp energy el grains",
+                   "dump wire/vtk (id d): missing value after 'grains'")
+
     def test_missing_value(self):
         self.check("dump d all wire/vtk 10 wire_*.vtp energy",
                    "dump wire/vtk (id d): missing value after 'energy'")
