@@ -25,6 +25,8 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
       if (!(g.sphere_radius > 0.0) || !std::isfinite(g.sphere_radius))
         throw InvalidArgument("sphere_radius", "sphere " + std::to_string(g.tag) + " has radius " +
                                                    format_number(g.sphere_radius) + " (finite and > 0 expected)");
+    } else if (g.shape == HeldGrain::kSuperquadric) {
+      check_superquadric(g.superquadric);
     } else if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("shape", "grain " + std::to_string(g.tag) + " has shape " + std::to_string(g.shape) +
                                          ", not one of the " + std::to_string(library.size()) + " library shapes");
@@ -33,7 +35,9 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
       throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a non-finite pose or velocity");
     if (!(g.orientation.norm() > 0.0))
       throw InvalidArgument("grains", "grain " + std::to_string(g.tag) + " has a zero orientation quaternion");
-    const double bounding = g.shape == HeldGrain::kSphere ? g.sphere_radius : library[g.shape].bounding_radius;
+    const double bounding = g.shape == HeldGrain::kSphere         ? g.sphere_radius
+                            : g.shape == HeldGrain::kSuperquadric ? superquadric_bounding_radius(g.superquadric)
+                                                                  : library[g.shape].bounding_radius;
     bounding_radius_.push_back(bounding);
     largest = std::max(largest, bounding);
     index_of_tag_[g.tag] = static_cast<int>(k);
@@ -75,9 +79,13 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
   moved.x0 -= shift;
   moved.x1 -= shift;
   const HeldGrain& g = grains_[k];
-  WireGrainContact c = g.shape == HeldGrain::kSphere
-                           ? wire_sphere_contact(law, g.position, g.sphere_radius, g.motion, moved, dt, history)
-                           : wire_grain_contact(law, posed(k), g.motion, moved, dt, history);
+  WireGrainContact c =
+      g.shape == HeldGrain::kSphere
+          ? wire_sphere_contact(law, g.position, g.sphere_radius, g.motion, moved, dt, history)
+      : g.shape == HeldGrain::kSuperquadric
+          ? wire_superquadric_contact(law, PosedSuperquadric(g.superquadric, g.position, g.orientation), g.motion,
+                                      moved, dt, history)
+          : wire_grain_contact(law, posed(k), g.motion, moved, dt, history);
   c.point += shift;
   return c;
 }

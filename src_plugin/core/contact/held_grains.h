@@ -1,7 +1,9 @@
 // The grains as the wire sees them during one NSCD step (paper Sec. 2.4, Fig. 5): posed
 // once, held in place for the N wire sub-steps, with the velocity of the last NSCD step.
 // Stock granular spheres (shape kSphere, integrated by LIGGGHTS every step) are held for
-// one step and touched through the closed form wire_sphere_contact.
+// one step and touched through the closed form wire_sphere_contact; stock superquadrics
+// (kSuperquadric, LIGGGHTS' atom_style superquadric) likewise, through
+// wire_superquadric_contact (GJK with their closed-form support point).
 // A broad-phase grid over their centres finds the grains within reach of a wire segment;
 // wire_grain_contact (wire_grain_contact.h) then gives the exact contact.
 //
@@ -30,14 +32,17 @@
 #include "core/geometry/broad_phase.h"
 #include "core/geometry/contact_geometry.h"
 #include "core/geometry/shape_library.h"
+#include "core/geometry/superquadric.h"
 
 namespace wiregrain {
 
 struct HeldGrain {
-  static constexpr int kSphere = -1;  // `shape` of a stock granular sphere (no library shape)
+  static constexpr int kSphere = -1;        // `shape` of a stock granular sphere (no library shape)
+  static constexpr int kSuperquadric = -2;  // `shape` of a stock LIGGGHTS superquadric
   long tag = 0;
-  int shape = 0;     // index in the shape library, or kSphere
+  int shape = 0;     // index in the shape library, kSphere or kSuperquadric
   double sphere_radius = 0.0;  // shape == kSphere: its radius (wire_sphere_contact)
+  Superquadric superquadric;   // shape == kSuperquadric: its half-axes and blockiness
   int material = 0;  // the caller's material index (the atom type), carried along
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // centre of mass
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
@@ -54,7 +59,8 @@ class HeldGrains {
  public:
   // segment_reach: the largest ℓ/2 + r_w of a segment that will be queried (> 0).
   // Throws InvalidArgument: a grain's shape not in the library ("shape"), a sphere whose
-  // radius is not finite and > 0 ("sphere_radius"), a non-finite pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
+  // radius is not finite and > 0 ("sphere_radius"), a superquadric with bad half-axes or
+  // blockiness ("half_axes", "blockiness"), a non-finite pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
   // shorter than twice the interaction distance ("box").
   HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
              double segment_reach);

@@ -86,4 +86,16 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
   return out;
 }
 
+WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
+                                           const GrainMotion& motion, const WireSegmentState& segment, double dt,
+                                           TangentialHistory& history) {
+  WireGrainContact out;
+  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius);
+  out.overlap = -out.geometry.gap;
+  out.normal = out.geometry.normal;
+  if (!(out.overlap > 0.0)) return out;
+  load_touching_pair(law, grain.position(), motion, segment, out.geometry.t, dt, history, out);
+  return out;
+}
+
 }  // namespace wiregrain

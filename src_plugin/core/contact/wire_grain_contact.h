@@ -36,6 +36,7 @@
 
 #include "core/contact/soft_contact.h"
 #include "core/geometry/contact_geometry.h"
+#include "core/geometry/superquadric.h"
 
 namespace wiregrain {
 
@@ -96,5 +97,14 @@ void load_touching_pair(const SoftContactLaw& law, const Eigen::Vector3d& centre
 WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vector3d& centre, double sphere_radius,
                                      const GrainMotion& motion, const WireSegmentState& segment, double dt,
                                      TangentialHistory& history);
+
+// The same contact against a superquadric (a stock LIGGGHTS superquadric grain): the
+// geometry of segment_contact(PosedSuperquadric, ...) (GJK with the closed-form support
+// point; core/geometry/contact_geometry.h), overlap r_w − d (the body has no sweep), the
+// load point the closest point (a smooth body has no flat feature to share the load
+// over), the force as against a polyhedron.
+WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
+                                           const GrainMotion& motion, const WireSegmentState& segment, double dt,
+                                           TangentialHistory& history);
 
 }  // namespace wiregrain

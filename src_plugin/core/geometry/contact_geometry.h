@@ -55,6 +55,8 @@
 
 namespace wiregrain {
 
+class PosedSuperquadric;  // core/geometry/superquadric.h
+
 // A ConvexShape (body frame) placed in the world: x_world = R(q) x_body + position.
 // Holds a pointer to the shape (which must outlive it) and the world-frame vertices,
 // face normals and face offsets, computed once at construction (so a grain posed once
@@ -231,5 +233,17 @@ struct SegmentContact {
 SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& end0,
                                const Eigen::Vector3d& end1, double wire_radius,
                                const ContactOptions& options = ContactOptions());
+
+// The same against a superquadric (core/geometry/superquadric.h; no sweep radius: gap =
+// distance − wire_radius). Apart: GJK with the closed-form support point, stopped when
+// the distance bound gains less than 1e-13 of the size; the normal along the closest
+// points, or, when they are closer than 1e-8 of the size, the surface normal (∇F) at
+// the body's closest point. An axis that touches or crosses the body (overlap ≥ r_w):
+// the normal is ∇F at the segment point nearest the body's centre, the distance minus
+// the overlap of body and segment along it (a separating-axis depth along that one
+// axis: ≥ the penetration depth), t that point's parameter. The smooth body has no flat
+// feature: t_begin = t_end = t.
+SegmentContact segment_contact(const PosedSuperquadric& grain, const Eigen::Vector3d& end0,
+                               const Eigen::Vector3d& end1, double wire_radius);
 
 }  // namespace wiregrain
