@@ -196,10 +196,12 @@ if(WIREGRAIN_SANITIZE)
 endif()
 
 # LIGGGHTS' superquadric grains (atom_style superquadric, fix nve/superquadric, pair gran
-# on superquadrics): its Makefile.auto switches them on with these two definitions (and
-# std::beta of C++17). They change the layout of class Atom, so every object, the plugin's
-# too, is compiled with them (PUBLIC). Off by default: a separate build directory.
-option(WIREGRAIN_SUPERQUADRIC "Build LIGGGHTS with its superquadric (non-spherical) particles" OFF)
+# ... surface superquadric): its Makefile.auto switches them on with these two definitions
+# (and std::beta of C++17). They change the contact data of the granular models, so every
+# object, the plugin's too, is compiled with them (PUBLIC). On by default: fix wire/grain
+# touches superquadrics too; the whole test suite passes with them (the stock sphere
+# models keep their results).
+option(WIREGRAIN_SUPERQUADRIC "Build LIGGGHTS with its superquadric (non-spherical) particles" ON)
 if(WIREGRAIN_SUPERQUADRIC)
   target_compile_definitions(liggghts_upstream PUBLIC SUPERQUADRIC_ACTIVE_FLAG NONSPHERICAL_ACTIVE_FLAG)
   message(STATUS "wiregrain: LIGGGHTS superquadrics enabled")

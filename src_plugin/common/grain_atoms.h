@@ -1,6 +1,7 @@
 // Which atoms are grains, for the column observables: the polyhedra of atom_style
 // polyhedron, or, in a system without it, the stock granular spheres (atom_style sphere or
-// granular) that are not wire beads (no chain links). Not a style of its own.
+// granular) or superquadrics (atom_style superquadric) that are not wire beads (no chain
+// links). Not a style of its own.
 #ifndef WIREGRAIN_GRAIN_ATOMS_H
 #define WIREGRAIN_GRAIN_ATOMS_H
 
@@ -21,7 +22,8 @@ class GrainAtoms {
   bool available(std::string &why) const;
   bool is_grain(int i) const;
   bool is_polyhedron(int i) const;  // a grain of atom_style polyhedron (else a stock sphere)
-  // the grain's highest point (core vertex + sweep radius; a sphere's centre + radius)
+  // the grain's highest point (core vertex + sweep radius; a sphere's centre + radius; a
+  // superquadric's support point along +z)
   double top(int i) const;
 
  private:

@@ -39,7 +39,9 @@ using wiregrain_lmp::vec3;
 
 namespace {
 // per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m radius
-constexpr int kGrainRecord = 18;
+// a grain as gathered: tag, shape, type, x (3), q (4), v (3), ω (3), mass, radius,
+// superquadric half-axes (3) and blockiness (2)
+constexpr int kGrainRecord = 23;
 // keyword skin's default (see the README's measurements)
 constexpr double kDefaultSkin = 0.1;
 
@@ -64,7 +66,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       nscd_(NULL),
       history_(NULL),
       grain_atoms_(atom),
-      spheres_(false),
+      stock_grains_(false),
       held_version_(-1),
       segment_reach_(0.0),
       max_stretch_(0.5),
@@ -82,8 +84,8 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
   wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3);
   wire_ = AtomVecWire::of(atom);
   grains_ = AtomVecPolyhedron::of(atom);
-  if (!wire_ || !(grains_ || atom->sphere_flag))
-    args.fail("needs atom_style hybrid with wire and polyhedron (or sphere, granular), not '" +
+  if (!wire_ || !(grains_ || atom->sphere_flag || atom->superquadric_flag))
+    args.fail("needs atom_style hybrid with wire and polyhedron (or sphere, granular, superquadric), not '" +
               std::string(atom->atom_style) + "'");
   if (args.done()) args.fail("expected the grain group after 'wire/grain'");
   grain_group_ = args.next_keyword();
@@ -155,7 +157,7 @@ void FixWireGrain::fail_one(const std::string &what) {
 
 bool FixWireGrain::is_grain(int i) const {
   if (!(atom->mask[i] & grain_groupbit_)) return false;
-  return spheres_ ? !(atom->mask[i] & groupbit) : grain_atoms_.is_polyhedron(i);
+  return stock_grains_ ? !(atom->mask[i] & groupbit) : grain_atoms_.is_polyhedron(i);
 }
 
 // The groups (beads that are not grains; grains: the polyhedra of the grain group, all
@@ -206,11 +208,12 @@ void FixWireGrain::init() {
   if (global[kPolyhedraInWire] > 0.0)
     fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kPolyhedraInWire]) +
          " grains (give the wire beads only)");
-  spheres_ = global[kPolyhedra] == 0.0;
-  if (spheres_) {  // stock granular spheres
-    if (global[kOthers] == 0.0 || !atom->sphere_flag)
+  stock_grains_ = global[kPolyhedra] == 0.0;
+  if (stock_grains_) {  // stock granular spheres or superquadrics
+    if (global[kOthers] == 0.0 || !(atom->sphere_flag || atom->superquadric_flag))
       fail("grain group '" + grain_group_ +
-           "' has no grains (polyhedra, or spheres of atom_style sphere or granular in the hybrid)");
+           "' has no grains (polyhedra, or spheres of atom_style sphere or granular, or superquadrics, in the "
+           "hybrid)");
     if (global[kOthersLinked] > 0.0)
       fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[kOthersLinked]) +
            " wire beads (give the grains only)");
@@ -225,7 +228,7 @@ void FixWireGrain::init() {
   // spheres are integrated by LIGGGHTS every step (fix nve/sphere)
   nscd_ = NULL;
   const int *shape = atom->shapetype;
-  for (int k = 0; k < modify->nfix && !nscd_ && !spheres_; k++) {
+  for (int k = 0; k < modify->nfix && !nscd_ && !stock_grains_; k++) {
     FixNSCDPolyhedra *candidate = dynamic_cast<FixNSCDPolyhedra *>(modify->fix[k]);
     if (!candidate) continue;
     long outside = 0, total;
@@ -234,7 +237,7 @@ void FixWireGrain::init() {
     MPI_Allreduce(&outside, &total, 1, MPI_LONG, MPI_SUM, world);
     if (total == 0) nscd_ = candidate;
   }
-  if (!nscd_ && !spheres_)
+  if (!nscd_ && !stock_grains_)
     fail("needs a fix nscd/polyhedra that integrates all grains of group '" + grain_group_ + "'");
 
   const int ntypes = atom->ntypes;
@@ -262,7 +265,7 @@ void FixWireGrain::setup_pre_force(int /*vflag*/) {
 }
 
 void FixWireGrain::post_force(int /*vflag*/) {
-  if (spheres_ || held_version_ != nscd_->pose_version()) hold_grains();
+  if (stock_grains_ || held_version_ != nscd_->pose_version()) hold_grains();
   evaluate(false);
 }
 
@@ -307,15 +310,21 @@ void FixWireGrain::check_time_step() {
 // step), on every rank.
 void FixWireGrain::hold_grains() {
   std::vector<double> mine;
-  const double identity[4] = {1.0, 0.0, 0.0, 0.0};
+  const double identity[4] = {1.0, 0.0, 0.0, 0.0}, none[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
     if (!is_grain(i)) continue;
-    const double *x = atom->x[i], *q = spheres_ ? identity : atom->quaternion[i], *v = atom->v[i],
-                 *w = atom->omega[i];
-    const double shape = spheres_ ? wiregrain::HeldGrain::kSphere : atom->shapetype[i];
+    // polyhedra and superquadrics carry a quaternion (atom->quaternion), spheres none
+    const bool superquadric = stock_grains_ && atom->superquadric_flag;
+    const double *x = atom->x[i], *q = stock_grains_ && !superquadric ? identity : atom->quaternion[i],
+                 *v = atom->v[i], *w = atom->omega[i];
+    const double shape = superquadric    ? wiregrain::HeldGrain::kSuperquadric
+                         : stock_grains_ ? wiregrain::HeldGrain::kSphere
+                                         : atom->shapetype[i];
+    const double *half_axes = superquadric ? atom->shape[i] : none, *blockiness = superquadric ? atom->blockiness[i] : none;
     const double record[kGrainRecord] = {double(atom->tag[i]), shape, double(atom->type[i]),
                                          x[0], x[1], x[2], q[0], q[1], q[2], q[3], v[0], v[1], v[2], w[0], w[1], w[2],
-                                         atom->rmass[i], atom->radius[i]};
+                                         atom->rmass[i], atom->radius[i], half_axes[0], half_axes[1], half_axes[2],
+                                         blockiness[0], blockiness[1]};
     mine.insert(mine.end(), record, record + kGrainRecord);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
@@ -332,6 +341,11 @@ void FixWireGrain::hold_grains() {
     g.motion.angular_velocity = vec3(r + 13);
     g.motion.mass = r[16];
     if (g.shape == wiregrain::HeldGrain::kSphere) g.sphere_radius = r[17];
+    if (g.shape == wiregrain::HeldGrain::kSuperquadric) {
+      g.superquadric.half_axes = vec3(r + 18);
+      g.superquadric.n1 = r[21];
+      g.superquadric.n2 = r[22];
+    }
   }
   wiregrain::GrainBox box;
   box.lo = vec3(domain->boxlo);
@@ -344,7 +358,7 @@ void FixWireGrain::hold_grains() {
   } catch (const std::exception &e) {  // the same on every rank
     fail(std::string("cannot hold the grains at step ") + std::to_string(update->ntimestep) + ": " + e.what());
   }
-  held_version_ = spheres_ ? -1 : nscd_->pose_version();
+  held_version_ = stock_grains_ ? -1 : nscd_->pose_version();
 }
 
 // The reach of the contact search for the coming NSCD step: segment_reach_ (max_stretch),
@@ -495,7 +509,7 @@ void FixWireGrain::evaluate(bool setup) {
     return;
   }
   summed_steps_++;
-  if (spheres_ || nscd_->solves_at_end_of_step(update->ntimestep)) {  // the last sub-step of the NSCD step
+  if (stock_grains_ || nscd_->solves_at_end_of_step(update->ntimestep)) {  // the last sub-step of the NSCD step
     apply_grain_loads(core_->sums, summed_steps_);
     core_->sums.clear();
     summed_steps_ = 0;

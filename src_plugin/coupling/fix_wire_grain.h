@@ -115,7 +115,8 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   class FixNSCDPolyhedra *nscd_;
   class FixWireContactHistory *history_;
   wiregrain_lmp::GrainAtoms grain_atoms_;  // which atoms are polyhedra
-  bool spheres_;                 // the grains are stock spheres (no fix nscd/polyhedra, no sub-cycling)
+  bool stock_grains_;            // the grains are stock spheres or superquadrics, integrated by LIGGGHTS
+                                 // every step (no fix nscd/polyhedra, no sub-cycling)
   std::string history_id_;
   long held_version_;            // the NSCD fix's pose_version() of the held grains
   double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w

@@ -300,8 +300,8 @@ class Grains(Table):
         (ONE_CUBE + "compute h all column/height quantile -0.1\nrun 0",
          "compute column/height (id h): value of 'quantile' must be in [0, 1], got -0.1"),
         (WIRE + "compute h all column/height\nrun 0",
-         "compute column/height (id h): needs atom_style polyhedron or sphere (granular), plain or in a hybrid, "
-         "not 'wire'"),
+         "compute column/height (id h): needs atom_style polyhedron, sphere (granular) or superquadric, plain or "
+         "in a hybrid, not 'wire'"),
         (ONE_CUBE + "compute p all column/retention radius 1 axis 1 abc\nrun 0",
          "compute column/retention (id p): value of 'axis' must be a finite number, got 'abc'"),
         (ONE_CUBE + "compute p all column/retention radius nan\nrun 0",
@@ -309,8 +309,8 @@ class Grains(Table):
         (ONE_CUBE + "compute p all column/retention radius 1 colour red\nrun 0",
          "compute column/retention (id p): unknown keyword 'colour'"),
         (WIRE + "compute p all column/retention radius 1\nrun 0",
-         "compute column/retention (id p): needs atom_style polyhedron or sphere (granular), plain or in a hybrid, "
-         "not 'wire'"),
+         "compute column/retention (id p): needs atom_style polyhedron, sphere (granular) or superquadric, plain or "
+         "in a hybrid, not 'wire'"),
         (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron mass"),
          "atom_style polyhedron: missing value after 'mass'"),
         (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron colour red"),

@@ -528,7 +528,7 @@ class Errors(DeckTestCase):
     def test_groups_and_the_nscd_fix(self):
         self.check("fix nscd grains nscd/polyhedra\nfix wg wire wire/grain wire",
                    "fix wire/grain (id wg): grain group 'wire' has no grains (polyhedra, or spheres of "
-                   "atom_style sphere or granular in the hybrid)")
+                   "atom_style sphere or granular, or superquadrics, in the hybrid)")
         self.check("fix nscd grains nscd/polyhedra\nfix wg grains wire/grain grains",
                    "fix wire/grain (id wg): wire group 'grains' has no wire beads")
         self.check("fix nscd grains nscd/polyhedra\nfix wg all wire/grain grains",
@@ -570,7 +570,7 @@ create_wire 1 line 0 0 0 1 0 0
 fix wg all wire/grain all
 """
         self.assertStopsWith(run(text), "fix wire/grain (id wg): needs atom_style hybrid with wire and polyhedron "
-                                        "(or sphere, granular), not 'wire'")
+                                        "(or sphere, granular, superquadric), not 'wire'")
 
 
 class Capstan(DeckTestCase):

@@ -101,10 +101,14 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 // The same contact against a superquadric (a stock LIGGGHTS superquadric grain): the
 // geometry of segment_contact(PosedSuperquadric, ...) (GJK with the closed-form support
 // point; core/geometry/contact_geometry.h), overlap r_w − d (the body has no sweep), the
-// load point the closest point (a smooth body has no flat feature to share the load
-// over), the force as against a polyhedron.
+// load point the closest point, the force as against a polyhedron. (The rule that shares
+// the load of a segment lying on a polyhedron's face, load_point_parameter, was tried in
+// its smooth form on blocky superquadrics and changed nothing measurable: the residual
+// motion of a wire lying on their nearly flat tops comes from the normal's inaccuracy
+// there, README.)
 WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
                                            const GrainMotion& motion, const WireSegmentState& segment, double dt,
                                            TangentialHistory& history);
+
 
 }  // namespace wiregrain
