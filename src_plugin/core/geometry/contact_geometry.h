@@ -235,14 +235,16 @@ SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& e
                                const ContactOptions& options = ContactOptions());
 
 // The same against a superquadric (core/geometry/superquadric.h; no sweep radius: gap =
-// distance − wire_radius). Apart: GJK with the closed-form support point, stopped when
-// the distance bound gains less than 1e-13 of the size; the normal along the closest
-// points, or, when they are closer than 1e-8 of the size, the surface normal (∇F) at
-// the body's closest point. An axis that touches or crosses the body (overlap ≥ r_w):
-// the normal is ∇F at the segment point nearest the body's centre, the distance minus
-// the overlap of body and segment along it (a separating-axis depth along that one
-// axis: ≥ the penetration depth), t that point's parameter. The smooth body has no flat
-// feature: t_begin = t_end = t.
+// distance − wire_radius). Apart: GJK with the closed-form support point (stopped when
+// the distance bound gains less than 1e-16 of the size), then a Newton polish of the
+// closest points in the normal and the segment parameter; the nearest of the genuine
+// pairs (support point c(n), its projection on the segment) built from GJK's direction,
+// the polished one and GJK's own body point (docs/core_geometry.md). Closer than 1e-8 of
+// the size: the surface normal (∇F) at GJK's body point. An axis that touches or crosses
+// the body (overlap ≥ r_w): the normal is ∇F at the segment point nearest the body's
+// centre, the distance minus the overlap of body and segment along it (a
+// separating-axis depth along that one axis: ≥ the penetration depth), t that point's
+// parameter. No flat features: t_begin = t_end = t.
 SegmentContact segment_contact(const PosedSuperquadric& grain, const Eigen::Vector3d& end0,
                                const Eigen::Vector3d& end1, double wire_radius);
 
