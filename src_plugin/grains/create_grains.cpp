@@ -33,7 +33,11 @@
 #include "core/geometry/convex_shape.h"
 #include "core/common/errors.h"
 #include "core/geometry/shape_library.h"
+#include "core/geometry/superquadric.h"
 #include "core/common/validation.h"
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+#include "math_extra_liggghts_superquadric.h"
+#endif
 #include "plugin_args.h"
 #include "plugin_comm.h"
 #include "plugin_create.h"
@@ -131,6 +135,39 @@ class Placer {
   std::vector<Body> bodies_;
 };
 
+// The superquadric standing in for a generated grain on atom i (atom_style superquadric):
+// its half-axes and axes from superquadric_standing_in (core/geometry/superquadric.h: the
+// grain's volume, the proportions of its inertia ellipsoid, its principal axes), then
+// what LIGGGHTS' `set ... shape ... blockiness ... density ... quat_direct` derives:
+// bounding radius, volume, area, mass, inertia (LIGGGHTS' own functions).
+void place_superquadric(Atom *atom, int i, const wiregrain::GrainShape &grain, const double blockiness[2],
+                        double rho, const Eigen::Quaterniond &q) {
+  const wiregrain::Superquadric sq =
+      wiregrain::superquadric_standing_in(grain.volume, grain.unit_inertia, blockiness[0], blockiness[1]);
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  for (int d = 0; d < 3; d++) {
+    atom->shape[i][d] = sq.half_axes[d];
+    atom->angmom[i][d] = 0.0;
+  }
+  atom->blockiness[i][0] = sq.n1;
+  atom->blockiness[i][1] = sq.n2;
+  const Eigen::Quaterniond unit = q.normalized();
+  atom->quaternion[i][0] = unit.w();
+  atom->quaternion[i][1] = unit.x();
+  atom->quaternion[i][2] = unit.y();
+  atom->quaternion[i][3] = unit.z();
+  atom->density[i] = rho;
+  MathExtraLiggghtsNonspherical::bounding_sphere_radius_superquadric(atom->shape[i], atom->blockiness[i],
+                                                                     atom->radius + i);
+  MathExtraLiggghtsNonspherical::volume_superquadric(atom->shape[i], atom->blockiness[i], atom->volume + i);
+  MathExtraLiggghtsNonspherical::area_superquadric(atom->shape[i], atom->blockiness[i], atom->area + i);
+  atom->rmass[i] = rho * atom->volume[i];
+  MathExtraLiggghtsNonspherical::inertia_superquadric(atom->shape[i], atom->blockiness[i], rho, atom->inertia[i]);
+#else
+  (void)atom, (void)i, (void)rho, (void)q;
+#endif
+}
+
 struct ShapeChoice {
   std::string kind = "ellipsoid";  // ellipsoid cube box tetrahedron octahedron sphere file
   double size[3] = {0.0, 0.0, 0.0};
@@ -146,10 +183,12 @@ void CreateGrains::command(int narg, char **arg) {
   wiregrain_lmp::StyleArgs args(error, "command", "create_grains", id, narg, arg, 0);
   if (domain->box_exist == 0) args.fail("create a simulation box first");
   AtomVecPolyhedron *poly = AtomVecPolyhedron::of(atom);
-  // without atom_style polyhedron: stock granular spheres of the grains' volumes
-  const bool spheres = !poly && atom->sphere_flag;
-  if (!poly && !spheres)
-    args.fail("needs atom_style polyhedron or sphere (granular), plain or in a hybrid, not '" +
+  // without atom_style polyhedron: LIGGGHTS' superquadrics standing in for the grains, or
+  // stock granular spheres of the grains' volumes
+  const bool superquadrics = !poly && atom->superquadric_flag;
+  const bool spheres = !poly && !superquadrics && atom->sphere_flag;
+  if (!poly && !spheres && !superquadrics)
+    args.fail("needs atom_style polyhedron, sphere (granular) or superquadric, plain or in a hybrid, not '" +
               std::string(atom->atom_style) + "'");
   if (domain->triclinic) args.fail("triclinic boxes are not supported");
   if (narg < 4) args.fail("expected: create_grains type N layer|random region-ID ...");
@@ -171,8 +210,8 @@ void CreateGrains::command(int narg, char **arg) {
   bool have_seed = false;
   std::uint64_t seed = 0;
   double a_min = 0.8, a_max = 1.0, b_over_a = 0.8, c_over_a = 0.6, sweep = 0.1, rho = 1.5;
-  double spacing = 0.0;
-  bool have_sweep = false;
+  double spacing = 0.0, blockiness[2] = {3.0, 3.0};
+  bool have_sweep = false, have_blockiness = false;
   long n_vertices = 20, attempts = 1000;
   ShapeChoice choice;
   std::string shapes_file;
@@ -205,6 +244,13 @@ void CreateGrains::command(int narg, char **arg) {
       spacing = args.value_positive(key);
     } else if (key == "attempts") {
       attempts = args.value_int_in_range(key, 1, LONG_MAX);
+    } else if (key == "blockiness") {
+      for (int k = 0; k < 2; k++) {
+        blockiness[k] = args.value_double(key);
+        if (!(blockiness[k] >= 2.0) || !std::isfinite(blockiness[k]))
+          args.fail("value of 'blockiness' must be a finite number >= 2, got " + wiregrain::format_number(blockiness[k]));
+      }
+      have_blockiness = true;
     } else if (key == "write_shapes") {
       shapes_file = args.value_word(key);
     } else if (key == "shape") {
@@ -227,6 +273,10 @@ void CreateGrains::command(int narg, char **arg) {
   if (!have_seed) args.fail("missing keyword 'seed' (a positive integer for the random numbers)");
   if (spheres && !shapes_file.empty())
     args.fail("keyword 'write_shapes' applies to polyhedra (atom_style polyhedron), not to spheres");
+  if (superquadrics && !shapes_file.empty())
+    args.fail("keyword 'write_shapes' applies to polyhedra (atom_style polyhedron), not to superquadrics");
+  if (have_blockiness && !superquadrics)
+    args.fail("keyword 'blockiness' applies to superquadrics (atom_style superquadric) only");
   // a sphere is the one-vertex grain whose sweep radius is its radius R
   if (choice.kind == "sphere" && have_sweep)
     args.fail("keyword 'sweep' does not apply to 'shape sphere' (its radius is the sweep radius)");
@@ -489,6 +539,14 @@ void CreateGrains::command(int narg, char **arg) {
     atom->tag[i] = maxtag + 1 + k;
     atom->image[i] = image;
     for (int d = 0; d < 3; d++) atom->v[i][d] = atom->omega[i][d] = 0.0;
+    if (superquadrics) {  // the grain's stand-in, as LIGGGHTS' `set ... shape blockiness density quat` makes it
+      try {
+        place_superquadric(atom, i, library[shape_of[k]], blockiness, rho, orientation[k]);
+      } catch (const wiregrain::InvalidArgument &e) {
+        args.fail(std::string("cannot make the superquadric of grain ") + std::to_string(k + 1) + ": " + e.what());
+      }
+      continue;
+    }
     if (spheres) {  // as LIGGGHTS' `set ... diameter D density rho` makes it
       const double r = library[shape_of[k]].shape.sweep_radius();
       atom->radius[i] = r;
@@ -545,11 +603,13 @@ void CreateGrains::command(int narg, char **arg) {
 
   if (comm->me == 0) {
     char line[512];
-    std::string msg = "create_grains: " + std::to_string(n) + (spheres ? " spheres of the grains' volumes (" : " grains (") +
+    std::string msg = "create_grains: " + std::to_string(n) +
+                      (spheres ? " spheres of the grains' volumes ("
+                               : superquadrics ? " superquadrics standing in for the grains (" : " grains (") +
                       (layer ? "layer of " + std::to_string(sites.size()) + " lattice sites" : std::string("random")) +
                       " in region " + region_id + "), atom IDs " + std::to_string(maxtag + 1) + ".." +
                       std::to_string(maxtag + n) +
-                      (spheres ? std::string("\n")
+                      (spheres || superquadrics ? std::string("\n")
                                : ", library shapes " + std::to_string(library_before) + ".." +
                                      std::to_string(library.size() - 1) + "\n");
     if (close_pairs > 0)

@@ -353,3 +353,58 @@ TEST(WireOnSuperquadric, HeldAmongOtherGrains) {
     EXPECT_EQ(e.argument(), "blockiness");
   }
 }
+
+// Volume and moments against LIGGGHTS-independent references: the ellipsoid (n = 2:
+// 4/3 π abc, I_xx = V (b² + c²)/5) and the box limit (n → ∞: 8 abc, I_xx = V (b² + c²)/3,
+// approached as n grows); a midpoint-rule integration over the body for n = 3, 4.
+TEST(Superquadric, VolumeAndMomentsAgainstEllipsoidBoxAndQuadrature) {
+  Superquadric s;
+  s.half_axes = Vector3d(0.5, 0.35, 0.8);
+  const double a = 0.5, b = 0.35, c = 0.8;
+  const double v = 4.0 / 3.0 * kPi * a * b * c;
+  EXPECT_NEAR(superquadric_volume(s) / v, 1.0, 1e-14);
+  const Vector3d I = superquadric_unit_inertia(s);
+  EXPECT_NEAR(I.x() / (v * (b * b + c * c) / 5), 1.0, 1e-14);
+  EXPECT_NEAR(I.y() / (v * (a * a + c * c) / 5), 1.0, 1e-14);
+  EXPECT_NEAR(I.z() / (v * (a * a + b * b) / 5), 1.0, 1e-14);
+  s.n1 = s.n2 = 400.0;
+  EXPECT_NEAR(superquadric_volume(s) / (8 * a * b * c), 1.0, 1e-2);
+  EXPECT_NEAR(superquadric_unit_inertia(s).x() / (8 * a * b * c * (b * b + c * c) / 3), 1.0, 2e-2);
+  for (const double n : {3.0, 4.0}) {
+    s.n1 = n;
+    s.n2 = n + 1.0;
+    const int m = 120;
+    double volume = 0.0;
+    Vector3d moments = Vector3d::Zero();
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j)
+        for (int k = 0; k < m; ++k) {
+          const Vector3d x(a * (2 * (i + 0.5) / m - 1), b * (2 * (j + 0.5) / m - 1), c * (2 * (k + 0.5) / m - 1));
+          if (superquadric_shape_function(s, x) > 0.0) continue;
+          const double dv = 8 * a * b * c / (m * m * m);
+          volume += dv;
+          moments += dv * Vector3d(x.y() * x.y() + x.z() * x.z(), x.x() * x.x() + x.z() * x.z(),
+                                   x.x() * x.x() + x.y() * x.y());
+        }
+    EXPECT_NEAR(superquadric_volume(s) / volume, 1.0, 3e-3) << n;
+    EXPECT_NEAR((superquadric_unit_inertia(s).array() / moments.array() - 1.0).abs().maxCoeff(), 0.0, 5e-3) << n;
+  }
+}
+
+// The stand-in of a grain: its volume; for n = 2 the ellipsoid of the grain's moments per
+// volume (an ellipsoid stands in for itself); bad moments rejected.
+TEST(Superquadric, StandInHasTheGrainsVolumeAndAxes) {
+  const double a = 0.5, b = 0.35, c = 0.8, v = 4.0 / 3.0 * kPi * a * b * c;
+  const Vector3d I(v * (b * b + c * c) / 5, v * (a * a + c * c) / 5, v * (a * a + b * b) / 5);
+  const Superquadric e = superquadric_standing_in(v, I, 2.0, 2.0);
+  EXPECT_NEAR((e.half_axes - Vector3d(a, b, c)).norm(), 0.0, 1e-14);
+  const Superquadric s = superquadric_standing_in(0.3, I, 3.0, 4.0);
+  EXPECT_NEAR(superquadric_volume(s) / 0.3, 1.0, 1e-14);
+  EXPECT_NEAR(s.half_axes.x() / s.half_axes.z(), a / c, 1e-14);  // the ellipsoid's proportions
+  try {
+    superquadric_standing_in(1.0, Vector3d(1.0, 1.0, 3.0), 2.0, 2.0);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "inertia");
+  }
+}

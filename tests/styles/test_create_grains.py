@@ -5,7 +5,9 @@ minimum over vertex-face and edge-edge feature pairs), masses by Steiner's formu
 same grains on 1 and 2 MPI ranks, and the ERROR texts."""
 
 import math
+import os
 import re
+import unittest
 
 import numpy as np
 
@@ -609,8 +611,62 @@ create_grains   1 40 {mode} seed 5 a_max 1.0 density 2.0"""
         atomic = HEADER.replace("atom_style      polyhedron", "atom_style      atomic")
         self.assertStopsWith(run(atomic + "region cont block -7 7 -4 4 0 4\n"
                                  "create_grains 1 4 random cont seed 1\n"),
-                             "command create_grains (id -): needs atom_style polyhedron or sphere (granular), "
-                             "plain or in a hybrid, not 'atomic'")
+                             "command create_grains (id -): needs atom_style polyhedron, sphere (granular) or "
+                             "superquadric, plain or in a hybrid, not 'atomic'")
+
+
+@unittest.skipUnless(os.environ.get("WIREGRAIN_SUPERQUADRIC") == "ON", "LIGGGHTS built without superquadrics")
+class StockSuperquadrics(DeckTestCase):
+    """With atom_style superquadric (no polyhedra), create_grains makes LIGGGHTS'
+    superquadrics standing in for the grains: the grain's volume (LIGGGHTS' own volume
+    formula gives it back), its site and orientation, the longest half-axis along the
+    grain's longest extent, the blockiness given."""
+
+    SQ_HEADER = HEADER.replace("atom_style      polyhedron", "atom_style      superquadric")
+    SQ_FOOTER = """
+dump            d all custom 1 dump.s id x y z shapex shapey shapez blockiness1 blockiness2 quat1 quat2 quat3 quat4 mass
+dump_modify     d format "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g"
+run             0
+"""
+
+    def test_superquadrics_standing_in_for_the_grains(self):
+        command = """
+region          cont block -7 7 -4 4 0 10
+create_grains   1 40 layer cont 1.5 seed 5 a_max 1.0 density 2.0"""
+        polyhedra = run(HEADER + command + " write_shapes shapes.txt\n" + FOOTER)
+        self.assertRanCleanly(polyhedra)
+        sq = run(self.SQ_HEADER + command + " blockiness 3 4\n" + self.SQ_FOOTER)
+        self.assertRanCleanly(sq)
+        self.assertIn("create_grains: 40 superquadrics standing in for the grains", sq.output)
+        grains = read_shapes(polyhedra.path("shapes.txt"))
+        d = read_dump(sq.path("dump.s"))
+        volume = np.array([g.volume for g in grains])
+        np.testing.assert_allclose(d["mass"], 2.0 * volume, rtol=1e-13, atol=0)
+        np.testing.assert_array_equal(np.array([d["x"], d["y"], d["z"]]).T, np.array([g.x for g in grains]))
+        np.testing.assert_array_equal(d["blockiness1"], 3.0)
+        np.testing.assert_array_equal(d["blockiness2"], 4.0)
+        q = np.array([d["quat1"], d["quat2"], d["quat3"], d["quat4"]]).T
+        q_grains = np.array([g.q / np.linalg.norm(g.q) for g in grains])
+        np.testing.assert_allclose(np.abs(np.sum(q * q_grains, axis=1)), 1.0, rtol=0, atol=1e-14)
+        half_axes = np.array([d["shapex"], d["shapey"], d["shapez"]]).T
+        extents = np.array([np.abs(g.body).max(axis=0) for g in grains])
+        # the longest half-axis along the grain's longest extent (b/a = 0.8 sets them apart;
+        # the two shorter ones can swap: the inertia ellipsoid's proportions are not the extents')
+        np.testing.assert_array_equal(np.argmax(half_axes, axis=1), np.argmax(extents, axis=1))
+        print(f"\n40 superquadrics (n = 3, 4): half-axes {half_axes.min():.4f}..{half_axes.max():.4f}")
+
+    def test_errors(self):
+        text = self.SQ_HEADER + "region cont block -7 7 -4 4 0 4\n"
+        self.assertStopsWith(run(text + "create_grains 1 4 random cont seed 1 blockiness 1.5 3\n"),
+                             "command create_grains (id -): value of 'blockiness' must be a finite number >= 2, "
+                             "got 1.5")
+        self.assertStopsWith(run(text + "create_grains 1 4 random cont seed 1 write_shapes s.txt\n"),
+                             "command create_grains (id -): keyword 'write_shapes' applies to polyhedra "
+                             "(atom_style polyhedron), not to superquadrics")
+        self.assertStopsWith(run(HEADER + "region cont block -7 7 -4 4 0 4\n"
+                                 "create_grains 1 4 random cont seed 1 blockiness 3 3\n"),
+                             "command create_grains (id -): keyword 'blockiness' applies to superquadrics "
+                             "(atom_style superquadric) only")
 
 
 class Errors(DeckTestCase):

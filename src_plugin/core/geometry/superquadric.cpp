@@ -66,6 +66,38 @@ Eigen::Vector3d superquadric_support(const Superquadric& s, const Eigen::Vector3
 
 double superquadric_bounding_radius(const Superquadric& s) { return s.half_axes.norm(); }
 
+double superquadric_volume(const Superquadric& s) {
+  const double e1 = 2.0 / s.n1, e2 = 2.0 / s.n2;
+  return 2.0 * s.half_axes.prod() * e1 * e2 * std::beta(0.5 * e1, e1 + 1.0) * std::beta(0.5 * e2, 0.5 * e2 + 1.0);
+}
+
+Eigen::Vector3d superquadric_unit_inertia(const Superquadric& s) {
+  const double e1 = 2.0 / s.n1, e2 = 2.0 / s.n2;
+  const double a = s.half_axes.x(), b = s.half_axes.y(), c = s.half_axes.z();
+  const double front = 0.5 * a * b * c * e1 * e2;
+  const double planar = std::beta(1.5 * e2, 0.5 * e2) * std::beta(0.5 * e1, 2.0 * e1 + 1.0);
+  const double axial = 4.0 * std::beta(0.5 * e2, 0.5 * e2 + 1.0) * std::beta(1.5 * e1, e1 + 1.0);
+  return Eigen::Vector3d(front * (b * b * planar + c * c * axial), front * (a * a * planar + c * c * axial),
+                         front * (a * a + b * b) * planar);
+}
+
+Superquadric superquadric_standing_in(double volume, const Eigen::Vector3d& unit_inertia, double n1, double n2) {
+  if (!(volume > 0.0) || !std::isfinite(volume))
+    throw InvalidArgument("volume", "volume must be finite and > 0, got " + format_number(volume));
+  const Eigen::Vector3d& I = unit_inertia;
+  const Eigen::Vector3d squares(I.y() + I.z() - I.x(), I.x() + I.z() - I.y(), I.x() + I.y() - I.z());
+  if (!(squares.minCoeff() > 0.0) || !I.allFinite())
+    throw InvalidArgument("inertia", "principal moments " + format_number(I.x()) + " " + format_number(I.y()) + " " +
+                                         format_number(I.z()) + " are no solid's (triangle inequality)");
+  Superquadric out;
+  out.half_axes = (2.5 / volume * squares).cwiseSqrt();
+  out.n1 = n1;
+  out.n2 = n2;
+  check_superquadric(out);
+  out.half_axes *= std::cbrt(volume / superquadric_volume(out));
+  return out;
+}
+
 PosedSuperquadric::PosedSuperquadric(const Superquadric& shape, const Eigen::Vector3d& position,
                                      const Eigen::Quaterniond& orientation)
     : shape_(shape), position_(position) {

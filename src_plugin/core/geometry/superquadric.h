@@ -42,6 +42,23 @@ Eigen::Vector3d superquadric_support(const Superquadric& shape, const Eigen::Vec
 // √(a² + b² + c²).
 double superquadric_bounding_radius(const Superquadric& shape);
 
+// Volume and principal moments at density 1 (body axes) of a superquadric, in closed form
+// with Euler's beta function B (Jaklič, Leonardis & Solina, "Segmentation and Recovery of
+// Superquadrics", 2000, ch. 2; ε_k = 2/n_k):
+//   V = 2 a b c ε₁ ε₂ B(ε₁/2, ε₁ + 1) B(ε₂/2, ε₂/2 + 1),
+//   I_xx = ½ a b c ε₁ ε₂ [b² B(3ε₂/2, ε₂/2) B(ε₁/2, 2ε₁ + 1) + 4 c² B(ε₂/2, ε₂/2 + 1) B(3ε₁/2, ε₁ + 1)],
+//   I_yy likewise with a² for b², I_zz = ½ a b c ε₁ ε₂ (a² + b²) B(3ε₂/2, ε₂/2) B(ε₁/2, 2ε₁ + 1).
+double superquadric_volume(const Superquadric& shape);
+Eigen::Vector3d superquadric_unit_inertia(const Superquadric& shape);
+
+// The superquadric of blockiness n1, n2 that stands in for a grain of volume V and
+// principal moments I (at density 1, about its principal axes): the half-axes of the
+// ellipsoid with the same moments per volume, a² = 5 (I_y + I_z − I_x) / (2 V) and
+// cyclically, scaled by s = (V / V_sq)^(1/3) so that the superquadric has the volume V.
+// Its axes are the grain's principal axes. Throws InvalidArgument("inertia") when the
+// moments violate the triangle inequality (no such ellipsoid), ("volume") for V ≤ 0.
+Superquadric superquadric_standing_in(double volume, const Eigen::Vector3d& unit_inertia, double n1, double n2);
+
 // A superquadric placed in the world: x_world = R(q) x_body + position.
 class PosedSuperquadric {
  public:
