@@ -13,8 +13,9 @@ Every snapshot of every file is one line: step, H, H_n, φ_p, U_s/L, z_wpc.
 
 A FILE ending in .vtp is a `dump polyhedron/vtk` snapshot of the grains: a grain's centre
 and top are its cell arrays `center` and `top`, its type the cell array `type`. One ending
-in .vtk is a legacy VTK of spheres (LIGGGHTS' `dump custom/vtk ... x y z radius`): top =
-z + radius. The wire is the `dump wire/vtk` file beside it (the name with "grains"
+in .vtk is a legacy VTK of stock grains (LIGGGHTS' `dump custom/vtk ... x y z radius
+[c_gs[7]]`): top = the array c_gs[7] (in.column writes it: compute grain/shape's top, for
+superquadrics too), else z + radius. The wire is the `dump wire/vtk` file beside it (the name with "grains"
 replaced by "wire", .vtp), if there is one: beads are its points, their energies its point
 arrays `stretching_energy` and `bending_energy` (`energy` keyword), a bead's segment the
 line from it to the next point of its polyline (none for a chain's last bead), the grains
@@ -77,7 +78,9 @@ def read_vtk(path):
     if path.endswith(".vtk"):
         centres, arrays = vf.read_legacy_spheres(path)
         grain_type = arrays["type"] if "type" in arrays else np.ones(len(centres))
-        tops = centres[:, 2] + arrays["radius"]
+        # the top the run computed (in.column writes c_gs[7]; a superquadric's radius is its
+        # bounding sphere's), else a sphere's
+        tops = arrays["c_gs[7]"] if "c_gs[7]" in arrays else centres[:, 2] + arrays["radius"]
         radii = arrays["radius"]
     else:
         grains = vf.read_polydata(path)

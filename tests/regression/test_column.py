@@ -9,6 +9,7 @@ import os
 import re
 import subprocess
 import sys
+import unittest
 
 import numpy as np
 
@@ -195,7 +196,7 @@ class Column(DeckTestCase):
         # volumes, fix nve/sphere, fix wall/gran with moving mesh walls): runs to the end
         spheres = run(COLUMN, variables=dict(TINY, grains="spheres"), np_ranks=2)
         self.assertRanCleanly(spheres)
-        self.assertIn("in.column: grain model spheres (nscd or spheres)", spheres.output)
+        self.assertIn("in.column: grain model spheres (nscd, spheres or superquadrics)", spheres.output)
         self.assertIn("create_grains: 12 spheres of the grains' volumes", spheres.output)
         obs = final_observables(spheres)
         print(f"\ntiny column of stock spheres, 2 ranks: {obs}")
@@ -208,6 +209,25 @@ class Column(DeckTestCase):
         assert_dump_observables_match(self, spheres)
         # (LIGGGHTS' legacy VTK holds 6 significant digits: its points are ASCII floats)
         assert_vtk_observables_match(self, spheres, h_n_delta=1e-5)
+
+    @unittest.skipUnless(os.environ.get("WIREGRAIN_SUPERQUADRIC") == "ON", "LIGGGHTS built without superquadrics")
+    def test_stock_superquadrics_on_two_ranks(self):
+        # -var grains superquadrics: LIGGGHTS' superquadrics standing in for the grains
+        # (create_grains, blockiness n_sq = 3), fix nve/superquadric, pair gran and fix
+        # wall/gran with surface superquadric; runs to the end, and the dumps and VTK files
+        # give the computes' observables
+        sq = run(COLUMN, variables=dict(TINY, grains="superquadrics"), np_ranks=2)
+        self.assertRanCleanly(sq)
+        self.assertIn("create_grains: 12 superquadrics standing in for the grains", sq.output)
+        obs = final_observables(sq)
+        print(f"\ntiny column of superquadrics, 2 ranks: {obs}")
+        self.assertGreater(obs["phi_p"], 0.5)
+        self.assertGreater(obs["z_wpc"], 0.0)
+        self.assertGreater(obs["U_s/L"], 0.0)
+        self.assertGreater(obs["H_n"], 0.0)
+        assert_dump_observables_match(self, sq)
+        # (LIGGGHTS' legacy VTK holds c_gs[7], the top, with 11 significant digits)
+        assert_vtk_observables_match(self, sq, h_n_delta=1e-9)
 
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
