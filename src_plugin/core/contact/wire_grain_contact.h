@@ -104,8 +104,7 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 // load point the closest point, the force as against a polyhedron. (The rule that shares
 // the load of a segment lying on a polyhedron's face, load_point_parameter, was tried in
 // its smooth form on blocky superquadrics and changed nothing measurable: the residual
-// motion of a wire lying on their nearly flat tops comes from the normal's inaccuracy
-// there, README.)
+// motion of a wire lying on their tops goes away with a smaller time step, README.)
 WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
                                            const GrainMotion& motion, const WireSegmentState& segment, double dt,
                                            TangentialHistory& history);
