@@ -154,8 +154,8 @@ def grain_tops(atoms, grains, shapes):
     if shapes is not None and "c_gs[1]" in atoms:
         tops = []
         for i in np.nonzero(grains)[0]:
-            if atoms["c_gs[1]"][i] < 0:  # a sphere
-                tops.append(atoms["z"][i] + atoms["radius"][i])
+            if atoms["c_gs[1]"][i] < 0:  # no library shape: a stock sphere (-1) or superquadric (-3)
+                tops.append(atoms["c_gs[7]"][i] if "c_gs[7]" in atoms else atoms["z"][i] + atoms["radius"][i])
                 continue
             sweep, vertices = shapes[int(atoms["c_gs[1]"][i])]
             q = [atoms[f"c_gs[{c}]"][i] for c in range(2, 6)]

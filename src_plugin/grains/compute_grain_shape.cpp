@@ -13,6 +13,8 @@ using namespace LAMMPS_NS;
 
 namespace {
 constexpr int kColumns = 7;
+// the shape index of grains without a library shape
+constexpr double kSphere = -1.0, kSuperquadric = -3.0;
 }
 
 ComputeGrainShape::ComputeGrainShape(LAMMPS *lmp, int &iarg, int narg, char **arg)
@@ -40,13 +42,14 @@ void ComputeGrainShape::compute_peratom() {
     double *out = values_[i];
     for (int k = 0; k < kColumns; k++) out[k] = 0.0;
     if (!(atom->mask[i] & groupbit) || !grains_.is_grain(i)) {
-      out[0] = -2.0;
+      out[0] = -2.0;  // no grain
       continue;
     }
     const bool polyhedron = grains_.is_polyhedron(i);
-    out[0] = polyhedron ? atom->shapetype[i] : -1.0;
+    const bool superquadric = !polyhedron && atom->superquadric_flag;
+    out[0] = polyhedron ? atom->shapetype[i] : superquadric ? kSuperquadric : kSphere;
     out[1] = 1.0;
-    if (polyhedron)
+    if (polyhedron || superquadric)
       for (int k = 0; k < 4; k++) out[1 + k] = atom->quaternion[i][k];
     out[5] = atom->radius[i];
     out[6] = grains_.top(i);

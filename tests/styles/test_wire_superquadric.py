@@ -266,14 +266,22 @@ class ColumnHeight(DeckTestCase):
         a, b, c, n1, n2 = 0.5, 0.4, 0.6, 3.0, 4.0
         q = np.array([0.9, 0.3, 0.2, 0.1])
         made = superquadric_scene([(0.3, -0.2, 1.5, (a, b, c), (n1, n2), 1.0, tuple(q))], [])
-        r = run(deck(made, """
+        r = run(full_precision(deck(made, """
 compute         h grains column/height quantile 1
+compute         gs grains grain/shape
 thermo_style    custom step c_h
 thermo_modify   format float %.17g
+dump            d all custom 1 dump.g id c_gs[1] c_gs[2] c_gs[3] c_gs[4] c_gs[5] c_gs[7]
 run             0
-"""))
+"""), "d"))
         self.assertRanCleanly(r)
         top = r.thermo()["h"][-1]
+        # compute grain/shape: shape index -3, the quaternion set, the same top
+        g = read_dump(r.path("dump.g"))
+        self.assertEqual(g["c_gs[1]"][0], -3.0)
+        np.testing.assert_allclose([g[f"c_gs[{k}]"][0] for k in (2, 3, 4, 5)], q / np.linalg.norm(q), rtol=0,
+                                   atol=1e-15)
+        self.assertEqual(g["c_gs[7]"][0], top)
         w, x, y, z = q / np.linalg.norm(q)
         rz = np.array([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)])  # row z of R
         eta, omega = np.meshgrid(np.linspace(-np.pi / 2, np.pi / 2, 801), np.linspace(0, 2 * np.pi, 1601))
