@@ -8,7 +8,9 @@ as a line coloured by its elastic strain energy per bead.
 RUN: a run directory of input_scripts/in.column (or of postprocess/sweep.py), whose post/
 holds the grains_final_STEP.vtp and wire_final_STEP.vtp the deck writes at its end (a run
 without wire has no wire file; a run of stock spheres, `-var grains spheres`, has
-grains_final_STEP.vtk, LIGGGHTS' legacy VTK with a radius per point, drawn as spheres),
+grains_final_STEP.vtk, LIGGGHTS' legacy VTK with a radius per point, drawn as spheres;
+one of superquadrics, `-var grains superquadrics`, the same with their half-axes,
+blockiness and rotation, drawn as superquadrics),
 or a grains VTP file itself (the wire file is then looked
 for beside it, with "grains" replaced by "wire"). All panels share one length scale, in
 a_max, so that columns of different R compare. Reads VTK's XML with Debian's
@@ -60,13 +62,41 @@ def sphere_faces(centres, radii, subdivisions=8):
     return faces
 
 
+def superquadric_faces(centres, half_axes, blockiness, rotations, subdivisions=8):
+    """Each superquadric (LIGGGHTS': (|x/a|^n2 + |y/b|^n2)^(n1/n2) + |z/c|^n1 = 1) as a mesh
+    of quadrilaterals on Barr's parametrisation (latitude η, longitude ω, exponents 2/n),
+    turned by its rotation matrix (body → world) and moved to its centre."""
+    eta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, subdivisions + 1)
+    omega = np.linspace(0.0, 2.0 * np.pi, 2 * subdivisions + 1)
+    eta, omega = np.meshgrid(eta, omega, indexing="ij")
+
+    def signed_power(v, e):
+        return np.sign(v) * np.abs(v) ** e
+
+    faces = []
+    for c, (a, b, h), (n1, n2), R in zip(centres, half_axes, blockiness, rotations):
+        ce = signed_power(np.cos(eta), 2.0 / n1)
+        body = np.stack([a * ce * signed_power(np.cos(omega), 2.0 / n2), b * ce * signed_power(np.sin(omega), 2.0 / n2),
+                         h * signed_power(np.sin(eta), 2.0 / n1)], axis=-1)
+        p = c + body @ np.asarray(R).reshape(3, 3).T
+        for i in range(subdivisions):
+            for j in range(2 * subdivisions):
+                faces.append(np.array([p[i, j], p[i + 1, j], p[i + 1, j + 1], p[i, j + 1]]))
+    return faces
+
+
 def grain_faces(path):
-    """The faces of the grains of a polyhedron VTP or a sphere VTK (points with radius)."""
+    """The faces of the grains of a polyhedron VTP, or of a stock-grain VTK: superquadrics
+    (with shapex.. and LIGGGHTS' rotation TENSOR, as in.column writes them) or spheres
+    (points with radius)."""
     if path.endswith(".vtp"):
         grains = read_polydata(path)
         points = vtk_to_numpy(grains.GetPoints().GetData())
         return [points[f] for f in cells(grains.GetPolys())]
     centres, arrays = read_legacy_spheres(path)
+    if all(k in arrays for k in ("shapex", "shapey", "shapez", "blockiness1", "blockiness2", "TENSOR")):
+        return superquadric_faces(centres, np.stack([arrays["shapex"], arrays["shapey"], arrays["shapez"]], axis=1),
+                                  np.stack([arrays["blockiness1"], arrays["blockiness2"]], axis=1), arrays["TENSOR"])
     return sphere_faces(centres, arrays["radius"])
 
 
