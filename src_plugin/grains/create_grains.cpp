@@ -135,15 +135,13 @@ class Placer {
   std::vector<Body> bodies_;
 };
 
-// The superquadric standing in for a generated grain on atom i (atom_style superquadric):
-// its half-axes and axes from superquadric_standing_in (core/geometry/superquadric.h: the
-// grain's volume, the proportions of its inertia ellipsoid, its principal axes), then
-// what LIGGGHTS' `set ... shape ... blockiness ... density ... quat_direct` derives:
-// bounding radius, volume, area, mass, inertia (LIGGGHTS' own functions).
-void place_superquadric(Atom *atom, int i, const wiregrain::GrainShape &grain, const double blockiness[2],
-                        double rho, const Eigen::Quaterniond &q) {
-  const wiregrain::Superquadric sq =
-      wiregrain::superquadric_standing_in(grain.volume, grain.unit_inertia, blockiness[0], blockiness[1]);
+// The superquadric standing in for a generated grain (sq: superquadric_standing_in,
+// core/geometry/superquadric.h) on atom i (atom_style superquadric), with the grain's
+// orientation q (its principal axes), then what LIGGGHTS' `set ... shape ... blockiness
+// ... density ... quat_direct` derives: bounding radius, volume, area, mass, inertia
+// (LIGGGHTS' own functions).
+void place_superquadric(Atom *atom, int i, const wiregrain::Superquadric &sq, double rho,
+                        const Eigen::Quaterniond &q) {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   for (int d = 0; d < 3; d++) {
     atom->shape[i][d] = sq.half_axes[d];
@@ -164,7 +162,7 @@ void place_superquadric(Atom *atom, int i, const wiregrain::GrainShape &grain, c
   atom->rmass[i] = rho * atom->volume[i];
   MathExtraLiggghtsNonspherical::inertia_superquadric(atom->shape[i], atom->blockiness[i], rho, atom->inertia[i]);
 #else
-  (void)atom, (void)i, (void)rho, (void)q;
+  (void)atom, (void)i, (void)sq, (void)rho, (void)q;
 #endif
 }
 
@@ -526,6 +524,19 @@ void CreateGrains::command(int narg, char **arg) {
   const int maxtag = wiregrain_lmp::max_atom_tag(lmp);
   if (static_cast<long>(maxtag) + n > MAXSMALLINT) args.fail("too many atoms: atom IDs would exceed the int range");
 
+  // superquadrics: the stand-in of every shape in use, on every rank (the same library
+  // everywhere, so a shape without one stops all ranks alike)
+  std::vector<wiregrain::Superquadric> stand_in(superquadrics ? library.size() : 0);
+  if (superquadrics)
+    for (int k = 0; k < n; k++) {
+      const wiregrain::GrainShape &g = library[shape_of[k]];
+      try {
+        stand_in[shape_of[k]] = wiregrain::superquadric_standing_in(g.volume, g.unit_inertia, blockiness[0], blockiness[1]);
+      } catch (const wiregrain::InvalidArgument &e) {
+        args.fail(std::string("cannot make the superquadric of grain ") + std::to_string(k + 1) + ": " + e.what());
+      }
+    }
+
   const int nlocal_before = atom->nlocal;
   for (int k = 0; k < n; k++) {
     double x[3] = {position[k][0], position[k][1], position[k][2]};
@@ -540,11 +551,7 @@ void CreateGrains::command(int narg, char **arg) {
     atom->image[i] = image;
     for (int d = 0; d < 3; d++) atom->v[i][d] = atom->omega[i][d] = 0.0;
     if (superquadrics) {  // the grain's stand-in, as LIGGGHTS' `set ... shape blockiness density quat` makes it
-      try {
-        place_superquadric(atom, i, library[shape_of[k]], blockiness, rho, orientation[k]);
-      } catch (const wiregrain::InvalidArgument &e) {
-        args.fail(std::string("cannot make the superquadric of grain ") + std::to_string(k + 1) + ": " + e.what());
-      }
+      place_superquadric(atom, i, stand_in[shape_of[k]], rho, orientation[k]);
       continue;
     }
     if (spheres) {  // as LIGGGHTS' `set ... diameter D density rho` makes it
