@@ -72,10 +72,12 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
     """Write deck_text to in.deck in a fresh directory (or workdir) and run it.
     files: {name: text} written next to the deck."""
     workdir = workdir or tempfile.mkdtemp(prefix="wiregrain-")
-    with open(os.path.join(workdir, "in.deck"), "w") as f:
+    # (UTF-8 whatever the locale: decks hold §, μ, ...; a library imported by a test, e.g.
+    # matplotlib, may set the C locale, whose default encoding is ASCII)
+    with open(os.path.join(workdir, "in.deck"), "w", encoding="utf-8") as f:
         f.write(deck_text)
     for name, text in (files or {}).items():
-        with open(os.path.join(workdir, name), "w") as f:
+        with open(os.path.join(workdir, name), "w", encoding="utf-8") as f:
             f.write(text)
     cmd = [LIGGGHTS, "-echo", "screen", "-log", "log.liggghts", "-in", "in.deck"]
     for key, value in (variables or {}).items():
@@ -210,7 +212,7 @@ def loaded_contact_measurement(group, ids, normal_force, tangential_force, steps
 
 def deck(name):
     """Text of a deck shipped in the repository (path relative to the repository root)."""
-    with open(os.path.join(SOURCE, name)) as f:
+    with open(os.path.join(SOURCE, name), encoding="utf-8") as f:
         return f.read()
 
 
