@@ -13,6 +13,7 @@
 #include "core/common/errors.h"
 #include "core/contact/held_grains.h"
 #include "core/contact/wire_grain_contact.h"
+#include "wire_contact_law.h"
 #include "core/geometry/superquadric.h"
 
 using namespace wiregrain;
@@ -47,15 +48,7 @@ std::vector<Superquadric> shapes() {
   return out;
 }
 
-SoftContactLaw law(double damping = 0.0) {
-  SoftContactLaw l;
-  l.normal_stiffness = 15.7;
-  l.tangential_stiffness = 9.2;
-  l.damping_ratio = damping;
-  l.static_friction = 0.5;
-  l.dynamic_friction = 0.4;
-  return l;
-}
+SoftContactLaw law(double damping = 0.0) { return wiregrain_test::wire_contact_law(damping); }
 
 }  // namespace
 

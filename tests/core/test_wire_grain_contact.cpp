@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/contact/wire_grain_contact.h"
+#include "wire_contact_law.h"
 
 using namespace wiregrain;
 using Eigen::Vector3d;
@@ -18,15 +19,7 @@ constexpr double kOverlap = 0.01;
 // top of the rounded cube at z = 1 + r_p; the wire axis r_w above it, less the overlap
 constexpr double kAxisHeight = 0.5 * kEdge + kSweep + kWireRadius - kOverlap;
 
-SoftContactLaw law(double damping = 0.0) {
-  SoftContactLaw l;
-  l.normal_stiffness = 15.7;
-  l.tangential_stiffness = 9.2;
-  l.damping_ratio = damping;
-  l.static_friction = 0.5;
-  l.dynamic_friction = 0.4;
-  return l;
-}
+SoftContactLaw law(double damping = 0.0) { return wiregrain_test::wire_contact_law(damping); }
 
 WireSegmentState lying_segment() {
   WireSegmentState s;

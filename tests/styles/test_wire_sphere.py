@@ -157,9 +157,11 @@ def flying_sphere_scene():
                         box=(-6, 6, -6, 6, -6, 6))
 
 
-FLIGHT = """
+VELOCITIES = """
 set             group grains vz -1.0
 set             group grains vx 0.2
+"""
+FLIGHT_FIXES = """
 fix             elastic wire wire/elastic
 fix             integr wire nve/gear scheme verlet
 fix             nve grains nve/sphere
@@ -168,15 +170,24 @@ timestep        1e-3
 """
 
 
-class Momentum(DeckTestCase):
-    def test_sphere_hitting_a_free_wire_conserves_momentum(self):
-        # velocity Verlet on both sides (fix nve/sphere, nve/gear scheme verlet), forces
-        # equal and opposite every step: the total momentum after the collision equals
-        # the one before to round-off (angular momentum is not conserved: the wire takes
-        # the force at its axis, the sphere at the contact point, the paper's model puts
-        # no torque on the wire); the friction sets the sphere spinning
-        made = flying_sphere_scene()
-        r = run(deck(FLIGHT + """
+class FlightThroughAWire:
+    """Zero gravity: a stock grain thrown at a free straight wire (mixed into a
+    DeckTestCase; also used by test_wire_superquadric.py). Hooks: HEADER (atom style),
+    FLIGHT_FIXES (the wire's fixes and the grain's integrator) and flight_deck(body,
+    processors, workdir) -> (deck text, workdir) that makes the scene, sets the grain's
+    velocity and appends the fixes and body.
+
+    Velocity Verlet on both sides (the grain's stock integrator, nve/gear scheme verlet),
+    forces equal and opposite every step: the total momentum after the collision equals
+    the one before to round-off (angular momentum is not conserved: the wire takes the
+    force at its axis, the grain at the contact point, the paper's model puts no torque
+    on the wire); the friction (and, for a grain that is no sphere, the off-centre hit)
+    sets the grain turning."""
+
+    STATE = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
+
+    def test_grain_hitting_a_free_wire_conserves_momentum(self):
+        text, workdir = self.flight_deck("""
 variable        px atom mass*vx
 variable        pz atom mass*vz
 compute         omega grains property/atom omegay
@@ -188,13 +199,14 @@ thermo_style    custom step c_px c_pz c_spin c_vg f_wg[1]
 thermo_modify   format float %.17g
 thermo          5
 run             1500
-"""), workdir=made.workdir)
+""")
+        r = run(text, workdir=workdir)
         self.assertRanCleanly(r)
         t = r.thermo()
         self.assertGreater(t["wg[1]"].max(), 0)   # they touched
         self.assertEqual(t["wg[1]"][-1], 0)       # and parted
-        self.assertGreater(t["vg"][-1] - t["vg"][0], 0.02)   # the sphere was slowed down
-        self.assertGreater(abs(t["spin"][-1]), 1e-4)          # and set spinning by friction
+        self.assertGreater(t["vg"][-1] - t["vg"][0], 0.02)   # the grain was slowed down
+        self.assertGreater(abs(t["spin"][-1] - t["spin"][0]), 1e-4)  # and set turning
         p0 = np.hypot(t["px"][0], t["pz"][0])
         drift = np.hypot(t["px"][-1] - t["px"][0], t["pz"][-1] - t["pz"][0])
         print(f"\nmomentum: |p| = {p0:.15g}, after the collision |Δp| = {drift:.3g} ({drift / p0:.2e} relative); "
@@ -202,55 +214,63 @@ run             1500
         self.assertLess(drift, 1e-13 * p0)
 
     def test_two_ranks_give_the_state_of_one(self):
-        # the subdomain boundary x = 0 cuts the sphere and the wire
-        made = flying_sphere_scene()
+        # the subdomain boundary x = 0 cuts the grain and the wire
         states = []
         for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
-            r = run(full_precision(deck(FLIGHT + """
+            text, workdir = self.flight_deck("""
 thermo          100
 dump            d all custom 900 dump.s id x y z vx vy vz omegax omegay omegaz
 run             900
-""", processors=grid), "d"), np_ranks=ranks, workdir=made.workdir)
+""", processors=grid)
+            r = run(full_precision(text, "d"), np_ranks=ranks, workdir=workdir)
             self.assertRanCleanly(r)
             states.append(read_dump(r.path("dump.s")))
-        for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
+        for column in self.STATE:
             np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-13, err_msg=column)
 
     def test_restart_in_contact_continues_the_straight_run(self):
-        # the restart is written at step 700, the sphere on the wire (its tangential
+        # the restart is written at step 700, the grain on the wire (its tangential
         # spring in the restart file); the straight run also stops and goes on at 700
-        made = flying_sphere_scene()
-        straight = run(full_precision(deck(FLIGHT + """
+        text, workdir = self.flight_deck("""
 thermo_style    custom step f_wg[1]
 thermo          700
 run             700
 dump            d all custom 500 dump.s id x y z vx vy vz omegax omegay omegaz
 run             500
-"""), "d"), workdir=made.workdir)
+""")
+        straight = run(full_precision(text, "d"), workdir=workdir)
         self.assertRanCleanly(straight)
         self.assertGreater(straight.thermo(0)["wg[1]"][-1], 0, "no contact at the restart")
-        os.rename(made.path("dump.s"), made.path("dump.straight"))
-        first = run(deck(FLIGHT + """
+        os.rename(straight.path("dump.s"), straight.path("dump.straight"))
+        text, _ = self.flight_deck("""
 run             700
 write_restart   mid.restart
-"""), workdir=made.workdir)
+""", workdir=straight.workdir)
+        first = run(text, workdir=straight.workdir)
         self.assertRanCleanly(first)
-        second = run(full_precision(HEADER + """
+        second = run(full_precision(self.HEADER + """
 read_restart    mid.restart
 group           grains type 1
 group           wire type 2
-fix             elastic wire wire/elastic
-fix             integr wire nve/gear scheme verlet
-fix             nve grains nve/sphere
-fix             wg wire wire/grain grains
-timestep        1e-3
+""" + self.FLIGHT_FIXES + """
 dump            d all custom 500 dump.s id x y z vx vy vz omegax omegay omegaz
 run             500
-""", "d"), workdir=made.workdir)
+""", "d"), workdir=straight.workdir)
         self.assertRanCleanly(second)
-        a, b = read_dump(made.path("dump.straight")), read_dump(made.path("dump.s"))
-        for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
+        a, b = read_dump(straight.path("dump.straight")), read_dump(straight.path("dump.s"))
+        for column in self.STATE:
             np.testing.assert_allclose(b[column], a[column], rtol=0, atol=1e-13, err_msg=column)
+
+
+class Momentum(FlightThroughAWire, DeckTestCase):
+    HEADER = HEADER
+    FLIGHT_FIXES = FLIGHT_FIXES
+
+    def flight_deck(self, body, processors="* * *", workdir=None):
+        # the scene is a data file in the run's directory: made once per directory
+        if workdir is None:
+            workdir = flying_sphere_scene().workdir
+        return deck(VELOCITIES + FLIGHT_FIXES + body, processors=processors), workdir
 
 
 class Errors(DeckTestCase):

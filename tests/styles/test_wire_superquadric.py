@@ -5,10 +5,10 @@ out here, a wire lying on a fixed rounded box at rest and carried whole, momentu
 restart in contact, the top of a superquadric in compute column/height (issue 15)."""
 
 import math
-import os
 
 import numpy as np
 
+import test_wire_sphere as spheres
 from liggghts_run import DeckTestCase, full_precision, main, read_dump, run
 
 G = 1.0
@@ -170,92 +170,19 @@ def flying_scene():
                               box=(-6, 6, -6, 6, -6, 6))
 
 
-FLIGHT = """
-set             group grains vz -1.0
-set             group grains vx 0.2
-fix             elastic wire wire/elastic
-fix             integr wire nve/gear scheme verlet
-fix             nve grains nve/superquadric
-fix             wg wire wire/grain grains
-timestep        1e-3
-"""
+FLIGHT_FIXES = spheres.FLIGHT_FIXES.replace("nve/sphere", "nve/superquadric")
 
 
-class Momentum(DeckTestCase):
-    def test_superquadric_hitting_a_free_wire_conserves_momentum(self):
-        made = flying_scene()
-        r = run(deck(made, FLIGHT + """
-variable        px atom mass*vx
-variable        pz atom mass*vz
-compute         px all reduce sum v_px
-compute         pz all reduce sum v_pz
-compute         vg grains reduce max vz
-compute         omega grains property/atom omegay
-compute         spin grains reduce max c_omega
-thermo_style    custom step c_px c_pz c_vg c_spin f_wg[1]
-thermo_modify   format float %.17g
-thermo          5
-run             1500
-"""))
-        self.assertRanCleanly(r)
-        t = r.thermo()
-        self.assertGreater(t["wg[1]"].max(), 0)
-        self.assertEqual(t["wg[1]"][-1], 0)
-        self.assertGreater(t["vg"][-1] - t["vg"][0], 0.02)
-        p0 = np.hypot(t["px"][0], t["pz"][0])
-        drift = np.hypot(t["px"][-1] - t["px"][0], t["pz"][-1] - t["pz"][0])
-        print(f"\nmomentum: |p| = {p0:.15g}, after the collision |Δp| = {drift:.3g} ({drift / p0:.2e} relative); "
-              f"spin {t['spin'][-1]:.4g}")
-        self.assertGreater(abs(t["spin"][-1] - t["spin"][0]), 1e-4)  # the off-centre hit turns it
-        self.assertLess(drift, 1e-13 * p0)
+class Momentum(spheres.FlightThroughAWire, DeckTestCase):
+    """test_wire_sphere.py's flight of a grain through a free wire, with a tilted
+    superquadric: momentum, 1 vs 2 ranks, restart in contact."""
 
-    def test_two_ranks_give_the_state_of_one(self):
-        made = flying_scene()
-        states = []
-        for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
-            r = run(full_precision(deck(made, FLIGHT + """
-thermo          100
-dump            d all custom 900 dump.s id x y z vx vy vz omegax omegay omegaz
-run             900
-""", processors=grid), "d"), np_ranks=ranks)
-            self.assertRanCleanly(r)
-            states.append(read_dump(r.path("dump.s")))
-        for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
-            np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-13, err_msg=column)
+    HEADER = HEADER
+    FLIGHT_FIXES = FLIGHT_FIXES
 
-    def test_restart_in_contact_continues_the_straight_run(self):
-        made = flying_scene()
-        straight = run(full_precision(deck(made, FLIGHT + """
-thermo_style    custom step f_wg[1]
-thermo          700
-run             700
-dump            d all custom 500 dump.s id x y z vx vy vz omegax omegay omegaz
-run             500
-"""), "d"))
-        self.assertRanCleanly(straight)
-        self.assertGreater(straight.thermo(0)["wg[1]"][-1], 0, "no contact at the restart")
-        os.rename(straight.path("dump.s"), straight.path("dump.straight"))
-        first = run(deck(made, FLIGHT + """
-run             700
-write_restart   mid.restart
-"""), workdir=straight.workdir)
-        self.assertRanCleanly(first)
-        second = run(full_precision(HEADER + """
-read_restart    mid.restart
-group           grains type 1
-group           wire type 2
-fix             elastic wire wire/elastic
-fix             integr wire nve/gear scheme verlet
-fix             nve grains nve/superquadric
-fix             wg wire wire/grain grains
-timestep        1e-3
-dump            d all custom 500 dump.s id x y z vx vy vz omegax omegay omegaz
-run             500
-""", "d"), workdir=straight.workdir)
-        self.assertRanCleanly(second)
-        a, b = read_dump(straight.path("dump.straight")), read_dump(straight.path("dump.s"))
-        for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
-            np.testing.assert_allclose(b[column], a[column], rtol=0, atol=1e-13, err_msg=column)
+    def flight_deck(self, body, processors="* * *", workdir=None):
+        # the scene is made by the deck itself
+        return deck(flying_scene(), spheres.VELOCITIES + FLIGHT_FIXES + body, processors=processors), workdir
 
 
 class ColumnHeight(DeckTestCase):
