@@ -464,8 +464,8 @@ void FixWireGrain::evaluate(bool setup) {
       fail_one("bead " + std::to_string(tag[i]) + " links to bead " + std::to_string(next[i]) +
                ", which is neither owned nor a ghost here");
     const wiregrain::WireSegmentState segment = segment_of(i, j);
-    // the pair's contact; returns its gap (for the pair cache)
-    const auto evaluate_pair = [&](int k, const Eigen::Vector3d &shift) {
+    // the pair's contact; returns its gap (for the pair cache: exact below exact_gap_below)
+    const auto evaluate_pair = [&](int k, const Eigen::Vector3d &shift, double exact_gap_below) {
       evaluations++;
       const long grain_tag = held.grain(k).tag;
       const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
@@ -473,7 +473,7 @@ void FixWireGrain::evaluate(bool setup) {
       wiregrain::TangentialHistory h;
       history_->lookup(i, (int)grain_tag, h);
       wiregrain::TangentialHistory advanced = h;
-      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced);
+      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced, exact_gap_below);
       if (!c.touching) return -c.overlap;  // a pair apart forgets its spring
       history_->store(i, (int)grain_tag, setup ? h : advanced);
       for (int e = 0; e < 3; e++) {
@@ -488,7 +488,8 @@ void FixWireGrain::evaluate(bool setup) {
       if (core_->pairs)
         core_->pairs->for_each_pair(tag[i], held, segment.x0, segment.x1, segment.radius, evaluate_pair);
       else
-        held.for_each_candidate(segment.x0, segment.x1, segment.radius, 0.0, evaluate_pair);
+        held.for_each_candidate(segment.x0, segment.x1, segment.radius, 0.0,
+                                [&](int k, const Eigen::Vector3d &shift) { evaluate_pair(k, shift, 0.0); });
     } catch (const std::exception &e) {  // InvalidArgument, NumericalFailure of the geometry
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
                " (a segment that grew by a fifth of its reach within one NSCD step?)");

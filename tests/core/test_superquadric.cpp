@@ -191,6 +191,84 @@ TEST(SegmentSuperquadric, DistanceSatisfiesTheOptimalityConditions) {
   std::printf("segment–superquadric GJK: at most %d iterations\n", iterations_max);
 }
 
+// GJK's early exit: with early_exit_distance r, a pair nearer than r gets exactly the
+// full query's answer (same iterations, same bits); a farther one either that answer or
+// a lower bound above r (method gjk_far), never a distance above the true one. The
+// wire contact's force does not depend on exact_gap_below. Bad values are rejected.
+TEST(SegmentSuperquadric, EarlyExitChangesOnlyPairsApartAndBoundsTheirDistance) {
+  std::mt19937 rng(23);
+  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  int exits = 0, exact = 0;
+  for (const Superquadric& s : shapes()) {
+    for (int trial = 0; trial < 200; ++trial) {
+      const Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+      const PosedSuperquadric body(s, Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), q.normalized());
+      const Vector3d dir = Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+      const Vector3d mid =
+          body.position() + uniform(0.0, 2.5) * Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+      const double length = uniform(0.1, 1.0), r = uniform(0.01, 0.3);
+      const Vector3d x0 = mid - 0.5 * length * dir, x1 = mid + 0.5 * length * dir;
+      const SegmentContact full = segment_contact(body, x0, x1, 0.0);
+      const SegmentContact early = segment_contact(body, x0, x1, 0.0, r);
+      if (early.method == DistanceMethod::gjk_far) {
+        ++exits;
+        EXPECT_GT(early.distance, r);
+        EXPECT_LE(early.distance, full.distance * (1 + 1e-12));
+        EXPECT_GT(full.distance, r);
+        EXPECT_NEAR(early.gap, early.distance, 0.0);
+      } else {
+        ++exact;
+        EXPECT_EQ(early.method, full.method);
+        EXPECT_EQ(early.distance, full.distance);
+        EXPECT_EQ(early.normal, full.normal);
+        EXPECT_EQ(early.t, full.t);
+      }
+      // the force of a wire of radius r around the segment, exact gaps wanted or not
+      WireSegmentState w;
+      w.x0 = x0;
+      w.x1 = x1;
+      w.v0 = Vector3d(0.1, 0.0, 0.0);
+      w.v1 = Vector3d(0.0, -0.2, 0.0);
+      w.radius = r;
+      w.m0 = w.m1 = 0.01;
+      GrainMotion motion;
+      motion.mass = 2.0;
+      TangentialHistory h1, h2;
+      const WireGrainContact a = wire_superquadric_contact(law(0.3), body, motion, w, 1e-3, h1);
+      const WireGrainContact b = wire_superquadric_contact(law(0.3), body, motion, w, 1e-3, h2, 0.0);
+      ASSERT_EQ(a.touching, b.touching);
+      EXPECT_EQ(a.force_bead0, b.force_bead0);
+      EXPECT_EQ(a.force_bead1, b.force_bead1);
+      EXPECT_EQ(a.torque_grain, b.torque_grain);
+      EXPECT_EQ(h1.spring, h2.spring);
+      if (!b.touching) EXPECT_GT(-b.overlap, 0.0);
+    }
+  }
+  EXPECT_GT(exits, 100);  // both branches seen
+  EXPECT_GT(exact, 100);
+  const PosedSuperquadric body(shapes().front(), Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  for (const double bad : {-1.0, std::nan("")}) {
+    try {
+      segment_contact(body, Vector3d(2, 0, 0), Vector3d(3, 0, 0), 0.1, bad);
+      FAIL() << "accepted early_exit_distance " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.argument()), "early_exit_distance");
+    }
+    WireSegmentState w;
+    w.x0 = Vector3d(2, 0, 0);
+    w.x1 = Vector3d(3, 0, 0);
+    w.radius = 0.1;
+    w.m0 = w.m1 = 0.01;
+    TangentialHistory h;
+    try {
+      wire_superquadric_contact(law(0.3), body, GrainMotion(), w, 1e-3, h, bad);
+      FAIL() << "accepted exact_gap_below " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.argument()), "exact_gap_below");
+    }
+  }
+}
+
 // A ball (a = b = c = R, n1 = n2 = 2) is a sphere: the contact equals the closed form
 // wire_sphere_contact (its own code), forces and torque, over random touching segments
 // with friction and damping, springs carried over 20 steps.

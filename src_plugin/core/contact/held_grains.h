@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -101,10 +102,12 @@ class HeldGrains {
 
   // The contact of segment `segment` with grain k seen at its image position + shift:
   // evaluated with the segment moved by −shift, the contact point moved back by +shift
-  // (forces and torque arms do not depend on the image).
+  // (forces and torque arms do not depend on the image). The returned gap is exact while
+  // below exact_gap_below, else possibly a lower bound (superquadrics: see
+  // wire_superquadric_contact; the other shapes' gaps are always exact).
   WireGrainContact contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
-                           const WireSegmentState& segment, double dt,
-                           TangentialHistory& history) const;
+                           const WireSegmentState& segment, double dt, TangentialHistory& history,
+                           double exact_gap_below = std::numeric_limits<double>::infinity()) const;
 
  private:
   std::vector<HeldGrain> grains_;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+
 namespace wiregrain {
 
 double load_point_parameter(const PosedShape& grain, const SegmentContact& g, const WireSegmentState& segment,
@@ -88,9 +91,11 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 
 WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
                                            const GrainMotion& motion, const WireSegmentState& segment, double dt,
-                                           TangentialHistory& history) {
+                                           TangentialHistory& history, double exact_gap_below) {
   WireGrainContact out;
-  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius);
+  if (!(exact_gap_below >= 0.0))
+    throw InvalidArgument("exact_gap_below", "exact_gap_below must be >= 0, got " + format_number(exact_gap_below));
+  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, segment.radius + exact_gap_below);
   out.overlap = -out.geometry.gap;
   out.normal = out.geometry.normal;
   if (!(out.overlap > 0.0)) return out;

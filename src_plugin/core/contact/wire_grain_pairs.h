@@ -44,17 +44,18 @@ class WireGrainPairCache {
   // D of the last hold()
   double grain_motion_bound() const { return grain_bound_; }
 
-  // Calls evaluate(k, shift) for every grain of `held` (the set of the last hold()) that
-  // may touch the segment [x0, x1] of radius r_w, in the order of HeldGrains'
-  // for_each_candidate; evaluate returns the pair's gap (≤ 0 touching), used when the
-  // segment's entry is being built. key: the segment's identity (its first bead's tag).
+  // Calls evaluate(k, shift, exact_gap_below) for every grain of `held` (the set of the
+  // last hold()) that may touch the segment [x0, x1] of radius r_w, in the order of
+  // HeldGrains' for_each_candidate; evaluate returns the pair's gap (≤ 0 touching), which
+  // must be exact while below exact_gap_below (0 for an entry's pairs, the skin while the
+  // entry is being built; farther pairs may return a lower bound of their gap). key: the segment's identity (its first bead's tag).
   // Throws what for_each_candidate throws when the entry is rebuilt.
   template <class Evaluate>
   void for_each_pair(long key, const HeldGrains& held, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                      double wire_radius, Evaluate evaluate) {
     Entry& entry = entries_[key];
     if (entry_valid(entry, x0, x1, wire_radius)) {
-      for (const Pair& p : entry.pairs) evaluate(held.index_of(p.tag), p.shift);
+      for (const Pair& p : entry.pairs) evaluate(held.index_of(p.tag), p.shift, 0.0);
       return;
     }
     ++rebuilds_;
@@ -65,7 +66,7 @@ class WireGrainPairCache {
     entry.radius = wire_radius;
     entry.pairs.clear();
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
-      if (evaluate(k, shift) < skin_) entry.pairs.push_back({held.grain(k).tag, shift});
+      if (evaluate(k, shift, skin_) < skin_) entry.pairs.push_back({held.grain(k).tag, shift});
     });
   }
 

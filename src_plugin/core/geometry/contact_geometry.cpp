@@ -1437,23 +1437,36 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
 }  // namespace
 
 SegmentContact segment_contact(const PosedSuperquadric& grain, const Vector3d& end0, const Vector3d& end1,
-                               double wire_radius) {
+                               double wire_radius, double early_exit_distance) {
   check_finite("end0", end0);
   check_finite("end1", end1);
   if (!(wire_radius >= 0.0) || !std::isfinite(wire_radius))
     throw InvalidArgument("wire_radius",
                           "wire_radius must be >= 0 and finite, got " + number(wire_radius));
+  if (!(early_exit_distance >= 0.0))
+    throw InvalidArgument("early_exit_distance",
+                          "early_exit_distance must be >= 0, got " + number(early_exit_distance));
+  if (std::isinf(early_exit_distance)) early_exit_distance = 0.0;  // never stop early
   const SegmentSet S{{end0, end1}};
   const Vector3d mid = 0.5 * (end0 + end1);
   const Vector3d s = end1 - end0;
   const double length = s.norm();
   const double size = std::max({superquadric_bounding_radius(grain.shape()), 0.5 * length,
                                 (grain.position() - mid).norm(), std::numeric_limits<double>::min()});
-  const GjkResult g = gjk(SuperquadricSet(grain), S, grain.position() - mid, size, 0.0, kGjkSmoothProgress);
+  const GjkResult g =
+      gjk(SuperquadricSet(grain), S, grain.position() - mid, size, early_exit_distance, kGjkSmoothProgress);
 
   SegmentContact out;
   out.gjk_iterations = g.iterations;
-  if (!g.touching && g.distance > kNearTouching * size) {
+  if (g.far) {
+    out.method = DistanceMethod::gjk_far;
+    out.distance = g.distance;
+    const Vector3d d = mid - grain.position();
+    out.normal = d.squaredNorm() > 0.0 ? Vector3d(d.normalized()) : Vector3d::UnitX();
+    out.point_on_core = grain.position();
+    out.point_on_segment = mid;
+    out.t = 0.5;
+  } else if (!g.touching && g.distance > kNearTouching * size) {
     // apart: GJK's direction, polished. GJK's closest points themselves are barycentric
     // combinations over nearly coincident support points of the smooth body, whose
     // weights are ill-conditioned (seen: 1e-9 off the segment); so both candidates are

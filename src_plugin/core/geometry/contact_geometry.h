@@ -245,7 +245,13 @@ SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& e
 // centre, the distance minus the overlap of body and segment along it (a
 // separating-axis depth along that one axis: ≥ the penetration depth), t that point's
 // parameter. No flat features: t_begin = t_end = t.
+// early_exit_distance > 0 (0 or +inf: never; negative or NaN: InvalidArgument): GJK stops
+// as soon as its lower bound v·w/|v| shows the distance exceeds it (method gjk_far; the
+// distance is that lower bound, so the gap is one too; normal along the centres, t = ½).
+// Callers that need only touching pairs (and the gaps below some bound) pass it: the
+// Newton polish of pairs apart was 90 % of a superquadric column's run time.
 SegmentContact segment_contact(const PosedSuperquadric& grain, const Eigen::Vector3d& end0,
-                               const Eigen::Vector3d& end1, double wire_radius);
+                               const Eigen::Vector3d& end1, double wire_radius,
+                               double early_exit_distance = 0.0);
 
 }  // namespace wiregrain
