@@ -25,6 +25,7 @@
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
 #include "core/nscd/grain_step.h"
+#include "core/nscd/overlap_projection.h"
 #include "core/nscd/reduced_problem_io.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
@@ -52,6 +53,11 @@ constexpr int kGrainRecord = 25;
 
 // keyword skin's default (README: the measurements)
 constexpr double kDefaultPairSkin = 0.1;
+// keyword project's defaults: the overlap (relative to the pair's smaller bounding radius)
+// beyond which the end-of-step poses are projected, and the cap on the passes
+// (core/nscd/overlap_projection.h; README: the 500-grain deposit with and without)
+constexpr double kDefaultProjectTolerance = 1e-4;
+constexpr int kDefaultProjectPasses = 20;
 
 struct FixNSCDPolyhedra::CoreState {
   wiregrain::GrainStepOptions options;
@@ -83,6 +89,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   if (!grains_)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
   double skin = kDefaultPairSkin;
+  project_tolerance_ = kDefaultProjectTolerance;
+  project_passes_ = kDefaultProjectPasses;
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "friction") core_->options.friction = args.value_nonnegative(key);
@@ -135,6 +143,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       core_->options.margin = args.value_nonnegative(key);
     } else if (key == "skin") {
       skin = args.value_nonnegative(key);
+    } else if (key == "project") {
+      project_tolerance_ = args.value_nonnegative(key);
+    } else if (key == "project_passes") {
+      project_passes_ = (int)args.value_int_in_range(key, 1);
     } else if (key == "manifold") {
       const std::string v = args.value_word(key);
       if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
@@ -181,7 +193,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 7;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 9;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -432,6 +444,7 @@ void FixNSCDPolyhedra::solve_step() {
   timings_[0] = detected - start;
   timings_[1] = MPI_Wtime() - detected;
   scatter_results(grains, result);
+  project_overlaps(grains, problem, result);
   record_stats(result);
   check_overlap(grains, result.stats.max_overlap, h);
   publish_contacts(result);
@@ -591,6 +604,35 @@ void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> 
   }
 }
 
+// The end-of-step overlaps deeper than `project` pushed out by translating the grains, not
+// by their velocities (core/nscd/overlap_projection.h). The same on every rank
+// (replicated); the own grains take their translations now, before the deferred move of
+// initial_integrate adds the step's (translations commute).
+void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState> &grains,
+                                        const wiregrain::GrainStepProblem &problem,
+                                        const wiregrain::GrainStepResult &result) {
+  projected_depth_ = 0.0;
+  if (!(project_tolerance_ > 0.0)) return;
+  wiregrain::OverlapProjectionStats stats;
+  std::vector<Eigen::Vector3d> corrections;
+  try {
+    corrections = wiregrain::project_overlaps(grains, grains_->shapes(), core_->walls, problem, result,
+                                              core_->options.solver.theta, project_tolerance_, project_passes_,
+                                              &stats);
+  } catch (const std::exception &e) {
+    solve_failed(e);
+  }
+  double **x = atom->x;
+  for (size_t k = 0; k < grains.size(); k++) {
+    if (corrections[k].isZero(0.0)) continue;
+    const int i = atom->map(grains[k].tag);
+    if (i < 0 || i >= atom->nlocal) continue;
+    for (int d = 0; d < 3; d++) x[i][d] += corrections[k][d];
+  }
+  projections_ += stats.projections;
+  projected_depth_ = stats.max_overlap_before;
+}
+
 void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   const wiregrain::GrainStepStats &stats = result.stats;
   stats_[0] = stats.sweeps;
@@ -670,6 +712,10 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k < 8 + (int)wall_forces_.size()) return timings_[k - 6 - (int)wall_forces_.size()];
   if (k == 8 + (int)wall_forces_.size()) return largest_overlap_;
   if (k < 11 + (int)wall_forces_.size()) return stick_solves_[k - 9 - (int)wall_forces_.size()];
+  // the overlap projection: pair corrections since the fix was made, the deepest
+  // end-of-step overlap it found in the last solve (relative to the pair's size)
+  if (k == 13 + (int)wall_forces_.size()) return double(projections_);
+  if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
   // the pair cache: detections that searched (builds) and that reused the pairs
   if (!core_->pairs) return 0.0;
   return k == 11 + (int)wall_forces_.size() ? double(core_->pairs->builds()) : double(core_->pairs->reuses());

@@ -7,6 +7,7 @@
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
+       [project 1e-4] [project_passes 20] (README: every keyword, skin, manifold, method, ...)
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
        [wall_fix ID [wall_friction mu]] ...
 
@@ -33,6 +34,11 @@
    (fix wire/grain adds the sum of its sub-steps at the last one) thus gives the grain the
    impulse dt·ΣF.
 
+   project τ, project_passes N: at the end of each solve, pairs that the step's poses leave
+   overlapping by more than τ × their size (the smaller bounding radius) are pushed out
+   by moving the poses, never the velocities, in at most N Gauss–Seidel passes
+   (core/nscd/overlap_projection.h); τ = 0: off.
+
    MPI: every rank gathers all grains of the group, detects and solves the same contact
    problem in the same order and keeps its own grains' results (replicated solve), so 1
    and N ranks give the same state to the last bit; the cost of the solve does not
@@ -42,7 +48,9 @@
    largest predicted penetration, steps that hit the iteration cap, then for each wall
    the force the grains exert on it (x, y, z), then the wall-clock seconds of the last
    step spent in gathering + contact detection and in the solve, then the largest overlap
-   of all steps since the fix was defined]; per-atom array [contact force (3),
+   of all steps since the fix was defined, stick solves tried and kept, pair-cache builds
+   and reuses, pair corrections of the overlap projection since the fix was defined, the
+   deepest end-of-step overlap it found in the last solve / pair size]; per-atom array [contact force (3),
    contact torque about the centre (3)] of each grain (impulses / h).
 
    Warnings (the first 10 of each kind): a step that hits the iteration cap; grains of
@@ -71,6 +79,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 namespace wiregrain {
 struct GrainState;
 struct GrainStepResult;
+struct GrainStepProblem;
 struct NscdStep;
 }
 
@@ -133,6 +142,10 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::vector<std::pair<long, std::array<double, 6>>> velocities_by_tag();
   double stats_[6];
   double largest_overlap_ = 0.0;            // over all steps since the fix was made
+  double project_tolerance_;                // keyword project (0: off)
+  int project_passes_;
+  long projections_ = 0;                    // pair corrections since the fix was made
+  double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
   double stick_solves_[2] = {0.0, 0.0};     // method subspace: tried, kept, since the fix was made
   double timings_[2];                       // wall-clock seconds of the last solve: gather+detection, solve
   std::vector<double> wall_forces_;         // 3 per wall
@@ -149,6 +162,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
+  void project_overlaps(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepProblem &,
+                        const wiregrain::GrainStepResult &);
   void record_stats(const wiregrain::GrainStepResult &);
   void check_lost_grains(bigint);
   void check_overlap(const std::vector<wiregrain::GrainState> &, double max_overlap, double h);

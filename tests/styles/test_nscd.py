@@ -394,7 +394,8 @@ run             50
         made = grains_data("cube 1.0", [(0, 0, 0.49, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         r = run(deck("""
-fix             nscd all nscd/polyhedra overlap_recovery 0.5 overlap_speed 1e9 tolerance 1e-12 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra overlap_recovery 0.5 overlap_speed 1e9 tolerance 1e-12 project 0 &
+                wall 0 0 0 0 0 1
 timestep        1e-3
 variable        vz1 equal vz[1]
 thermo_style    custom step f_nscd[4] v_vz1
@@ -412,10 +413,11 @@ run             3
     def test_overlap_speed(self):
         # the default push-out speed cap 0.1: a cube created 0.05 into the floor leaves at 0.1
         # (not 0.05 / h = 50) and is out after 0.5 time units; then it rests (no gravity: at 0.1)
+        # (the projection off: it would remove the overlap at the first solve, next test)
         made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         r = run(deck("""
-fix             nscd all nscd/polyhedra tolerance 1e-12 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra tolerance 1e-12 project 0 wall 0 0 0 0 0 1
 timestep        1e-3
 variable        vz1 equal vz[1]
 thermo_style    custom step f_nscd[4] v_vz1
@@ -429,6 +431,35 @@ run             600
         self.assertLess(np.max(np.abs(t["nscd[4]"][:6] - (0.05 - 0.1 * 1e-3 * t["Step"][:6]))), 1e-12)
         self.assertLess(t["nscd[4]"][-1], 1e-15)
         self.assertLess(np.max(np.abs(t["vz1"] - 0.1)), 1e-12)
+
+    def test_projection_moves_the_pose_not_the_velocity(self):
+        # project (default 1e-4 of the pair's size): the same cube, 0.05 into the floor, is
+        # lifted at the end of the first solve to half the tolerance inside (the gap of a
+        # flat face is linear in the height: one pass), so the second step starts with an
+        # overlap of ½ 1e-4 (√3/2) = 4.33e-5 and the push-out speed is that overlap / h
+        # (below the 0.1 cap), not 0.1; the pose is corrected, the velocity was not set by it
+        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             nscd all nscd/polyhedra tolerance 1e-12 overlap_recovery 0 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        vz1 equal vz[1]
+variable        z1 equal z[1]
+thermo_style    custom step f_nscd[4] v_vz1 v_z1 f_nscd[17] f_nscd[18]
+thermo_modify   format float %.15g
+thermo          1
+run             3
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        size = 3 ** 0.5 / 2
+        print(f"project 1e-4: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
+        self.assertAlmostEqual(t["nscd[4]"][0], 0.05, delta=1e-15)
+        self.assertAlmostEqual(t["nscd[18]"][0], 0.05 / size, delta=1e-12)  # found at the first solve
+        self.assertAlmostEqual(t["nscd[4]"][1], 0.5e-4 * size, delta=1e-12)
+        self.assertAlmostEqual(t["z1"][1], 0.5 - 0.5e-4 * size, delta=1e-12)
+        self.assertLess(np.max(np.abs(t["vz1"])), 1e-12)  # overlap_recovery 0: no push-out speed at all
+        self.assertEqual(t["nscd[17]"][-1], 1)  # one correction in all
 
 
 class WriteProblems(DeckTestCase):
@@ -706,12 +737,12 @@ class OverlapWarning(DeckTestCase):
     # An overlap at a step start beyond half the sweep radius r_p is named with h and the
     # fastest grain's speed, the first 10 times: a cube of sweep 0.1 created 0.06 into
     # the floor (no gravity) is pushed out at overlap_speed 0.1, 1e-4 a step, so it stays
-    # beyond 0.05 for 100 steps.
+    # beyond 0.05 for 100 steps (the projection off: it would lift it at the first solve).
     def test_overlap_is_named_ten_times(self):
         made = grains_data("cube 1.0", [(0, 0, 0.54, 1, 0, 0, 0)], sweep=0.1)
         self.assertRanCleanly(made)
         r = run(deck("""
-fix             nscd all nscd/polyhedra wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra project 0 wall 0 0 0 0 0 1
 timestep        1e-3
 thermo_style    custom step f_nscd[4]
 thermo          1
@@ -799,6 +830,9 @@ class BadInput(DeckTestCase):
         self.check("write_problems 0 p_*.txt",
                    "fix nscd/polyhedra (id nscd): value of 'write_problems' (every N steps) must be >= 1, got 0")
         self.check("every 0", "fix nscd/polyhedra (id nscd): value of 'every' must be >= 1, got 0")
+        self.check("project -1e-4", "fix nscd/polyhedra (id nscd): value of 'project' must be >= 0, got -1e-4")
+        self.check("project", "fix nscd/polyhedra (id nscd): missing value after 'project'")
+        self.check("project_passes 0", "fix nscd/polyhedra (id nscd): value of 'project_passes' must be >= 1, got 0")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")

@@ -1,0 +1,158 @@
+#include "core/nscd/overlap_projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <utility>
+
+#include "core/common/errors.h"
+#include "core/common/validation.h"
+#include "core/geometry/contact_geometry.h"
+
+namespace wiregrain {
+
+namespace {
+
+// A pair to check: grain indices (a = −1: wall `wall`).
+struct ProjectedPair {
+  int a = -1, b = -1, wall = -1;
+  double size = 0.0;  // the smaller bounding radius of its grains
+};
+
+// The pair's gap at the current poses and its unit normal from a to b.
+struct PairGap {
+  bool near = false;  // false: the cores are farther apart than the sweeps: no overlap
+  double gap = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                                             const std::vector<PlaneWall>& walls, const GrainStepProblem& problem,
+                                             const GrainStepResult& result, double theta, double tolerance,
+                                             int max_passes, OverlapProjectionStats* stats) {
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    throw InvalidArgument("tolerance", "overlap projection: tolerance must be >= 0 and finite, got " +
+                                           format_number(tolerance));
+  if (max_passes < 1)
+    throw InvalidArgument("max_passes", "overlap projection: max_passes must be >= 1, got " + std::to_string(max_passes));
+  const int n = static_cast<int>(grains.size());
+  std::vector<Eigen::Vector3d> corrections(n, Eigen::Vector3d::Zero());
+  OverlapProjectionStats local;
+  if (tolerance == 0.0 || problem.points.empty()) {
+    if (stats) *stats = local;
+    return corrections;
+  }
+  const double h = problem.step.time_step;
+
+  // 1. the poses the step leads to
+  std::vector<GrainPose> poses(n);
+  for (int k = 0; k < n; ++k) {
+    const GrainState& g = grains[k];
+    const Eigen::Matrix3d r0 = g.orientation.toRotationMatrix();
+    const Eigen::Matrix3d inertia_begin = r0 * g.inertia.asDiagonal() * r0.transpose();
+    poses[k] = advance_grain_pose({g.position, g.orientation}, g.inertia, g.velocity, result.velocities[k],
+                                  inertia_begin * g.angular_velocity, inertia_begin * result.angular_velocities[k], h,
+                                  theta);
+  }
+  std::vector<std::optional<PosedShape>> posed(n);
+  const auto posed_grain = [&](int k) -> const PosedShape& {
+    if (!posed[k]) posed[k].emplace(library[grains[k].shape].shape, poses[k].position, poses[k].orientation);
+    return *posed[k];
+  };
+
+  // 2. the pairs of the step's points, once each
+  std::vector<ProjectedPair> pairs;
+  {
+    std::set<std::pair<int, int>> seen;  // (a or −(wall + 1), b)
+    for (const GrainContactPoint& p : problem.points) {
+      const NscdContact& c = p.constraint;
+      const int wall = c.body_a >= 0 ? -1 : static_cast<int>(-p.pair.first - 1);
+      const int first = c.body_a >= 0 ? c.body_a : -(wall + 1);
+      if (!seen.insert({first, c.body_b}).second) continue;
+      ProjectedPair pair;
+      pair.a = c.body_a;
+      pair.b = c.body_b;
+      pair.wall = wall;
+      pair.size = library[grains[c.body_b].shape].bounding_radius;
+      if (c.body_a >= 0) pair.size = std::min(pair.size, library[grains[c.body_a].shape].bounding_radius);
+      pairs.push_back(pair);
+    }
+  }
+  local.pairs = static_cast<int>(pairs.size());
+
+  const auto pair_gap = [&](const ProjectedPair& pair) {
+    PairGap out;
+    const PosedShape& b = posed_grain(pair.b);
+    if (pair.a < 0) {  // a wall: its plane at the end of the step
+      const PlaneWall& w = walls[pair.wall];
+      const Eigen::Vector3d point = w.point + h * w.velocity;
+      const Eigen::Vector3d& v = b.vertices()[b.support_vertex(-w.normal)];
+      out.near = true;
+      out.gap = w.normal.dot(v - point) - b.sweep_radius();
+      out.normal = w.normal;
+      return out;
+    }
+    const PosedShape& a = posed_grain(pair.a);
+    const double sweeps = a.sweep_radius() + b.sweep_radius();
+    const CoreDistance d = core_distance(a, b, sweeps);
+    if (d.method == DistanceMethod::gjk_far) return out;
+    out.near = true;
+    out.gap = d.distance - sweeps;
+    out.normal = d.normal;
+    return out;
+  };
+  const auto move = [&](int k, const Eigen::Vector3d& impulse) {
+    const Eigen::Vector3d dx = impulse / grains[k].mass;
+    corrections[k] += dx;
+    poses[k].position += dx;
+    posed[k].reset();
+  };
+
+  // 3. Gauss–Seidel passes while a pair is deeper than the tolerance; a pass checks the
+  // pairs of grains moved since their last check (every pair in the first pass)
+  std::vector<double> overlap_of(pairs.size(), 0.0);  // at its last check, relative
+  std::vector<char> moved(n, 1);
+  const auto touches_moved = [&](const ProjectedPair& pair) { return moved[pair.b] || (pair.a >= 0 && moved[pair.a]); };
+  bool deep = true;
+  for (int pass = 0; pass < max_passes && deep; ++pass) {
+    std::vector<char> moved_now(n, 0);
+    deep = false;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const ProjectedPair& pair = pairs[k];
+      if (!touches_moved(pair) && !moved_now[pair.b] && (pair.a < 0 || !moved_now[pair.a])) continue;
+      const PairGap g = pair_gap(pair);
+      overlap_of[k] = g.near ? -g.gap / pair.size : 0.0;
+      if (pass == 0) local.max_overlap_before = std::max(local.max_overlap_before, overlap_of[k]);
+      if (!(overlap_of[k] > tolerance)) continue;
+      deep = true;
+      double w = 1.0 / grains[pair.b].mass;
+      if (pair.a >= 0) w += 1.0 / grains[pair.a].mass;
+      const double lambda = (-g.gap - 0.5 * tolerance * pair.size) / w;
+      move(pair.b, lambda * g.normal);
+      moved_now[pair.b] = 1;
+      if (pair.a >= 0) {
+        move(pair.a, -lambda * g.normal);
+        moved_now[pair.a] = 1;
+      }
+      ++local.projections;
+    }
+    local.passes = pass + 1;
+    moved = moved_now;
+  }
+  // the deepest overlap left (the pairs of grains moved in a last pass that still found
+  // deep pairs are checked once more)
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (deep && touches_moved(pairs[k])) {
+      const PairGap g = pair_gap(pairs[k]);
+      overlap_of[k] = g.near ? -g.gap / pairs[k].size : 0.0;
+    }
+    local.max_overlap_after = std::max(local.max_overlap_after, overlap_of[k]);
+  }
+  if (stats) *stats = local;
+  return corrections;
+}
+
+}  // namespace wiregrain
