@@ -56,7 +56,7 @@ constexpr double kDefaultPairSkin = 0.1;
 // keyword project's defaults: the overlap (relative to the pair's smaller bounding radius)
 // beyond which the end-of-step poses are projected, and the cap on the passes
 // (core/nscd/overlap_projection.h; README: the 500-grain deposit with and without)
-constexpr double kDefaultProjectTolerance = 1e-4;
+constexpr double kDefaultProjectTolerance = 5e-5;
 constexpr int kDefaultProjectPasses = 20;
 
 struct FixNSCDPolyhedra::CoreState {

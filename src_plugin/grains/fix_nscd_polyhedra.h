@@ -7,7 +7,7 @@
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
-       [project 1e-4] [project_passes 20] (README: every keyword, skin, manifold, method, ...)
+       [project 5e-5] [project_passes 20] (README: every keyword, skin, manifold, method, ...)
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
        [wall_fix ID [wall_friction mu]] ...
 

@@ -433,11 +433,11 @@ run             600
         self.assertLess(np.max(np.abs(t["vz1"] - 0.1)), 1e-12)
 
     def test_projection_moves_the_pose_not_the_velocity(self):
-        # project (default 1e-4 of the pair's size): the same cube, 0.05 into the floor, is
+        # project (default 5e-5 of the pair's size): the same cube, 0.05 into the floor, is
         # lifted at the end of the first solve to half the tolerance inside (the gap of a
         # flat face is linear in the height: one pass), so the second step starts with an
-        # overlap of ½ 1e-4 (√3/2) = 4.33e-5 and the push-out speed is that overlap / h
-        # (below the 0.1 cap), not 0.1; the pose is corrected, the velocity was not set by it
+        # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 nothing else moves it:
+        # the pose is corrected, the velocity stays 0
         made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         r = run(deck("""
@@ -453,11 +453,11 @@ run             3
         self.assertRanCleanly(r)
         t = r.thermo()
         size = 3 ** 0.5 / 2
-        print(f"project 1e-4: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
+        print(f"project 5e-5: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
         self.assertAlmostEqual(t["nscd[4]"][0], 0.05, delta=1e-15)
         self.assertAlmostEqual(t["nscd[18]"][0], 0.05 / size, delta=1e-12)  # found at the first solve
-        self.assertAlmostEqual(t["nscd[4]"][1], 0.5e-4 * size, delta=1e-12)
-        self.assertAlmostEqual(t["z1"][1], 0.5 - 0.5e-4 * size, delta=1e-12)
+        self.assertAlmostEqual(t["nscd[4]"][1], 0.5 * 5e-5 * size, delta=1e-12)
+        self.assertAlmostEqual(t["z1"][1], 0.5 - 0.5 * 5e-5 * size, delta=1e-12)
         self.assertLess(np.max(np.abs(t["vz1"])), 1e-12)  # overlap_recovery 0: no push-out speed at all
         self.assertEqual(t["nscd[17]"][-1], 1)  # one correction in all
 

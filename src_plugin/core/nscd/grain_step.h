@@ -20,7 +20,8 @@
 //     of the same pair within R_max / 4 (GrainImpulseMemory);
 //  5. solve_nscd_step (core/nscd/nscd_solver.h), then per grain the contact force and
 //     torque Hᵀ r / h, the force of the grains on each wall, and the contact list.
-// The position update that follows the step is advance_grain_pose.
+// The position update that follows the step is advance_grain_pose, then the projection of
+// the overlaps it leaves (core/nscd/overlap_projection.h).
 //
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
