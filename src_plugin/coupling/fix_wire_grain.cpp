@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -53,6 +55,16 @@ struct FixWireGrain::CoreState {
   wiregrain::GrainLoadSums sums;
   wiregrain::ContactList contacts;
   wiregrain::ShapeLibrary no_shapes;  // the library of a system without atom_style polyhedron
+  // superquadric grains: each pair's closest-point solution of the last evaluation, the
+  // warm start of the next (core segment_contact's SmoothContactGuess; certified there,
+  // so a missing or stale guess costs time, never accuracy). Key: the segment's first
+  // bead tag and the grain tag; rank-local, not in restarts (a migrated bead starts cold).
+  struct PairKeyHash {
+    size_t operator()(const std::pair<long, long> &k) const {
+      return std::hash<long>()(k.first) * 1000003u ^ std::hash<long>()(k.second);
+    }
+  };
+  std::unordered_map<std::pair<long, long>, wiregrain::SmoothContactGuess, PairKeyHash> guesses, next_guesses;
 };
 
 const wiregrain::ContactList &FixWireGrain::published_contacts() const { return core_->contacts; }
@@ -457,6 +469,7 @@ void FixWireGrain::evaluate(bool setup) {
   const double dt = setup ? 0.0 : update->dt;  // the setup call does not advance the springs
 
   history_->begin_step();
+  core_->next_guesses.clear();
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || !next[i]) continue;
     const int j = wire_->linked_bead(next[i]);
@@ -473,7 +486,15 @@ void FixWireGrain::evaluate(bool setup) {
       wiregrain::TangentialHistory h;
       history_->lookup(i, (int)grain_tag, h);
       wiregrain::TangentialHistory advanced = h;
-      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced, exact_gap_below);
+      wiregrain::SmoothContactGuess guess, *warm = nullptr;
+      const std::pair<long, long> key(tag[i], grain_tag);
+      if (held.grain(k).shape == wiregrain::HeldGrain::kSuperquadric) {
+        const auto found = core_->guesses.find(key);
+        if (found != core_->guesses.end()) guess = found->second;
+        warm = &guess;
+      }
+      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced, exact_gap_below, warm);
+      if (warm && guess.normal.squaredNorm() > 0.0) core_->next_guesses[key] = guess;
       if (!c.touching) return -c.overlap;  // a pair apart forgets its spring
       history_->store(i, (int)grain_tag, setup ? h : advanced);
       for (int e = 0; e < 3; e++) {
@@ -496,6 +517,7 @@ void FixWireGrain::evaluate(bool setup) {
     }
   }
   history_->end_step();
+  core_->guesses.swap(core_->next_guesses);
   core_->contacts.count_evaluations(evaluations);
   local_stats_[3] = double(evaluations);
   if (overlap_warnings_.due(local_stats_[2]))

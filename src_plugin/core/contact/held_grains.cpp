@@ -75,7 +75,7 @@ void HeldGrains::check_reach(double reach) const {
 
 WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
                                      const WireSegmentState& segment, double dt, TangentialHistory& history,
-                                     double exact_gap_below) const {
+                                     double exact_gap_below, SmoothContactGuess* guess) const {
   WireSegmentState moved = segment;
   moved.x0 -= shift;
   moved.x1 -= shift;
@@ -85,7 +85,7 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
           ? wire_sphere_contact(law, g.position, g.sphere_radius, g.motion, moved, dt, history)
       : g.shape == HeldGrain::kSuperquadric
           ? wire_superquadric_contact(law, PosedSuperquadric(g.superquadric, g.position, g.orientation), g.motion,
-                                      moved, dt, history, exact_gap_below)
+                                      moved, dt, history, exact_gap_below, guess)
           : wire_grain_contact(law, posed(k), g.motion, moved, dt, history);
   c.point += shift;
   return c;

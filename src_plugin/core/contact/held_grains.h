@@ -104,10 +104,12 @@ class HeldGrains {
   // evaluated with the segment moved by −shift, the contact point moved back by +shift
   // (forces and torque arms do not depend on the image). The returned gap is exact while
   // below exact_gap_below, else possibly a lower bound (superquadrics: see
-  // wire_superquadric_contact; the other shapes' gaps are always exact).
+  // wire_superquadric_contact; the other shapes' gaps are always exact). guess: a
+  // superquadric's warm start, in and out (wire_superquadric_contact); ignored otherwise.
   WireGrainContact contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
                            const WireSegmentState& segment, double dt, TangentialHistory& history,
-                           double exact_gap_below = std::numeric_limits<double>::infinity()) const;
+                           double exact_gap_below = std::numeric_limits<double>::infinity(),
+                           SmoothContactGuess* guess = nullptr) const;
 
  private:
   std::vector<HeldGrain> grains_;

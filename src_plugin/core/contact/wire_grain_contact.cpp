@@ -91,11 +91,17 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 
 WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
                                            const GrainMotion& motion, const WireSegmentState& segment, double dt,
-                                           TangentialHistory& history, double exact_gap_below) {
+                                           TangentialHistory& history, double exact_gap_below,
+                                           SmoothContactGuess* guess) {
   WireGrainContact out;
   if (!(exact_gap_below >= 0.0))
     throw InvalidArgument("exact_gap_below", "exact_gap_below must be >= 0, got " + format_number(exact_gap_below));
-  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, segment.radius + exact_gap_below);
+  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, segment.radius + exact_gap_below, guess);
+  if (guess) {
+    const bool closest_points = out.geometry.method == DistanceMethod::gjk;
+    guess->normal = closest_points ? out.geometry.normal : Eigen::Vector3d::Zero();
+    guess->t = closest_points ? out.geometry.t : 0.0;
+  }
   out.overlap = -out.geometry.gap;
   out.normal = out.geometry.normal;
   if (!(out.overlap > 0.0)) return out;

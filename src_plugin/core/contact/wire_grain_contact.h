@@ -110,10 +110,14 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 // exact_gap_below ≥ 0: the geometry's gap is exact while below it; a pair farther apart
 // gets a lower bound of its gap (GJK's early exit, far cheaper than the closest points of
 // a smooth body). The force is the same whatever the value: it needs only gap ≤ 0.
+// guess (optional, in and out): the pair's closest-point solution of the last call, to
+// start from (segment_contact's SmoothContactGuess); replaced by this call's when its
+// closest points were computed (method gjk), else cleared (normal zero).
 WireGrainContact wire_superquadric_contact(const SoftContactLaw& law, const PosedSuperquadric& grain,
                                            const GrainMotion& motion, const WireSegmentState& segment, double dt,
                                            TangentialHistory& history,
-                                           double exact_gap_below = std::numeric_limits<double>::infinity());
+                                           double exact_gap_below = std::numeric_limits<double>::infinity(),
+                                           SmoothContactGuess* guess = nullptr);
 
 
 }  // namespace wiregrain

@@ -1398,6 +1398,9 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
   const double length2 = s.squaredNorm();
   bool free_t = length2 > 0.0 && t > 1e-12 && t < 1.0 - 1e-12;
   const double h = 1e-7;
+  // a residual below rounding of the configuration's size ends the polish before another
+  // Jacobian (the warm start arrives converged or one step away)
+  const double scale = std::max(std::sqrt(length2), (end0 - body.position()).norm());
   for (int iteration = 0; iteration < 8; ++iteration) {
     Vector3d u, w;
     plane_basis(n, u, w);
@@ -1409,6 +1412,7 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
       return Vector3d(u.dot(tangential), w.dot(tangential), free_t ? s.dot(nn) / std::sqrt(length2) : 0.0);
     };
     const Vector3d r0 = residual(0.0, 0.0, t);
+    if (Vector3d(r0[0], r0[1], r0[2] * scale).norm() <= 1e-15 * scale) return;
     Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
     J.col(0) = (residual(h, 0.0, t) - residual(-h, 0.0, t)) / (2 * h);
     J.col(1) = (residual(0.0, h, t) - residual(0.0, -h, t)) / (2 * h);
@@ -1437,7 +1441,7 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
 }  // namespace
 
 SegmentContact segment_contact(const PosedSuperquadric& grain, const Vector3d& end0, const Vector3d& end1,
-                               double wire_radius, double early_exit_distance) {
+                               double wire_radius, double early_exit_distance, const SmoothContactGuess* guess) {
   check_finite("end0", end0);
   check_finite("end1", end1);
   if (!(wire_radius >= 0.0) || !std::isfinite(wire_radius))
@@ -1453,10 +1457,32 @@ SegmentContact segment_contact(const PosedSuperquadric& grain, const Vector3d& e
   const double length = s.norm();
   const double size = std::max({superquadric_bounding_radius(grain.shape()), 0.5 * length,
                                 (grain.position() - mid).norm(), std::numeric_limits<double>::min()});
+  SegmentContact out;
+  if (guess && guess->normal.allFinite() && guess->normal.squaredNorm() > 0.0 && guess->t >= 0.0 &&
+      guess->t <= 1.0) {
+    // the warm start, certified (see the header)
+    Vector3d n = guess->normal.normalized();
+    double t = length > 0.0 ? guess->t : 0.0;
+    polish_closest_points(grain, end0, end1, n, t);
+    const Vector3d core = grain.support(n), on_segment = end0 + t * s, diff = on_segment - core;
+    const double d = n.dot(diff), sn = s.dot(n);
+    const double outward = t <= 0.0 ? std::max(0.0, -sn) : t >= 1.0 ? std::max(0.0, sn) : std::abs(sn);
+    const double upper = diff.norm(), lower = d - outward;
+    if (d > kNearTouching * size && upper - lower <= 1e-12 * size) {
+      out.method = DistanceMethod::gjk;
+      out.distance = upper;
+      out.normal = diff / upper;
+      out.point_on_core = core;
+      out.point_on_segment = on_segment;
+      out.t = t;
+      out.t_begin = out.t_end = t;
+      out.gap = out.distance - wire_radius;
+      return out;
+    }
+  }
   const GjkResult g =
       gjk(SuperquadricSet(grain), S, grain.position() - mid, size, early_exit_distance, kGjkSmoothProgress);
 
-  SegmentContact out;
   out.gjk_iterations = g.iterations;
   if (g.far) {
     out.method = DistanceMethod::gjk_far;
