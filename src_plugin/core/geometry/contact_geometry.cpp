@@ -1388,8 +1388,9 @@ namespace {
 // normal n and the segment parameter t, with c(n) the support point and p(t) = x0 + t s:
 //   (p(t) − c(n)) ⟂ n's tangent plane  (2 equations: components on a basis u, w ⟂ n_k),
 //   s · n = 0                          (t inside (0, 1); otherwise t stays at its end),
-// in the unknowns n = normalise(n_k + α u + β w) and t, with a finite-difference
-// Jacobian (the support point is closed-form but its derivative is not worth writing).
+// in the unknowns n = normalise(n_k + α u + β w) and t, with a Jacobian by forward
+// differences in α, β (the support point is closed-form but its derivative is not worth
+// writing) and in closed form in t.
 // A singular Jacobian (a segment parallel to a flat stretch: t is not unique) keeps t.
 // The caller keeps the result only if its pair is not farther than the unpolished ones.
 void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, const Vector3d& end1,
@@ -1413,19 +1414,31 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
     };
     const Vector3d r0 = residual(0.0, 0.0, t);
     if (Vector3d(r0[0], r0[1], r0[2] * scale).norm() <= 1e-15 * scale) return;
+    // the Jacobian: forward differences in the normal's two tilts (the Newton step's
+    // accuracy does not depend on it, only its rate), in t in closed form (the support
+    // point does not depend on t: ∂/∂t of the tangential part is s − (n·s) n)
     Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
-    J.col(0) = (residual(h, 0.0, t) - residual(-h, 0.0, t)) / (2 * h);
-    J.col(1) = (residual(0.0, h, t) - residual(0.0, -h, t)) / (2 * h);
-    if (free_t) J.col(2) = (residual(0.0, 0.0, t + h) - residual(0.0, 0.0, t - h)) / (2 * h);
-    const auto solve = J.topLeftCorner(m, m).fullPivLu();
-    if (!solve.isInvertible() || solve.rcond() < 1e-10) {
+    J.col(0) = (residual(h, 0.0, t) - r0) / h;
+    J.col(1) = (residual(0.0, h, t) - r0) / h;
+    if (free_t) J.col(2) = Vector3d(u.dot(s), w.dot(s), 0.0);
+    Vector3d step = Vector3d::Zero();
+    bool singular;
+    if (m == 3) {
+      const Eigen::FullPivLU<Eigen::Matrix3d> solve(J);
+      singular = !solve.isInvertible() || solve.rcond() < 1e-10;
+      if (!singular) step = solve.solve(Vector3d(-r0));
+    } else {
+      const Eigen::FullPivLU<Eigen::Matrix2d> solve(J.topLeftCorner<2, 2>());
+      singular = !solve.isInvertible() || solve.rcond() < 1e-10;
+      if (!singular) step.head<2>() = solve.solve(Eigen::Vector2d(-r0.head<2>()));
+    }
+    if (singular) {
       if (free_t) {
         free_t = false;
         continue;
       }
       return;
     }
-    const Eigen::VectorXd step = solve.solve(-r0.head(m));
     n = (n + step[0] * u + step[1] * w).normalized();
     if (free_t) {
       t += step[2];
@@ -1434,7 +1447,7 @@ void polish_closest_points(const PosedSuperquadric& body, const Vector3d& end0, 
         free_t = false;
       }
     }
-    if (step.norm() < 1e-15) return;
+    if (step.head(m).norm() < 1e-15) return;
   }
 }
 
