@@ -48,6 +48,18 @@ std::vector<Superquadric> shapes() {
   return out;
 }
 
+// A random pose of s (centre in [−1, 1]³, orientation uniform in the quaternion box) and
+// a random unit vector, drawn with uniform(lo, hi).
+template <class Uniform>
+Vector3d random_unit(Uniform& uniform) {
+  return Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+}
+template <class Uniform>
+PosedSuperquadric random_pose(const Superquadric& s, Uniform& uniform) {
+  const Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+  return PosedSuperquadric(s, Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), q.normalized());
+}
+
 SoftContactLaw law(double damping = 0.0) { return wiregrain_test::wire_contact_law(damping); }
 
 }  // namespace
@@ -201,11 +213,9 @@ TEST(SegmentSuperquadric, EarlyExitChangesOnlyPairsApartAndBoundsTheirDistance) 
   int exits = 0, exact = 0;
   for (const Superquadric& s : shapes()) {
     for (int trial = 0; trial < 200; ++trial) {
-      const Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      const PosedSuperquadric body(s, Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), q.normalized());
-      const Vector3d dir = Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
-      const Vector3d mid =
-          body.position() + uniform(0.0, 2.5) * Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+      const PosedSuperquadric body = random_pose(s, uniform);
+      const Vector3d dir = random_unit(uniform);
+      const Vector3d mid = body.position() + uniform(0.0, 2.5) * random_unit(uniform);
       const double length = uniform(0.1, 1.0), r = uniform(0.01, 0.3);
       const Vector3d x0 = mid - 0.5 * length * dir, x1 = mid + 0.5 * length * dir;
       const SegmentContact full = segment_contact(body, x0, x1, 0.0);
@@ -280,9 +290,8 @@ TEST(SegmentSuperquadric, WarmStartGivesTheColdAnswerOrFallsBack) {
   int trials = 0, certified = 0;
   for (const Superquadric& s : shapes()) {
     for (int trial = 0; trial < 150; ++trial) {
-      const Eigen::Quaterniond q(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      const PosedSuperquadric body(s, Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)), q.normalized());
-      const Vector3d out = Vector3d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)).normalized();
+      const PosedSuperquadric body = random_pose(s, uniform);
+      const Vector3d out = random_unit(uniform);
       const Vector3d foot = body.support(out) + uniform(0.001, 0.15) * out;
       const Vector3d axis = Eigen::AngleAxisd(uniform(0, 6.28), out) * out.unitOrthogonal();
       const double length = uniform(0.1, 0.5), f = uniform(-0.2, 1.2);

@@ -410,23 +410,29 @@ run             3
         self.assertLess(np.max(np.abs(t["nscd[4]"] - [0.01, 0.005, 0, 0])), 1e-12)
         self.assertLess(np.max(np.abs(t["vz1"] - 5.0)), 1e-9)
 
+    def cube_sunk_into_the_floor(self, options, columns, every, steps):
+        # a unit cube created 0.05 into the floor, no gravity: thermo of its overlap and vz
+        # (and `columns`) under fix nscd/polyhedra tolerance 1e-12 `options`
+        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+fix             nscd all nscd/polyhedra tolerance 1e-12 {options} wall 0 0 0 0 0 1
+timestep        1e-3
+variable        vz1 equal vz[1]
+variable        z1 equal z[1]
+thermo_style    custom step f_nscd[4] v_vz1 {columns}
+thermo_modify   format float %.15g
+thermo          {every}
+run             {steps}
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        return r.thermo()
+
     def test_overlap_speed(self):
         # the default push-out speed cap 0.1: a cube created 0.05 into the floor leaves at 0.1
         # (not 0.05 / h = 50) and is out after 0.5 time units; then it rests (no gravity: at 0.1)
         # (the projection off: it would remove the overlap at the first solve, next test)
-        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
-        self.assertRanCleanly(made)
-        r = run(deck("""
-fix             nscd all nscd/polyhedra tolerance 1e-12 project 0 wall 0 0 0 0 0 1
-timestep        1e-3
-variable        vz1 equal vz[1]
-thermo_style    custom step f_nscd[4] v_vz1
-thermo_modify   format float %.15g
-thermo          100
-run             600
-"""), workdir=made.workdir)
-        self.assertRanCleanly(r)
-        t = r.thermo()
+        t = self.cube_sunk_into_the_floor("project 0", "", every=100, steps=600)
         print(f"overlap_speed 0.1: overlaps {t['nscd[4]']}, vz {t['vz1'][-1]:.12f}")
         self.assertLess(np.max(np.abs(t["nscd[4]"][:6] - (0.05 - 0.1 * 1e-3 * t["Step"][:6]))), 1e-12)
         self.assertLess(t["nscd[4]"][-1], 1e-15)
@@ -438,20 +444,7 @@ run             600
         # flat face is linear in the height: one pass), so the second step starts with an
         # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 nothing else moves it:
         # the pose is corrected, the velocity stays 0
-        made = grains_data("cube 1.0", [(0, 0, 0.45, 1, 0, 0, 0)])
-        self.assertRanCleanly(made)
-        r = run(deck("""
-fix             nscd all nscd/polyhedra tolerance 1e-12 overlap_recovery 0 wall 0 0 0 0 0 1
-timestep        1e-3
-variable        vz1 equal vz[1]
-variable        z1 equal z[1]
-thermo_style    custom step f_nscd[4] v_vz1 v_z1 f_nscd[17] f_nscd[18]
-thermo_modify   format float %.15g
-thermo          1
-run             3
-"""), workdir=made.workdir)
-        self.assertRanCleanly(r)
-        t = r.thermo()
+        t = self.cube_sunk_into_the_floor("overlap_recovery 0", "v_z1 f_nscd[17] f_nscd[18]", every=1, steps=3)
         size = 3 ** 0.5 / 2
         print(f"project 5e-5: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
         self.assertAlmostEqual(t["nscd[4]"][0], 0.05, delta=1e-15)
