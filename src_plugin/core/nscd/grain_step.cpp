@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 
 #include "core/common/errors.h"
 #include "core/geometry/broad_phase.h"
@@ -31,6 +32,9 @@ void GrainStepOptions::validate() const {
   if (!(friction >= 0.0)) throw InvalidArgument("friction", "grain step: friction must be >= 0, got " + std::to_string(friction));
   if (!(damping >= 0.0)) throw InvalidArgument("damping", "grain step: damping must be >= 0, got " + std::to_string(damping));
   if (!(margin >= 0.0)) throw InvalidArgument("margin", "grain step: margin must be >= 0, got " + std::to_string(margin));
+  if (!(sleep.speed >= 0.0) || !std::isfinite(sleep.speed) || !(sleep.time > 0.0) || !std::isfinite(sleep.time))
+    throw InvalidArgument("sleep", "grain step: sleep needs a speed >= 0 and a time > 0, got " +
+                                       std::to_string(sleep.speed) + " and " + std::to_string(sleep.time));
 }
 
 const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pair, const Eigen::Vector3d& position,
@@ -51,10 +55,50 @@ const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pai
 
 namespace {
 
+// Sleeping (the header): the balance of each sleeping grain and the quiet time of each
+// awake one after the solve; a grain that falls asleep stops.
+void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>& grains, const SleepOptions& sleep,
+                  GrainStepResult& result) {
+  const double h = problem.step.time_step;
+  const int n = static_cast<int>(grains.size());
+  result.asleep.assign(n, 0);
+  result.quiet_time.assign(n, 0.0);
+  result.stats.woken = problem.woken;
+  const double wake_speed_change = sleep.speed * h / sleep.time;
+  for (int k = 0; k < n; k++) {
+    const GrainState& g = grains[k];
+    const double radius = problem.bounding_radius[k];
+    if (problem.asleep[k]) {
+      // |Δv| + |Δω| R of the net impulse, h (F + contact forces), were the grain free
+      const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+      const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
+      const double change = h * ((g.force + result.contact_forces[k]).norm() / g.mass +
+                                 radius * (inverse_inertia * (g.torque + result.contact_torques[k])).norm());
+      if (change > wake_speed_change) {
+        result.stats.woken++;
+        continue;  // awake from the next step, quiet time 0
+      }
+      result.asleep[k] = 1;
+      result.quiet_time[k] = problem.quiet_time[k];
+    } else {
+      const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * radius;
+      if (!(speed < sleep.speed)) continue;
+      result.quiet_time[k] = problem.quiet_time[k] + h;
+      if (result.quiet_time[k] < sleep.time) continue;
+      result.asleep[k] = 1;
+      result.velocities[k].setZero();
+      result.angular_velocities[k].setZero();
+    }
+  }
+  for (char a : result.asleep) result.stats.sleeping += a;
+}
+
 void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                   const std::vector<PlaneWall>& walls, double h) {
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
   for (const GrainState& g : grains) {
+    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time))
+      throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) + ": quiet time must be >= 0 and finite");
     const std::string name = "grain step: grain " + std::to_string(g.tag) + ": ";
     if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("grains", name + "shape index " + std::to_string(g.shape) + " not in the library");
@@ -83,7 +127,35 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   problem.wall_count = static_cast<int>(walls.size());
   problem.step.time_step = h;
 
-  // 1. bodies: free velocities with implicit damping (see the header)
+  // 0. sleeping: who sleeps in this step. A sleeping grain wakes now if the deck gave it
+  // a velocity or a moving wall can reach it within the step (relative speed |v_wall|).
+  const bool sleep = options.sleep.on();
+  if (sleep) {
+    problem.asleep.assign(n, 0);
+    problem.quiet_time.assign(n, 0.0);
+    problem.bounding_radius.assign(n, 0.0);
+    for (int k = 0; k < n; k++) {
+      const GrainState& g = grains[k];
+      const double radius = library[g.shape].bounding_radius;
+      problem.bounding_radius[k] = radius;
+      bool asleep = g.asleep && g.velocity.isZero(0.0) && g.angular_velocity.isZero(0.0);
+      for (const PlaneWall& w : walls) {
+        if (!asleep || w.velocity.isZero(0.0)) continue;
+        const double reach = options.margin + 4.0 * h * w.velocity.norm() + 1e-12;
+        if (w.normal.dot(g.position - w.point) > radius + reach) continue;  // beyond its bounding sphere
+        const PosedShape shape(library[g.shape].shape, g.position, g.orientation);
+        const Eigen::Vector3d& lowest = shape.vertices()[shape.support_vertex(-w.normal)];
+        if (w.normal.dot(lowest - w.point) - shape.sweep_radius() <= reach) asleep = false;
+      }
+      if (g.asleep && !asleep) problem.woken++;
+      problem.asleep[k] = asleep;
+      problem.quiet_time[k] = g.asleep && !asleep ? 0.0 : g.quiet_time;
+    }
+  }
+  const auto asleep = [&](int k) { return sleep && problem.asleep[k]; };
+
+  // 1. bodies: free velocities with implicit damping (see the header); a sleeping grain
+  // has infinite mass and no velocity
   std::vector<PosedShape> posed;
   posed.reserve(n);
   double largest_radius = 0.0, fastest = 0.0;
@@ -99,6 +171,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     b.angular_velocity_begin = g.angular_velocity;
     b.velocity_free = damped * (g.velocity + h * g.force / g.mass);
     b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.angular_velocity + h * g.torque);
+    if (asleep(static_cast<int>(problem.step.bodies.size()))) b = NscdBody();
     problem.step.bodies.push_back(b);
     const double radius = library[g.shape].bounding_radius;
     largest_radius = std::max(largest_radius, radius);
@@ -135,7 +208,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   if (n > 0 && pairs && pairs->valid(grains, library, activation)) {
     pairs->count_reuse();
     for (const auto& [a, b] : pairs->pairs())
-      add_pair_points(a, b, contact_manifold(posed[a], posed[b], activation, contact_options));
+      if (!(asleep(a) && asleep(b))) add_pair_points(a, b, contact_manifold(posed[a], posed[b], activation, contact_options));
   } else if (n > 0) {
     const double skin = pairs ? pairs->skin() : 0.0;
     ContactOptions build_options = contact_options;
@@ -154,6 +227,10 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
       });
       std::sort(near.begin(), near.end());
       for (int b : near) {
+        if (asleep(a) && asleep(b)) {  // frozen; kept in the cache for when one wakes
+          if (pairs) pairs->keep(a, b);
+          continue;
+        }
         const ContactManifold m = contact_manifold(posed[a], posed[b], activation, build_options);
         add_pair_points(a, b, m);
         if (pairs && m.gap < activation + skin) pairs->keep(a, b);
@@ -166,6 +243,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     plane.point = walls[w].point;
     plane.normal = walls[w].normal;
     for (int b = 0; b < n; b++) {
+      if (asleep(b)) continue;  // frozen (a moving wall within reach woke it above)
       if (plane.normal.dot(grains[b].position - plane.point) > library[grains[b].shape].bounding_radius + activation)
         continue;
       for (const ContactPoint& p : plane_contact(plane, posed[b], activation, contact_options).points)
@@ -179,6 +257,19 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   });
   problem.step.contacts.reserve(points.size());
   for (const GrainContactPoint& c : points) problem.step.contacts.push_back(c.constraint);
+
+  // the frozen points: last step's points of the pairs that sleep now
+  if (sleep) {
+    std::unordered_map<long, int> index_of_tag;
+    for (int k = 0; k < n; k++) index_of_tag[grains[k].tag] = k;
+    const auto sleeping_tag = [&](long tag) {
+      const auto it = index_of_tag.find(tag);
+      return it != index_of_tag.end() && problem.asleep[it->second];
+    };
+    for (const auto& [pair, stored] : memory.pairs())
+      if (sleeping_tag(pair.second) && (pair.first < 0 || sleeping_tag(pair.first)))
+        for (const GrainImpulseMemory::Impulse& point : stored) problem.frozen.emplace_back(pair, point);
+  }
 
   // 4. warm start from the nearest stored point of the same pair within R_max / 4
   if (options.warm_start) {
@@ -205,32 +296,47 @@ GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vec
   result.contact_torques.assign(n, Eigen::Vector3d::Zero());
   result.wall_forces.assign(problem.wall_count, Eigen::Vector3d::Zero());
   memory.clear();
-  // Hᵀ r per grain: the force r (world frame) on b at the point, −r on a
+  // Hᵀ r per grain: the force r (world frame) on b at the point, −r on a; the solved
+  // points, then the frozen ones (their last impulse taken as this step's)
+  const auto add_point = [&](const GrainImpulseMemory::PairKey& pair, int body_a, int body_b,
+                             const GrainImpulseMemory::Impulse& point) {
+    memory.add(pair, point);
+    const Eigen::Vector3d on_b = point.impulse / h;
+    result.contact_forces[body_b] += on_b;
+    result.contact_torques[body_b] += (point.position - grains[body_b].position).cross(on_b);
+    if (body_a >= 0) {
+      result.contact_forces[body_a] -= on_b;
+      result.contact_torques[body_a] -= (point.position - grains[body_a].position).cross(on_b);
+    } else {
+      result.wall_forces[-pair.first - 1] -= on_b;
+    }
+    ContactRecord record;
+    record.kind = body_a >= 0 ? ContactKind::grain_grain : ContactKind::grain_wall;
+    record.a = pair.first;
+    record.b = pair.second;
+    record.point = point.position;
+    record.normal = point.normal;
+    record.force = on_b;
+    record.overlap = -point.gap;
+    record.status = point.status;
+    result.contacts.add(record);
+  };
   for (size_t c = 0; c < problem.points.size(); c++) {
     const GrainContactPoint& point = problem.points[c];
     const NscdContact& con = point.constraint;
-    const Eigen::Vector3d impulse = point.frame * solved.contacts.impulses[c];
-    memory.add(point.pair, {point.position, impulse});
-    const Eigen::Vector3d on_b = impulse / h;
-    result.contact_forces[con.body_b] += on_b;
-    result.contact_torques[con.body_b] += (point.position - grains[con.body_b].position).cross(on_b);
-    if (con.body_a >= 0) {
-      result.contact_forces[con.body_a] -= on_b;
-      result.contact_torques[con.body_a] -= (point.position - grains[con.body_a].position).cross(on_b);
-    } else {
-      result.wall_forces[-point.pair.first - 1] -= on_b;
-    }
-    ContactRecord record;
-    record.kind = con.body_a >= 0 ? ContactKind::grain_grain : ContactKind::grain_wall;
-    record.a = point.pair.first;
-    record.b = point.pair.second;
-    record.point = point.position;
-    record.normal = point.frame.col(0);
-    record.force = on_b;
-    record.overlap = -con.gap;
-    record.status = static_cast<ContactStatus>(static_cast<int>(solved.contacts.states[c]));
-    result.contacts.add(record);
+    GrainImpulseMemory::Impulse stored{point.position, point.frame * solved.contacts.impulses[c]};
+    stored.normal = point.frame.col(0);
+    stored.gap = con.gap;
+    stored.status = static_cast<ContactStatus>(static_cast<int>(solved.contacts.states[c]));
+    add_point(point.pair, con.body_a, con.body_b, stored);
   }
+  if (!problem.frozen.empty()) {
+    std::unordered_map<long, int> index_of_tag;
+    for (int k = 0; k < n; k++) index_of_tag[grains[k].tag] = k;
+    for (const auto& [pair, stored] : problem.frozen)
+      add_point(pair, pair.first < 0 ? -1 : index_of_tag.at(pair.first), index_of_tag.at(pair.second), stored);
+  }
+  if (options.sleep.on()) update_sleep(problem, grains, options.sleep, result);
   const NscdReport& report = solved.contacts.report;
   result.stats.sweeps = report.iterations;
   result.stats.residual = report.residual;
@@ -240,6 +346,7 @@ GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vec
   result.stats.hit_iteration_cap = report.hit_iteration_cap;
   result.stats.subspace_solves = report.subspace_solves;
   result.stats.subspace_accepted = report.subspace_accepted;
+  result.stats.frozen_points = static_cast<int>(problem.frozen.size());
   return result;
 }
 

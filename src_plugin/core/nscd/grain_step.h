@@ -23,6 +23,25 @@
 // The position update that follows the step is advance_grain_pose, then the projection of
 // the overlaps it leaves (core/nscd/overlap_projection.h).
 //
+// Sleeping (issue 14; not in the paper; off unless SleepOptions::speed > 0): a grain whose
+// speed |v| + |ω| R (R its bounding radius) stays below v_sleep for t_sleep falls asleep:
+// its velocities are set to zero and it is held. A sleeping grain
+//  - is a body of infinite mass in the solve (it takes the impulses of awake grains
+//    touching it and does not move);
+//  - has no contact detection with other sleeping grains or with walls: those contacts
+//    are frozen, kept with the impulse of the last step they were solved in, and still
+//    reported and counted in the grain's contact force and the walls' forces;
+//  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
+//    reach it within the step, and at the end of a step when it is out of balance: the
+//    net impulse on it (external force h F, the impulses of awake grains just solved, the
+//    frozen ones) would change its speed |Δv| + |Δω| R by more than v_sleep h / t_sleep,
+//    i.e. awake it would leave the sleep speed within t_sleep. It then moves from the next
+//    step on (this step it was held: an impact on a sleeping grain reaches the grains
+//    behind it one step late).
+// A load put on a sleeping pile thus wakes it layer by layer, one per step, down to where
+// the load is carried, and the pile comes back to rest with the forces it would have had
+// awake (to the imbalance threshold).
+//
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
 
@@ -52,6 +71,8 @@ struct GrainState {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();                   // external, about the centre
   double mass = 1.0;
   Eigen::Vector3d inertia = Eigen::Vector3d::Ones();                  // principal moments (body axes)
+  bool asleep = false;      // sleeping (SleepOptions; the caller keeps it from step to step)
+  double quiet_time = 0.0;  // time it has been below the sleep speed
 };
 
 // A plane of infinite mass through `point`, unit `normal` into the grains, moving at
@@ -67,6 +88,13 @@ struct PlaneWall {
 // residual, push-out speed 0.1; the tolerance and the cap are NscdOptions'.
 NscdOptions grain_solver_defaults();
 
+// See the header comment; fix keyword `sleep v_sleep t_sleep`.
+struct SleepOptions {
+  double speed = 0.0;  // v_sleep ≥ 0; 0: nothing sleeps
+  double time = 0.5;   // t_sleep > 0
+  bool on() const { return speed > 0.0; }
+};
+
 struct GrainStepOptions {
   NscdOptions solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
   double friction = 0.5;   // μ between grains
@@ -77,9 +105,10 @@ struct GrainStepOptions {
   // distance (ContactOptions::near_vertices; fix keyword `manifold near_vertices`), or the
   // closest features only (`manifold closest`)
   bool near_vertices = true;
+  SleepOptions sleep;
   // solver options of a step: seed = solver.seed + step_number (a new random order per step)
   NscdOptions solver_for_step(std::uint64_t step_number) const;
-  // InvalidArgument("friction" | "damping" | "margin" | solver keywords, ...)
+  // InvalidArgument("friction" | "damping" | "margin" | "sleep" | solver keywords, ...)
   void validate() const;
 };
 
@@ -88,8 +117,13 @@ struct GrainStepOptions {
 class GrainImpulseMemory {
  public:
   using PairKey = std::pair<long, long>;
+  // a point's position and impulse on b (world frame); normal, gap and status for a
+  // frozen point (sleeping pair), which is reported without being detected again
   struct Impulse {
     Eigen::Vector3d position, impulse;
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+    double gap = 0.0;
+    ContactStatus status = ContactStatus::open;
   };
   // the pair's stored point nearest to `position` if its squared distance is below
   // `radius2`, else nullptr
@@ -117,6 +151,12 @@ struct GrainStepProblem {
   std::vector<GrainContactPoint> points;      // parallel to step.contacts
   std::vector<Eigen::Vector3d> warm_start;    // local frames; empty without warm start
   int wall_count = 0;
+  // sleeping: per grain, asleep during this step (after the start-of-step wake-ups; empty
+  // when sleeping is off), and the frozen points of sleeping pairs (not in `step`)
+  std::vector<char> asleep;
+  std::vector<double> quiet_time, bounding_radius;  // per grain, sleeping on
+  int woken = 0;                                    // at the start of the step
+  std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
 };
 
 struct GrainStepStats {
@@ -127,12 +167,18 @@ struct GrainStepStats {
   double max_predicted_penetration = 0.0;
   bool hit_iteration_cap = false;
   int subspace_solves = 0, subspace_accepted = 0;  // method subspace (nscd_solver.h)
+  int sleeping = 0;        // grains asleep after the step
+  int woken = 0;           // grains woken in the step (at its start or end)
+  int frozen_points = 0;   // contact points of sleeping pairs, not solved
 };
 
 struct GrainStepResult {
   std::vector<Eigen::Vector3d> velocities, angular_velocities;   // v_{k+1}, ω_{k+1} per grain
   std::vector<Eigen::Vector3d> contact_forces, contact_torques;  // Hᵀ r / h per grain
   std::vector<Eigen::Vector3d> wall_forces;                      // of the grains on each wall
+  // per grain after the step; empty when sleeping is off
+  std::vector<char> asleep;
+  std::vector<double> quiet_time;
   GrainStepStats stats;
   ContactList contacts;  // every point (open ones too), force = impulse / h on b
 };

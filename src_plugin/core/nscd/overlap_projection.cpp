@@ -104,8 +104,13 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
     out.normal = d.normal;
     return out;
   };
+  // a sleeping grain (grain_step.h) is held, as a wall
+  const auto inverse_mass = [&](int k) {
+    return !problem.asleep.empty() && problem.asleep[k] ? 0.0 : 1.0 / grains[k].mass;
+  };
   const auto move = [&](int k, const Eigen::Vector3d& impulse) {
-    const Eigen::Vector3d dx = impulse / grains[k].mass;
+    if (inverse_mass(k) == 0.0) return;
+    const Eigen::Vector3d dx = impulse * inverse_mass(k);
     corrections[k] += dx;
     poses[k].position += dx;
     posed[k].reset();
@@ -128,8 +133,9 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
       if (pass == 0) local.max_overlap_before = std::max(local.max_overlap_before, overlap_of[k]);
       if (!(overlap_of[k] > tolerance)) continue;
       deep = true;
-      double w = 1.0 / grains[pair.b].mass;
-      if (pair.a >= 0) w += 1.0 / grains[pair.a].mass;
+      double w = inverse_mass(pair.b);
+      if (pair.a >= 0) w += inverse_mass(pair.a);
+      if (!(w > 0.0)) continue;  // not reached: a pair of sleeping grains has no points
       const double lambda = (-g.gap - 0.5 * tolerance * pair.size) / w;
       move(pair.b, lambda * g.normal);
       moved_now[pair.b] = 1;

@@ -13,7 +13,8 @@
 //     sweep radii, a wall by the support point along −n (walls moved by h v_wall);
 //  3. while a pair overlaps by more than tolerance × its size (the smaller bounding radius
 //     of its grains), a Gauss–Seidel pass over the pairs: a pair deeper than that is
-//     pushed apart along its normal n, inversely to the masses (a wall does not move),
+//     pushed apart along its normal n, inversely to the masses (a wall and a sleeping
+//     grain do not move),
 //         Δx_b = Δλ n / m_b,  Δx_a = −Δλ n / m_a,  Δλ = (−g − ½ tolerance × size) / (1/m_a + 1/m_b),
 //     which leaves it −½ tolerance × size apart where the gap is linear in the
 //     translation (flat faces, spheres) and keeps the pair's centre of mass; the pass is

@@ -1,0 +1,223 @@
+// Sleeping grains (core/nscd/grain_step.h, SleepOptions; issue 14): what sleeping must
+// not change (the loads a pile carries once at rest, the motion of a grain a wall
+// pushes, of a grain pulled off its rest), against hand-worked statics and kinematics,
+// and what it must skip (no detection or solve among sleeping grains).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/common/errors.h"
+#include "core/geometry/convex_shape.h"
+#include "core/nscd/grain_step.h"
+
+using namespace wiregrain;
+
+namespace {
+
+constexpr double kG = 9.81, kMass = 2.0, kH = 1e-3;
+
+// a unit cube (m = 2, I = m/6) at (x, 0, z) under gravity along −z
+GrainState cube(long tag, double x, double z) {
+  GrainState g;
+  g.tag = tag;
+  g.position = Eigen::Vector3d(x, 0, z);
+  g.force = Eigen::Vector3d(0, 0, -kMass * kG);
+  g.mass = kMass;
+  g.inertia = Eigen::Vector3d::Constant(kMass / 6.0);
+  return g;
+}
+
+PlaneWall wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double friction) {
+  PlaneWall w;
+  w.point = point;
+  w.normal = normal;
+  w.friction = friction;
+  return w;
+}
+
+GrainStepOptions options_sleeping(double speed) {
+  GrainStepOptions options;
+  options.solver.tolerance = 1e-12;
+  options.solver.max_iterations = 100000;
+  options.sleep.speed = speed;
+  options.sleep.time = 0.05;  // 50 steps
+  return options;
+}
+
+// Grains, walls and the step's memory, advanced step by step as fix nscd/polyhedra does:
+// the step, then the θ-method pose update, the walls moved, the sleep state carried.
+struct Scene {
+  std::vector<GrainState> grains;
+  std::vector<PlaneWall> walls;
+  GrainImpulseMemory memory;
+  GrainStepResult last;
+  std::uint64_t step = 0;
+  int woken = 0;  // over all steps
+
+  void run(const ShapeLibrary& library, const GrainStepOptions& options, int steps) {
+    for (int s = 0; s < steps; s++) {
+      last = grain_step(grains, library, walls, kH, options, step++, memory);
+      woken += last.stats.woken;
+      for (size_t k = 0; k < grains.size(); k++) {
+        GrainState& g = grains[k];
+        const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+        const Eigen::Matrix3d inertia = r * g.inertia.asDiagonal() * r.transpose();
+        const GrainPose pose =
+            advance_grain_pose({g.position, g.orientation}, g.inertia, g.velocity, last.velocities[k],
+                               inertia * g.angular_velocity, inertia * last.angular_velocities[k], kH,
+                               options.solver.theta);
+        g.position = pose.position;
+        g.orientation = pose.orientation;
+        g.velocity = last.velocities[k];
+        g.angular_velocity = last.angular_velocities[k];
+        g.asleep = !last.asleep.empty() && last.asleep[k];
+        g.quiet_time = last.quiet_time.empty() ? 0.0 : last.quiet_time[k];
+      }
+      for (PlaneWall& w : walls) w.point += kH * w.velocity;
+    }
+  }
+  // the normal load carried across the face between cubes a and b (sum of the points' forces)
+  double load(long a, long b) const {
+    double sum = 0.0;
+    for (const ContactRecord& c : last.contacts.records())
+      if (c.a == a && c.b == b) sum += c.force.z();
+    return sum;
+  }
+};
+
+ShapeLibrary cube_library() {
+  ShapeLibrary library;
+  library.add(ConvexShape::cube(1.0, 0.0));
+  return library;
+}
+
+}  // namespace
+
+// Three cubes stacked on the floor fall asleep: nothing is detected or solved any more,
+// yet the frozen contacts still carry k m g at each interface. A fourth cube dropped on
+// the stack wakes it down to the floor, and once all sleep again every interface
+// carries k m g (statics) to 1e-9 relative.
+TEST(GrainSleep, StackWakesUnderADroppedCubeAndCarriesTheNewWeights) {
+  const ShapeLibrary library = cube_library();
+  Scene scene;
+  for (int k = 0; k < 3; k++) scene.grains.push_back(cube(k + 1, 0.0, 0.5 + k));
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
+  const GrainStepOptions options = options_sleeping(1e-3);
+  scene.run(library, options, 60);
+  ASSERT_EQ(scene.last.stats.sleeping, 3);
+  EXPECT_EQ(scene.last.stats.contact_points, 0);  // nothing solved
+  EXPECT_EQ(scene.last.stats.frozen_points, 12);  // 4 corners at each of 3 faces
+  const double w = kMass * kG;
+  EXPECT_NEAR(scene.load(-1, 1), 3 * w, 3 * w * 1e-9);
+  EXPECT_NEAR(scene.load(1, 2), 2 * w, 2 * w * 1e-9);
+  EXPECT_NEAR(scene.load(2, 3), w, w * 1e-9);
+  EXPECT_NEAR(scene.last.wall_forces[0].z(), -3 * w, 3 * w * 1e-9);
+  EXPECT_NEAR(scene.last.contact_forces[0].z(), w, w * 1e-9);  // frozen forces in the grain's sum
+  const Eigen::Vector3d top = scene.grains[2].position;
+  scene.run(library, options, 200);  // asleep all along: nothing moves, the loads stay
+  EXPECT_EQ(scene.woken, 0);
+  EXPECT_EQ(scene.grains[2].position, top);
+  EXPECT_NEAR(scene.load(-1, 1), 3 * w, 3 * w * 1e-9);
+
+  scene.grains.push_back(cube(4, 0.0, 3.7));  // 0.2 above the stack: lands at t ≈ 0.2
+  scene.run(library, options, 150);
+  EXPECT_EQ(scene.last.stats.sleeping, 3);  // still falling: the stack sleeps on
+  scene.run(library, options, 850);
+  EXPECT_GE(scene.woken, 3);
+  ASSERT_EQ(scene.last.stats.sleeping, 4);
+  EXPECT_NEAR(scene.load(-1, 1), 4 * w, 4 * w * 1e-9);
+  EXPECT_NEAR(scene.load(1, 2), 3 * w, 3 * w * 1e-9);
+  EXPECT_NEAR(scene.load(2, 3), 2 * w, 2 * w * 1e-9);
+  EXPECT_NEAR(scene.load(3, 4), w, w * 1e-9);
+  EXPECT_NEAR(scene.grains[3].position.z(), 3.5, 1e-9);
+}
+
+// A cube asleep on a frictionless floor; a frictionless side wall moving at 1 reaches it
+// at t = 0.1: the cube wakes and goes on with the wall, its face on the wall's plane
+// (kinematics), the same trajectory as without sleeping.
+TEST(GrainSleep, MovingWallWakesTheCubeItReaches) {
+  const ShapeLibrary library = cube_library();
+  Scene scene, awake;
+  scene.grains.push_back(cube(1, 0.0, 0.5));
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
+  scene.walls.push_back(wall(Eigen::Vector3d(-0.6, 0, 0), Eigen::Vector3d::UnitX(), 0.0));
+  awake = scene;
+  scene.run(library, options_sleeping(1e-3), 60);
+  EXPECT_EQ(scene.last.stats.sleeping, 1);
+  scene.walls[1].velocity = awake.walls[1].velocity = Eigen::Vector3d(1, 0, 0);
+  scene.walls[1].point = awake.walls[1].point = Eigen::Vector3d(-0.6, 0, 0);
+  awake.grains = scene.grains;
+  scene.run(library, options_sleeping(1e-3), 300);
+  GrainStepOptions off = options_sleeping(1e-3);
+  off.sleep.speed = 0.0;
+  awake.run(library, off, 300);
+  EXPECT_EQ(scene.woken, 1);
+  EXPECT_EQ(scene.last.stats.sleeping, 0);
+  const double wall_x = -0.6 + 300 * kH;
+  EXPECT_NEAR(scene.grains[0].position.x(), wall_x + 0.5, 1e-9);
+  EXPECT_NEAR(scene.grains[0].velocity.x(), 1.0, 1e-9);
+  EXPECT_NEAR((scene.grains[0].position - awake.grains[0].position).norm(), 0.0, 1e-12);
+}
+
+// A cube asleep on a floor of friction 0.5 is pulled sideways by 0.8 m g (another
+// style's force, e.g. the wire's): out of balance, it wakes and slides with
+// a = (0.8 − 0.5) g. A pull far below the wake threshold leaves it asleep.
+TEST(GrainSleep, PullOutOfBalanceWakesAndSlides) {
+  const ShapeLibrary library = cube_library();
+  const GrainStepOptions options = options_sleeping(1e-3);
+  Scene scene;
+  scene.grains.push_back(cube(1, 0.0, 0.5));
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
+  scene.run(library, options, 60);
+  ASSERT_EQ(scene.last.stats.sleeping, 1);
+  // the threshold: |Δv| per step above v_sleep h / t_sleep = 2e-5, i.e. a force of 0.04
+  scene.grains[0].force.x() = 0.01 * kMass * options.sleep.speed / options.sleep.time;
+  const Eigen::Vector3d rest = scene.grains[0].position;
+  scene.run(library, options, 100);
+  EXPECT_EQ(scene.woken, 0);
+  EXPECT_EQ(scene.grains[0].position, rest);
+  scene.grains[0].force.x() = 0.8 * kMass * kG;
+  scene.run(library, options, 1);
+  EXPECT_EQ(scene.woken, 1);
+  EXPECT_EQ(scene.grains[0].velocity.x(), 0.0);  // held in the step it wakes in
+  scene.run(library, options, 200);
+  EXPECT_NEAR(scene.grains[0].velocity.x(), 200 * kH * 0.3 * kG, 1e-9);
+  EXPECT_EQ(scene.last.stats.sleeping, 0);
+}
+
+// A cube sliding on a frictionless floor at twice the sleep speed never sleeps and
+// moves at its speed; one at half of it falls asleep after t_sleep and stops there.
+TEST(GrainSleep, OnlyTheSlowSleep) {
+  const ShapeLibrary library = cube_library();
+  const GrainStepOptions options = options_sleeping(1e-3);
+  Scene fast, slow;
+  fast.grains.push_back(cube(1, 0.0, 0.5));
+  fast.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
+  slow = fast;
+  fast.grains[0].velocity.x() = 2e-3;
+  slow.grains[0].velocity.x() = 0.5e-3;
+  fast.run(library, options, 1000);
+  slow.run(library, options, 1000);
+  EXPECT_EQ(fast.last.stats.sleeping, 0);
+  EXPECT_NEAR(fast.grains[0].position.x(), 1000 * kH * 2e-3, 1e-12);
+  EXPECT_EQ(slow.last.stats.sleeping, 1);
+  EXPECT_EQ(slow.grains[0].velocity.x(), 0.0);
+  // asleep at the end of the step that completes t_sleep (50 steps), moving 49 of them at θ = 1
+  EXPECT_NEAR(slow.grains[0].position.x(), 49 * kH * 0.5e-3, 1e-12);
+}
+
+TEST(GrainSleep, BadOptionsAreRejected) {
+  GrainStepOptions options;
+  options.sleep.speed = -1e-3;
+  try {
+    options.validate();
+    FAIL() << "a negative sleep speed passed";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "sleep");
+  }
+  options.sleep.speed = 1e-3;
+  options.sleep.time = 0.0;
+  EXPECT_THROW(options.validate(), InvalidArgument);
+  options.sleep.time = NAN;
+  EXPECT_THROW(options.validate(), InvalidArgument);
+}
