@@ -46,8 +46,10 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 // bounding radius: Table 1's ratio r_p / a_max.
 constexpr double kSharpReferenceOfBounding = 0.1;
 
-// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3)
-constexpr int kGrainRecord = 25;
+// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3) asleep quiet_time
+constexpr int kGrainRecord = 27;
+// per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), asleep, quiet time
+constexpr int kAtomRecord = 14;
 
 }  // namespace
 
@@ -83,7 +85,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       solved_once_(false),
       contact_force_(NULL),
       step_start_velocity_(NULL),
-      force_sum_(NULL) {
+      force_sum_(NULL),
+      sleep_state_(NULL) {
   wiregrain_lmp::StyleArgs args(error, "fix", "nscd/polyhedra", id, narg, arg, 3);
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
@@ -147,6 +150,9 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       project_tolerance_ = args.value_nonnegative(key);
     } else if (key == "project_passes") {
       project_passes_ = (int)args.value_int_in_range(key, 1);
+    } else if (key == "sleep") {
+      core_->options.sleep.speed = args.value_nonnegative(key);
+      core_->options.sleep.time = args.value_positive(key);
     } else if (key == "manifold") {
       const std::string v = args.value_word(key);
       if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
@@ -193,7 +199,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 9;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 12;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -216,12 +222,14 @@ FixNSCDPolyhedra::~FixNSCDPolyhedra() {
   memory->destroy(contact_force_);
   memory->destroy(step_start_velocity_);
   memory->destroy(force_sum_);
+  memory->destroy(sleep_state_);
 }
 
 void FixNSCDPolyhedra::grow_arrays(int nmax) {
   memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
   memory->grow(step_start_velocity_, nmax, 6, "nscd/polyhedra:step_start_velocity");
   memory->grow(force_sum_, nmax, 6, "nscd/polyhedra:force_sum");
+  memory->grow(sleep_state_, nmax, 2, "nscd/polyhedra:sleep_state");
   array_atom = contact_force_;
 }
 
@@ -231,6 +239,8 @@ void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
     step_start_velocity_[j][k] = step_start_velocity_[i][k];
     force_sum_[j][k] = force_sum_[i][k];
   }
+  sleep_state_[j][0] = sleep_state_[i][0];
+  sleep_state_[j][1] = sleep_state_[i][1];
 }
 
 // a grain that never went through a solve starts from its current velocity
@@ -241,40 +251,46 @@ void FixNSCDPolyhedra::set_arrays(int i) {
     step_start_velocity_[i][d] = atom->v[i][d];
     step_start_velocity_[i][3 + d] = atom->angmom[i][d];
   }
+  sleep_state_[i][0] = sleep_state_[i][1] = 0.0;  // awake
 }
 
-// per grain: v_n, L_n (6) and the force and torque summed over this step's sub-steps (6)
+// per grain (kAtomRecord): v_n, L_n (6), the force and torque summed over this step's
+// sub-steps (6), asleep (0/1) and quiet time
 int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
   for (int k = 0; k < 6; k++) buf[k] = step_start_velocity_[i][k];
   for (int k = 0; k < 6; k++) buf[6 + k] = force_sum_[i][k];
-  return 12;
+  buf[12] = sleep_state_[i][0];
+  buf[13] = sleep_state_[i][1];
+  return kAtomRecord;
 }
 
 int FixNSCDPolyhedra::unpack_exchange(int nlocal, double *buf) {
   for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = buf[k];
   for (int k = 0; k < 6; k++) force_sum_[nlocal][k] = buf[6 + k];
   for (int k = 0; k < 6; k++) contact_force_[nlocal][k] = 0.0;
-  return 12;
+  sleep_state_[nlocal][0] = buf[12];
+  sleep_state_[nlocal][1] = buf[13];
+  return kAtomRecord;
 }
 
 int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
-  buf[0] = 13;
+  buf[0] = kAtomRecord + 1;
   pack_exchange(i, buf + 1);
-  return 13;
+  return kAtomRecord + 1;
 }
 
 void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
-  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, 12);
+  const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, kAtomRecord);
   if (!record) set_arrays(nlocal);  // created after read_restart: starts from its own state
   else
     unpack_exchange(nlocal, const_cast<double *>(record));
 }
 
-int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return 13; }
+int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return kAtomRecord + 1; }
 
-int FixNSCDPolyhedra::maxsize_restart() { return 13; }
+int FixNSCDPolyhedra::maxsize_restart() { return kAtomRecord + 1; }
 
-double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 18 * sizeof(double); }
+double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 20 * sizeof(double); }
 
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
@@ -494,7 +510,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
         atom->quaternion[i][0], atom->quaternion[i][1], atom->quaternion[i][2], atom->quaternion[i][3],
         atom->v[i][0], atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1], atom->omega[i][2],
         load[0], load[1], load[2], load[3], load[4], load[5],
-        atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2]};
+        atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2],
+        sleep_state_[i][0], sleep_state_[i][1]};
     mine.insert(mine.end(), record, record + kGrainRecord);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
@@ -512,6 +529,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.torque = ftm2v * vec3(r + 18);
     g.mass = r[21];
     g.inertia = vec3(r + 22);
+    g.asleep = r[25] != 0.0;
+    g.quiet_time = r[26];
   }
   std::sort(grains.begin(), grains.end(),
             [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
@@ -600,6 +619,8 @@ void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> 
       atom->v[i][d] = result.velocities[k][d];
       atom->omega[i][d] = result.angular_velocities[k][d];
     }
+    sleep_state_[i][0] = result.asleep.empty() ? 0.0 : result.asleep[k];
+    sleep_state_[i][1] = result.quiet_time.empty() ? 0.0 : result.quiet_time[k];
     grains_->angmom_from_omega(i);
   }
 }
@@ -643,6 +664,9 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   stick_solves_[0] += stats.subspace_solves;
   stick_solves_[1] += stats.subspace_accepted;
   stats_[4] = stats.max_predicted_penetration;
+  sleep_stats_[0] = stats.sleeping;
+  sleep_stats_[1] = stats.woken;
+  sleep_stats_[2] = stats.frozen_points;
   for (size_t w = 0; w < result.wall_forces.size(); w++)
     for (int d = 0; d < 3; d++) wall_forces_[3 * w + d] = result.wall_forces[w][d];
   if (!stats.hit_iteration_cap) return;
@@ -691,11 +715,15 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
   if (narg < 1) return 0;
   const std::string key = arg[0];
   if (key != "damping" && key != "overlap_recovery" && key != "overlap_speed" && key != "tolerance" &&
-      key != "friction")
+      key != "friction" && key != "sleep")
     return 0;
-  wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, 2), arg, 0);
+  const int used = key == "sleep" ? 3 : 2;
+  wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, used), arg, 0);
   args.next_keyword();
-  if (key == "damping") core_->options.damping = args.value_nonnegative(key);
+  if (key == "sleep") {
+    core_->options.sleep.speed = args.value_nonnegative(key);
+    core_->options.sleep.time = args.value_positive(key);
+  } else if (key == "damping") core_->options.damping = args.value_nonnegative(key);
   else if (key == "overlap_recovery") core_->options.solver.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
   else if (key == "overlap_speed") core_->options.solver.overlap_speed = args.value_nonnegative(key);
   else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
@@ -703,7 +731,7 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
     core_->options.friction = args.value_nonnegative(key);
     core_->walls_take_grain_friction();
   }
-  return 2;
+  return used;
 }
 
 double FixNSCDPolyhedra::compute_vector(int k) {
@@ -716,6 +744,8 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   // end-of-step overlap it found in the last solve (relative to the pair's size)
   if (k == 13 + (int)wall_forces_.size()) return double(projections_);
   if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
+  // sleeping: grains asleep after the last solve, woken in it, frozen contact points
+  if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs
   if (!core_->pairs) return 0.0;
   return k == 11 + (int)wall_forces_.size() ? double(core_->pairs->builds()) : double(core_->pairs->reuses());
@@ -736,6 +766,9 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
     for (const wiregrain::GrainImpulseMemory::Impulse &s : entry.second) {
       data.insert(data.end(), s.position.data(), s.position.data() + 3);
       data.insert(data.end(), s.impulse.data(), s.impulse.data() + 3);
+      data.insert(data.end(), s.normal.data(), s.normal.data() + 3);
+      data.push_back(s.gap);
+      data.push_back(double(static_cast<int>(s.status)));
     }
   }
   data.push_back(core_->impulses.backoff.skip);
@@ -761,7 +794,13 @@ void FixNSCDPolyhedra::restart(char *buf) {
     const wiregrain::GrainImpulseMemory::PairKey pair((long)d[k], (long)d[k + 1]);
     const size_t count = (size_t)d[k + 2];
     k += 3;
-    for (size_t c = 0; c < count; c++, k += 6) core_->impulses.add(pair, {vec3(d + k), vec3(d + k + 3)});
+    for (size_t c = 0; c < count; c++, k += 11) {
+      wiregrain::GrainImpulseMemory::Impulse point{vec3(d + k), vec3(d + k + 3)};
+      point.normal = vec3(d + k + 6);
+      point.gap = d[k + 9];
+      point.status = static_cast<wiregrain::ContactStatus>((int)d[k + 10]);
+      core_->impulses.add(pair, point);
+    }
   }
   core_->impulses.backoff.skip = (int)d[k++];
   core_->impulses.backoff.wait = (int)d[k++];

@@ -7,7 +7,8 @@
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
-       [project 5e-5] [project_passes 20] (README: every keyword, skin, manifold, method, ...)
+       [project 5e-5] [project_passes 20] [sleep 0 0.5]
+       (README: every keyword, skin, manifold, method, ...)
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
        [wall_fix ID [wall_friction mu]] ...
 
@@ -39,6 +40,10 @@
    by moving the poses, never the velocities, in at most N Gauss–Seidel passes
    (core/nscd/overlap_projection.h); τ = 0: off.
 
+   sleep v_sleep t_sleep (default 0: off; also fix_modify ID sleep v t): grains slower than
+   v_sleep (|v| + |ω| R) for t_sleep are held and drop out of detection and solve among
+   themselves until something moves them (core/nscd/grain_step.h, "Sleeping").
+
    MPI: every rank gathers all grains of the group, detects and solves the same contact
    problem in the same order and keeps its own grains' results (replicated solve), so 1
    and N ranks give the same state to the last bit; the cost of the solve does not
@@ -50,7 +55,8 @@
    step spent in gathering + contact detection and in the solve, then the largest overlap
    of all steps since the fix was defined, stick solves tried and kept, pair-cache builds
    and reuses, pair corrections of the overlap projection since the fix was defined, the
-   deepest end-of-step overlap it found in the last solve / pair size]; per-atom array [contact force (3),
+   deepest end-of-step overlap it found in the last solve / pair size, grains asleep after
+   the last solve, grains woken in it, frozen contact points in it]; per-atom array [contact force (3),
    contact torque about the centre (3)] of each grain (impulses / h).
 
    Warnings (the first 10 of each kind): a step that hits the iteration cap; grains of
@@ -152,6 +158,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double **contact_force_;                  // per grain: force, torque
   double **step_start_velocity_;            // per grain: v_n, L_n of the last solve (θ-method)
   double **force_sum_;                      // per grain: Σ f, Σ torque since the last solve
+  double **sleep_state_;                    // per grain: asleep (0/1), quiet time (keyword sleep)
+  double sleep_stats_[3] = {0.0, 0.0, 0.0}; // last solve: asleep, woken, frozen points
   bigint grains_known_ = 0;                 // grains in the group at the run start or last solve
   int lost_warnings_ = 0;                   // warnings about lost grains so far
   int overlap_warnings_ = 0;                // warnings about large overlaps so far

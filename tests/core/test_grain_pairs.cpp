@@ -76,8 +76,8 @@ TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) 
   const int steps = 3000;
   for (int step = 0; step < steps; ++step) {
     for (GrainState& g : grains) g.force = Vector3d(0, 0, -g.mass);  // g = 1
-    const GrainStepProblem full = assemble_grain_step(grains, library, walls, h, options, memory);
-    const GrainStepProblem cached = assemble_grain_step(grains, library, walls, h, options, memory_cached, &cache);
+    GrainStepProblem full = assemble_grain_step(grains, library, walls, h, options, memory);
+    GrainStepProblem cached = assemble_grain_step(grains, library, walls, h, options, memory_cached, &cache);
     expect_same_problem(full, cached, step);
     if (::testing::Test::HasFailure()) return;
     with_points += !full.points.empty();

@@ -208,7 +208,7 @@ TEST(GrainStep, WarmStartReproducesTheStoredImpulse) {
   ASSERT_EQ(memory.pairs().size(), 1u);
   ASSERT_EQ(memory.pairs().begin()->first, GrainImpulseMemory::PairKey(-1, 3));
   // the same configuration again: every point starts from its own last impulse (local frame)
-  const GrainStepProblem problem = assemble_grain_step(grains, library, walls, kH, tight(), memory);
+  GrainStepProblem problem = assemble_grain_step(grains, library, walls, kH, tight(), memory);
   ASSERT_EQ(problem.warm_start.size(), 4u);
   for (size_t c = 0; c < 4; c++) {
     const ContactRecord& last = first.contacts.records()[c];

@@ -571,6 +571,68 @@ run             1500
         self.assertEqual(counts[0], (0, 0))
 
 
+class Sleeping(DeckTestCase):
+    # keyword sleep v_sleep t_sleep (core/nscd/grain_step.h, "Sleeping"): two stacks of
+    # three unit cubes (m = 1, one stack per rank with 2 ranks) fall asleep after t_sleep
+    # (nothing solved, the 20 contact points frozen) and the floor still carries 6 m g. The
+    # top cube of one stack given vz = -1 wakes (a set velocity), the cubes under it wake
+    # in turn (out of balance), all come back to rest and sleep, and the floor carries 6 m g
+    # again (statics; a sleeping cube is balanced to m v_sleep / t_sleep, so to 1e-2 here,
+    # and to the solver's tolerance once it woke). 1 vs 2 ranks and a restart taken with
+    # one stack asleep and the other not yet (per-grain sleep state and frozen contacts in
+    # the restart file) to the bit.
+    V_SLEEP, T_SLEEP = 2e-3, 0.2
+    BODY = f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-10 sleep {V_SLEEP} {T_SLEEP} wall 0 0 0 0 0 1
+timestep        1e-3
+dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
+variable        floor equal -f_nscd[9]
+thermo_style    custom step v_floor f_nscd[3] f_nscd[19] f_nscd[20] f_nscd[21]
+thermo_modify   format float %.17g
+thermo          10
+"""
+    KICK = "set atom 3 vz -1.0\nrun 600\n"
+
+    def test_stacks_sleep_wake_and_carry_their_weight(self):
+        made = grains_data("cube 1.0", [(x, 0, 0.5 + k, 1, 0, 0, 0) for x in (-0.6, 0.6) for k in range(3)])
+        self.assertRanCleanly(made)
+        text = full_precision(deck(self.BODY), "d")
+        one = run(text + "run 300\n" + self.KICK, workdir=made.workdir)
+        two = run(text.replace("dump.h", "dump2.h") + "run 300\n" + self.KICK, workdir=made.workdir, np_ranks=2)
+        half = run(text.replace("dump.h", "dump3.h") + "run 300\nset atom 3 vz -1.0\nrun 150\nwrite_restart stacks.restart\n",
+                   workdir=made.workdir)
+        for r in (one, two, half):
+            self.assertRanCleanly(r)
+        rest = run(full_precision("""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+processors * 1 1
+read_restart stacks.restart
+""" + self.BODY.replace("dump.h", "dump4.h") + "run 450\n", "d"), workdir=made.workdir)
+        self.assertRanCleanly(rest)
+        settled, kicked = one.thermo(0), one.thermo(-1)  # the runs before and after the kick
+        weight, bound = 6 * G, 6 * self.V_SLEEP / self.T_SLEEP
+        woken = kicked["nscd[20]"]
+        print(f"\nstacks at step 300: {settled['nscd[19]'][-1]:.0f} asleep, {settled['nscd[3]'][-1]:.0f} points "
+              f"solved, {settled['nscd[21]'][-1]:.0f} frozen, floor {settled['floor'][-1]:.15f}; after the kick "
+              f"{woken.sum():.0f} wake-ups seen, fewest asleep {kicked['nscd[19]'].min():.0f}, at the end "
+              f"{kicked['nscd[19]'][-1]:.0f}, floor {kicked['floor'][-1]:.15f}")
+        self.assertEqual(settled["nscd[19]"][-1], 6)
+        self.assertEqual(settled["nscd[3]"][-1], 0)
+        self.assertEqual(settled["nscd[21]"][-1], 24)  # 4 corners at 3 faces (floor included) per stack
+        self.assertLess(abs(settled["floor"][-1] - weight), bound)
+        self.assertEqual(kicked["nscd[19]"].min(), 3)  # the kicked stack woke, the other slept on
+        self.assertEqual(kicked["nscd[19]"][-1], 6)
+        self.assertLess(abs(kicked["floor"][-1] - weight), 1e-8)
+        a, b, c = (read_dump(made.path(f)) for f in ("dump.h", "dump2.h", "dump4.h"))
+        for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
+            np.testing.assert_array_equal(b[column], a[column], err_msg=f"2 ranks {column}")
+            np.testing.assert_array_equal(c[column], a[column], err_msg=f"restart {column}")
+
+
 class IterationCap(DeckTestCase):
     # A cap of 1 sweep from zero impulses (no warm start) on a 5-cube stack at tolerance
     # 1e-15: every step hits it; the first 10 are named in warnings, all are counted in
@@ -826,6 +888,10 @@ class BadInput(DeckTestCase):
         self.check("project -1e-4", "fix nscd/polyhedra (id nscd): value of 'project' must be >= 0, got -1e-4")
         self.check("project", "fix nscd/polyhedra (id nscd): missing value after 'project'")
         self.check("project_passes 0", "fix nscd/polyhedra (id nscd): value of 'project_passes' must be >= 1, got 0")
+        self.check("sleep -1e-3 0.5", "fix nscd/polyhedra (id nscd): value of 'sleep' must be >= 0, got -1e-3")
+        self.check("sleep 1e-3 0", "fix nscd/polyhedra (id nscd): value of 'sleep' must be > 0, got 0")
+        self.check("sleep 1e-3", "fix nscd/polyhedra (id nscd): missing value after 'sleep'")
+        self.check("\nfix_modify nscd sleep 1e-3", "fix_modify nscd/polyhedra (id nscd): missing value after 'sleep'")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")

@@ -55,40 +55,169 @@ const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pai
 
 namespace {
 
-// Sleeping (the header): the balance of each sleeping grain and the quiet time of each
-// awake one after the solve; a grain that falls asleep stops.
-void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>& grains, const SleepOptions& sleep,
-                  GrainStepResult& result) {
-  const double h = problem.step.time_step;
+// Step 1 for one grain: free velocities with implicit damping (the header).
+NscdBody free_body(const GrainState& g, double h, double damping) {
+  const double damped = 1.0 / (1.0 + h * damping);
+  const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+  NscdBody b;
+  b.inverse_mass = damped / g.mass;
+  b.inverse_inertia = damped * (r * g.inertia.cwiseInverse().asDiagonal() * r.transpose());
+  const Eigen::Matrix3d inertia_world = r * g.inertia.asDiagonal() * r.transpose();
+  b.velocity_begin = g.velocity;
+  b.angular_velocity_begin = g.angular_velocity;
+  b.velocity_free = damped * (g.velocity + h * g.force / g.mass);
+  b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.angular_velocity + h * g.torque);
+  return b;
+}
+
+// A contact point between grain body_b and grain body_a (or wall −(key_a + 1) when
+// body_a < 0) at `position`, normal from a to b.
+GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, int body_b,
+                             const Eigen::Vector3d& position, const Eigen::Vector3d& normal, double gap, double mu,
+                             const Eigen::Vector3d& wall_velocity, long key_a) {
+  GrainContactPoint c;
+  c.frame = contact_frame(normal);
+  c.constraint.body_a = body_a;
+  c.constraint.body_b = body_b;
+  if (body_a >= 0) c.constraint.jacobian_a = contact_jacobian(c.frame, position - grains[body_a].position, -1.0);
+  c.constraint.jacobian_b = contact_jacobian(c.frame, position - grains[body_b].position, 1.0);
+  c.constraint.velocity_offset = -c.frame.transpose() * wall_velocity;
+  c.constraint.friction = mu;
+  c.constraint.gap = gap;
+  c.pair = {key_a, grains[body_b].tag};
+  c.position = position;
+  return c;
+}
+
+// Step 3: the points from the top down (descending z, ties in the order given), with
+// their rows and warm starts.
+void sort_top_down(GrainStepProblem& problem) {
+  std::vector<size_t> order(problem.points.size());
+  for (size_t c = 0; c < order.size(); c++) order[c] = c;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return problem.points[a].position.z() > problem.points[b].position.z();
+  });
+  std::vector<GrainContactPoint> points;
+  std::vector<Eigen::Vector3d> warm;
+  points.reserve(order.size());
+  for (size_t c : order) {
+    points.push_back(problem.points[c]);
+    if (!problem.warm_start.empty()) warm.push_back(problem.warm_start[c]);
+  }
+  problem.points = std::move(points);
+  problem.warm_start = std::move(warm);
+  problem.step.contacts.clear();
+  problem.step.contacts.reserve(problem.points.size());
+  for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
+}
+
+// Per grain, the impulse of every contact point on it (the solved ones and the frozen
+// ones) and its moment about the centre; on each wall, the grains' impulse.
+struct ContactImpulses {
+  std::vector<Eigen::Vector3d> on_grain, moment, on_wall;
+};
+ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                                 const NscdStepResult& solved) {
   const int n = static_cast<int>(grains.size());
+  ContactImpulses out;
+  out.on_grain.assign(n, Eigen::Vector3d::Zero());
+  out.moment.assign(n, Eigen::Vector3d::Zero());
+  out.on_wall.assign(problem.wall_count, Eigen::Vector3d::Zero());
+  const auto add = [&](int a, int b, long wall_key, const Eigen::Vector3d& position, const Eigen::Vector3d& impulse) {
+    out.on_grain[b] += impulse;
+    out.moment[b] += (position - grains[b].position).cross(impulse);
+    if (a >= 0) {
+      out.on_grain[a] -= impulse;
+      out.moment[a] -= (position - grains[a].position).cross(impulse);
+    } else {
+      out.on_wall[-wall_key - 1] -= impulse;
+    }
+  };
+  for (size_t c = 0; c < problem.points.size(); c++) {
+    const GrainContactPoint& point = problem.points[c];
+    add(point.constraint.body_a, point.constraint.body_b, point.pair.first, point.position,
+        point.frame * solved.contacts.impulses[c]);
+  }
+  for (size_t f = 0; f < problem.frozen.size(); f++)
+    add(problem.frozen_bodies[f].first, problem.frozen_bodies[f].second, problem.frozen[f].first.first,
+        problem.frozen[f].second.position, problem.frozen[f].second.impulse);
+  return out;
+}
+
+// The sleeping grains out of balance after a solve (the header): the net impulse on the
+// grain, h F + its contact impulses, would change |v| + |ω| R by more than v_sleep h / t_sleep.
+std::vector<int> out_of_balance(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                                const SleepOptions& sleep, const ContactImpulses& impulses) {
+  const double h = problem.step.time_step;
+  const double wake_speed_change = sleep.speed * h / sleep.time;
+  std::vector<int> out;
+  for (size_t k = 0; k < grains.size(); k++) {
+    if (!problem.asleep[k]) continue;
+    const GrainState& g = grains[k];
+    const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+    const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
+    const double change = (h * g.force + impulses.on_grain[k]).norm() / g.mass +
+                          problem.bounding_radius[k] * (inverse_inertia * (h * g.torque + impulses.moment[k])).norm();
+    if (change > wake_speed_change) out.push_back(static_cast<int>(k));
+  }
+  return out;
+}
+
+// Wakes `woken` within the step: finite mass and free velocities, and their frozen points
+// become contact points of the problem, warm-started from their frozen impulse; the points
+// already there start from `solved`.
+void wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grains, const std::vector<int>& woken,
+                  const GrainStepOptions& options, const NscdStepResult& solved) {
+  const double h = problem.step.time_step;
+  problem.warm_start = solved.contacts.impulses;
+  for (int k : woken) {
+    problem.asleep[k] = 0;
+    problem.quiet_time[k] = 0.0;
+    problem.step.bodies[k] = free_body(grains[k], h, options.damping);
+  }
+  std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> still_frozen;
+  std::vector<std::pair<int, int>> still_frozen_bodies;
+  for (size_t f = 0; f < problem.frozen.size(); f++) {
+    const auto& [pair, stored] = problem.frozen[f];
+    const auto [a, b] = problem.frozen_bodies[f];
+    if (problem.asleep[b] && (a < 0 || problem.asleep[a])) {
+      still_frozen.push_back(problem.frozen[f]);
+      still_frozen_bodies.push_back(problem.frozen_bodies[f]);
+      continue;
+    }
+    const PlaneWall* wall = a < 0 ? &problem.walls[-pair.first - 1] : nullptr;
+    GrainContactPoint point = make_point(grains, a, b, stored.position, stored.normal, stored.gap,
+                                         wall ? wall->friction : options.friction,
+                                         wall ? wall->velocity : Eigen::Vector3d::Zero(), pair.first);
+    problem.warm_start.push_back(point.frame.transpose() * stored.impulse);
+    problem.points.push_back(point);
+  }
+  problem.frozen = std::move(still_frozen);
+  problem.frozen_bodies = std::move(still_frozen_bodies);
+  sort_top_down(problem);
+}
+
+// Sleeping (the header), after the step's last solve: the grains still asleep stay so
+// (they are balanced); an awake grain slower than v_sleep adds h to its quiet time, and
+// falls asleep, stopped, once that reaches t_sleep.
+void update_sleep(const GrainStepProblem& problem, const SleepOptions& sleep, GrainStepResult& result) {
+  const double h = problem.step.time_step;
+  const size_t n = problem.asleep.size();
   result.asleep.assign(n, 0);
   result.quiet_time.assign(n, 0.0);
-  result.stats.woken = problem.woken;
-  const double wake_speed_change = sleep.speed * h / sleep.time;
-  for (int k = 0; k < n; k++) {
-    const GrainState& g = grains[k];
-    const double radius = problem.bounding_radius[k];
+  for (size_t k = 0; k < n; k++) {
     if (problem.asleep[k]) {
-      // |Δv| + |Δω| R of the net impulse, h (F + contact forces), were the grain free
-      const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
-      const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
-      const double change = h * ((g.force + result.contact_forces[k]).norm() / g.mass +
-                                 radius * (inverse_inertia * (g.torque + result.contact_torques[k])).norm());
-      if (change > wake_speed_change) {
-        result.stats.woken++;
-        continue;  // awake from the next step, quiet time 0
-      }
       result.asleep[k] = 1;
       result.quiet_time[k] = problem.quiet_time[k];
-    } else {
-      const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * radius;
-      if (!(speed < sleep.speed)) continue;
-      result.quiet_time[k] = problem.quiet_time[k] + h;
-      if (result.quiet_time[k] < sleep.time) continue;
-      result.asleep[k] = 1;
-      result.velocities[k].setZero();
-      result.angular_velocities[k].setZero();
+      continue;
     }
+    const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * problem.bounding_radius[k];
+    if (!(speed < sleep.speed)) continue;
+    result.quiet_time[k] = problem.quiet_time[k] + h;
+    if (result.quiet_time[k] < sleep.time) continue;
+    result.asleep[k] = 1;
+    result.velocities[k].setZero();
+    result.angular_velocities[k].setZero();
   }
   for (char a : result.asleep) result.stats.sleeping += a;
 }
@@ -159,19 +288,9 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   std::vector<PosedShape> posed;
   posed.reserve(n);
   double largest_radius = 0.0, fastest = 0.0;
-  const double damped = 1.0 / (1.0 + h * options.damping);
   for (const GrainState& g : grains) {
     posed.emplace_back(library[g.shape].shape, g.position, g.orientation);
-    const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
-    NscdBody b;
-    b.inverse_mass = damped / g.mass;
-    b.inverse_inertia = damped * (r * g.inertia.cwiseInverse().asDiagonal() * r.transpose());
-    const Eigen::Matrix3d inertia_world = r * g.inertia.asDiagonal() * r.transpose();
-    b.velocity_begin = g.velocity;
-    b.angular_velocity_begin = g.angular_velocity;
-    b.velocity_free = damped * (g.velocity + h * g.force / g.mass);
-    b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.angular_velocity + h * g.torque);
-    if (asleep(static_cast<int>(problem.step.bodies.size()))) b = NscdBody();
+    const NscdBody b = asleep(static_cast<int>(problem.step.bodies.size())) ? NscdBody() : free_body(g, h, options.damping);
     problem.step.bodies.push_back(b);
     const double radius = library[g.shape].bounding_radius;
     largest_radius = std::max(largest_radius, radius);
@@ -187,18 +306,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   std::vector<GrainContactPoint>& points = problem.points;
   const auto add_point = [&](int body_a, int body_b, const ContactPoint& p, double mu,
                              const Eigen::Vector3d& wall_velocity, long key_a) {
-    GrainContactPoint c;
-    c.frame = contact_frame(p.normal);
-    c.constraint.body_a = body_a;
-    c.constraint.body_b = body_b;
-    if (body_a >= 0) c.constraint.jacobian_a = contact_jacobian(c.frame, p.position - grains[body_a].position, -1.0);
-    c.constraint.jacobian_b = contact_jacobian(c.frame, p.position - grains[body_b].position, 1.0);
-    c.constraint.velocity_offset = -c.frame.transpose() * wall_velocity;
-    c.constraint.friction = mu;
-    c.constraint.gap = p.gap;
-    c.pair = {key_a, grains[body_b].tag};
-    c.position = p.position;
-    points.push_back(c);
+    points.push_back(make_point(grains, body_a, body_b, p.position, p.normal, p.gap, mu, wall_velocity, key_a));
   };
   // pairs a < b, b ascending for each a (grains in tag order): the same order whether the
   // pairs come from the broad phase or from the pair cache (grain_pairs.h)
@@ -252,11 +360,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   }
 
   // 3. top-down order (descending z of the point, ties in detection order)
-  std::stable_sort(points.begin(), points.end(), [](const GrainContactPoint& a, const GrainContactPoint& b) {
-    return a.position.z() > b.position.z();
-  });
-  problem.step.contacts.reserve(points.size());
-  for (const GrainContactPoint& c : points) problem.step.contacts.push_back(c.constraint);
+  sort_top_down(problem);
 
   // the frozen points: last step's points of the pairs that sleep now
   if (sleep) {
@@ -268,7 +372,12 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     };
     for (const auto& [pair, stored] : memory.pairs())
       if (sleeping_tag(pair.second) && (pair.first < 0 || sleeping_tag(pair.first)))
-        for (const GrainImpulseMemory::Impulse& point : stored) problem.frozen.emplace_back(pair, point);
+        for (const GrainImpulseMemory::Impulse& point : stored) {
+          problem.frozen.emplace_back(pair, point);
+          problem.frozen_bodies.emplace_back(pair.first < 0 ? -1 : index_of_tag.at(pair.first),
+                                             index_of_tag.at(pair.second));
+        }
+    problem.walls = walls;
   }
 
   // 4. warm start from the nearest stored point of the same pair within R_max / 4
@@ -282,61 +391,66 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   return problem;
 }
 
-GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
+GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                  const GrainStepOptions& options, std::uint64_t step_number,
                                  GrainImpulseMemory& memory) {
-  const NscdStepResult solved =
-      solve_nscd_step(problem.step, options.solver_for_step(step_number), problem.warm_start, &memory.backoff);
+  const NscdOptions solver = options.solver_for_step(step_number);
+  NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
+  ContactImpulses impulses = contact_impulses(problem, grains, solved);
+  // sleeping grains out of balance wake within the step, and the step is solved again
+  // with them, until every grain still asleep is balanced (the header)
+  int woken_in_step = 0;
+  if (options.sleep.on()) {
+    for (std::vector<int> woken = out_of_balance(problem, grains, options.sleep, impulses); !woken.empty();
+         woken = out_of_balance(problem, grains, options.sleep, impulses)) {
+      woken_in_step += static_cast<int>(woken.size());
+      wake_in_step(problem, grains, woken, options, solved);
+      solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
+      impulses = contact_impulses(problem, grains, solved);
+    }
+  }
   const double h = problem.step.time_step;
   const int n = static_cast<int>(grains.size());
   GrainStepResult result;
   result.velocities = solved.velocities;
   result.angular_velocities = solved.angular_velocities;
-  result.contact_forces.assign(n, Eigen::Vector3d::Zero());
-  result.contact_torques.assign(n, Eigen::Vector3d::Zero());
-  result.wall_forces.assign(problem.wall_count, Eigen::Vector3d::Zero());
+  result.contact_forces.resize(n);
+  result.contact_torques.resize(n);
+  for (int k = 0; k < n; k++) {
+    result.contact_forces[k] = impulses.on_grain[k] / h;
+    result.contact_torques[k] = impulses.moment[k] / h;
+  }
+  result.wall_forces.resize(problem.wall_count);
+  for (int w = 0; w < problem.wall_count; w++) result.wall_forces[w] = impulses.on_wall[w] / h;
+  // the memory (warm start, frozen points) and the contact list: the solved points, then
+  // the frozen ones (their last impulse taken as this step's)
   memory.clear();
-  // Hᵀ r per grain: the force r (world frame) on b at the point, −r on a; the solved
-  // points, then the frozen ones (their last impulse taken as this step's)
-  const auto add_point = [&](const GrainImpulseMemory::PairKey& pair, int body_a, int body_b,
-                             const GrainImpulseMemory::Impulse& point) {
+  const auto add_point = [&](const GrainImpulseMemory::PairKey& pair, bool wall, const GrainImpulseMemory::Impulse& point) {
     memory.add(pair, point);
-    const Eigen::Vector3d on_b = point.impulse / h;
-    result.contact_forces[body_b] += on_b;
-    result.contact_torques[body_b] += (point.position - grains[body_b].position).cross(on_b);
-    if (body_a >= 0) {
-      result.contact_forces[body_a] -= on_b;
-      result.contact_torques[body_a] -= (point.position - grains[body_a].position).cross(on_b);
-    } else {
-      result.wall_forces[-pair.first - 1] -= on_b;
-    }
     ContactRecord record;
-    record.kind = body_a >= 0 ? ContactKind::grain_grain : ContactKind::grain_wall;
+    record.kind = wall ? ContactKind::grain_wall : ContactKind::grain_grain;
     record.a = pair.first;
     record.b = pair.second;
     record.point = point.position;
     record.normal = point.normal;
-    record.force = on_b;
+    record.force = point.impulse / h;
     record.overlap = -point.gap;
     record.status = point.status;
     result.contacts.add(record);
   };
   for (size_t c = 0; c < problem.points.size(); c++) {
     const GrainContactPoint& point = problem.points[c];
-    const NscdContact& con = point.constraint;
     GrainImpulseMemory::Impulse stored{point.position, point.frame * solved.contacts.impulses[c]};
     stored.normal = point.frame.col(0);
-    stored.gap = con.gap;
+    stored.gap = point.constraint.gap;
     stored.status = static_cast<ContactStatus>(static_cast<int>(solved.contacts.states[c]));
-    add_point(point.pair, con.body_a, con.body_b, stored);
+    add_point(point.pair, point.constraint.body_a < 0, stored);
   }
-  if (!problem.frozen.empty()) {
-    std::unordered_map<long, int> index_of_tag;
-    for (int k = 0; k < n; k++) index_of_tag[grains[k].tag] = k;
-    for (const auto& [pair, stored] : problem.frozen)
-      add_point(pair, pair.first < 0 ? -1 : index_of_tag.at(pair.first), index_of_tag.at(pair.second), stored);
+  for (const auto& [pair, stored] : problem.frozen) add_point(pair, pair.first < 0, stored);
+  if (options.sleep.on()) {
+    update_sleep(problem, options.sleep, result);
+    result.stats.woken = problem.woken + woken_in_step;
   }
-  if (options.sleep.on()) update_sleep(problem, grains, options.sleep, result);
   const NscdReport& report = solved.contacts.report;
   result.stats.sweeps = report.iterations;
   result.stats.residual = report.residual;
@@ -353,7 +467,7 @@ GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vec
 GrainStepResult grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                            const std::vector<PlaneWall>& walls, double time_step, const GrainStepOptions& options,
                            std::uint64_t step_number, GrainImpulseMemory& memory) {
-  const GrainStepProblem problem = assemble_grain_step(grains, library, walls, time_step, options, memory);
+  GrainStepProblem problem = assemble_grain_step(grains, library, walls, time_step, options, memory);
   return solve_grain_step(problem, grains, options, step_number, memory);
 }
 

@@ -35,12 +35,16 @@
 //    reach it within the step, and at the end of a step when it is out of balance: the
 //    net impulse on it (external force h F, the impulses of awake grains just solved, the
 //    frozen ones) would change its speed |Δv| + |Δω| R by more than v_sleep h / t_sleep,
-//    i.e. awake it would leave the sleep speed within t_sleep. It then moves from the next
-//    step on (this step it was held: an impact on a sleeping grain reaches the grains
-//    behind it one step late).
-// A load put on a sleeping pile thus wakes it layer by layer, one per step, down to where
-// the load is carried, and the pile comes back to rest with the forces it would have had
-// awake (to the imbalance threshold).
+//    i.e. awake it would leave the sleep speed within t_sleep. It then wakes within the
+//    step: its frozen points become contact points and the step is solved again, until
+//    every grain still asleep is balanced.
+// An impact or a load on a sleeping pile thus wakes it within the step down to where the
+// load is carried, as far as the impulses reach, and the pile comes back to rest with the
+// forces it would have had awake (to the imbalance threshold). What sleeping changes:
+// the grains still asleep are held (a sleeping grain's velocity below v_sleep is dropped
+// when it falls asleep; a balanced one would not have moved more than that), and a pair
+// of sleeping grains whose gap exceeded the activation distance when they fell asleep is
+// not looked at until one wakes.
 //
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
@@ -157,6 +161,8 @@ struct GrainStepProblem {
   std::vector<double> quiet_time, bounding_radius;  // per grain, sleeping on
   int woken = 0;                                    // at the start of the step
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
+  std::vector<std::pair<int, int>> frozen_bodies;   // (body a or −1 for a wall, body b) of each
+  std::vector<PlaneWall> walls;                     // sleeping on: for frozen wall points that wake
 };
 
 struct GrainStepStats {
@@ -189,9 +195,10 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
                                      const std::vector<PlaneWall>& walls, double time_step,
                                      const GrainStepOptions& options, const GrainImpulseMemory& memory,
                                      GrainPairCache* pairs = nullptr);
-// Step 5; replaces `memory` by this step's impulses. NumericalFailure or InvalidArgument
-// from the solver.
-GrainStepResult solve_grain_step(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
+// Step 5; replaces `memory` by this step's impulses. Sleeping grains that wake within
+// the step join `problem` (their frozen points become its contact points). NumericalFailure
+// or InvalidArgument from the solver.
+GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                  const GrainStepOptions& options, std::uint64_t step_number,
                                  GrainImpulseMemory& memory);
 // Both.
