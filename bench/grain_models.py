@@ -15,32 +15,14 @@ idle machine."""
 
 import argparse
 import os
-import re
-import subprocess
-import sys
-import tempfile
-import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-FINAL = re.compile(r"^in\.column final: H_n = (\S+) phi_p = (\S+) U_s/L = (\S+) z_wpc = (\S+)", re.M)
+from column_runs import ROOT, run_column
 
 
 def run(args, model):
-    work = tempfile.mkdtemp(prefix=f"wiregrain-bench-{model}-")
-    cmd = [] if args.np == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
-    cmd += [os.path.abspath(args.liggghts), "-in", os.path.abspath(args.deck), "-var", "grains", model,
-            "-var", "root", ROOT, "-var", "seed", str(args.seed), "-var", "vtk", "0"]
-    for name, value in args.var:
-        cmd += ["-var", name, value]
-    start = time.perf_counter()
-    proc = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    wall = time.perf_counter() - start
-    final = FINAL.findall(proc.stdout)
-    if proc.returncode != 0 or not final:
-        sys.exit(f"grain_models.py: the {model} run failed in {work}:\n{proc.stdout[-3000:]}")
-    loop = sum(float(t) for t in re.findall(r"^Loop time of (\S+)", proc.stdout, re.M))
-    return wall, loop, [float(v) for v in final[-1]]
+    wall, loop, obs, _ = run_column(args.liggghts, args.np, args.deck,
+                                    [("grains", model), ("seed", args.seed)] + args.var, model)
+    return wall, loop, obs
 
 
 def main():

@@ -50,6 +50,8 @@ constexpr double kSharpReferenceOfBounding = 0.1;
 constexpr int kGrainRecord = 27;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), asleep, quiet time
 constexpr int kAtomRecord = 14;
+// the first number of the fix's global restart data (older builds wrote 0 or 1 there)
+constexpr double kRestartLayout = -2.0;
 
 }  // namespace
 
@@ -751,11 +753,12 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   return k == 11 + (int)wall_forces_.size() ? double(core_->pairs->builds()) : double(core_->pairs->reuses());
 }
 
-// restart: whether a solve happened, the sub-cycle state (steps summed, a pending move
-// and its h), the wall positions, the warm-start impulses and the stick-solve backoff
+// restart: a layout mark, whether a solve happened, the sub-cycle state (steps summed, a
+// pending move and its h), the wall positions, the warm-start impulses (with each point's
+// normal, gap and status: frozen points) and the stick-solve backoff
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   if (comm->me != 0) return;
-  std::vector<double> data = {solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
+  std::vector<double> data = {kRestartLayout, solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
                               double(core_->walls.size())};
   for (const wiregrain::PlaneWall &w : core_->walls) data.insert(data.end(), w.point.data(), w.point.data() + 3);
   data.push_back(double(core_->impulses.pairs().size()));
@@ -780,7 +783,14 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
 
 void FixNSCDPolyhedra::restart(char *buf) {
   const double *d = reinterpret_cast<const double *>(buf);
-  size_t k = 0;
+  if (d[0] != kRestartLayout) {  // a file of a build before sleeping: its impulses are laid out otherwise
+    if (comm->me == 0)
+      error->warning(FLERR, ("fix nscd/polyhedra (id " + std::string(id) +
+                             "): the restart file comes from an older build: the grains start without warm start")
+                                .c_str(), 0);
+    return;
+  }
+  size_t k = 1;
   solved_once_ = d[k++] != 0.0;
   summed_steps_ = (int)d[k++];
   move_pending_ = d[k++] != 0.0;

@@ -1,0 +1,31 @@
+"""One column deck run for the benchmarks (bench/grain_models.py, bench/sleeping.py): the
+deck in a fresh directory with -var NAME VALUE pairs, timed; its final observables."""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FINAL = re.compile(r"^in\.column final: H_n = (\S+) phi_p = (\S+) U_s/L = (\S+) z_wpc = (\S+)", re.M)
+
+
+def run_column(liggghts, np_ranks, deck, variables, label):
+    """Run `deck` with -var root ROOT -var vtk 0 and `variables` [(name, value), ...];
+    returns (wall seconds of the process, the sum of LIGGGHTS' "Loop time" lines,
+    [H_n, phi_p, U_s/L, z_wpc], stdout). Exits naming `label` if the run fails."""
+    work = tempfile.mkdtemp(prefix=f"wiregrain-bench-{label}-")
+    cmd = [] if np_ranks == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np_ranks)]
+    cmd += [os.path.abspath(liggghts), "-in", os.path.abspath(deck), "-var", "root", ROOT, "-var", "vtk", "0"]
+    for name, value in variables:
+        cmd += ["-var", name, str(value)]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.perf_counter() - start
+    final = FINAL.findall(proc.stdout)
+    if proc.returncode != 0 or not final:
+        sys.exit(f"the {label} run failed in {work}:\n{proc.stdout[-3000:]}")
+    loop = sum(float(t) for t in re.findall(r"^Loop time of (\S+)", proc.stdout, re.M))
+    return wall, loop, [float(v) for v in final[-1]], proc.stdout
