@@ -46,10 +46,12 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 // bounding radius: Table 1's ratio r_p / a_max.
 constexpr double kSharpReferenceOfBounding = 0.1;
 
-// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3) asleep quiet_time
-constexpr int kGrainRecord = 27;
-// per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), asleep, quiet time
-constexpr int kAtomRecord = 14;
+// per grain: its sleep state, asleep (0/1), quiet time, drift Δv (3), Δω (3)
+constexpr int kSleepState = 8;
+// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
+constexpr int kGrainRecord = 25 + kSleepState;
+// per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
+constexpr int kAtomRecord = 12 + kSleepState;
 // the first number of the fix's global restart data (older builds wrote 0 or 1 there)
 constexpr double kRestartLayout = -2.0;
 
@@ -231,7 +233,7 @@ void FixNSCDPolyhedra::grow_arrays(int nmax) {
   memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
   memory->grow(step_start_velocity_, nmax, 6, "nscd/polyhedra:step_start_velocity");
   memory->grow(force_sum_, nmax, 6, "nscd/polyhedra:force_sum");
-  memory->grow(sleep_state_, nmax, 2, "nscd/polyhedra:sleep_state");
+  memory->grow(sleep_state_, nmax, kSleepState, "nscd/polyhedra:sleep_state");
   array_atom = contact_force_;
 }
 
@@ -241,8 +243,7 @@ void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
     step_start_velocity_[j][k] = step_start_velocity_[i][k];
     force_sum_[j][k] = force_sum_[i][k];
   }
-  sleep_state_[j][0] = sleep_state_[i][0];
-  sleep_state_[j][1] = sleep_state_[i][1];
+  for (int k = 0; k < kSleepState; k++) sleep_state_[j][k] = sleep_state_[i][k];
 }
 
 // a grain that never went through a solve starts from its current velocity
@@ -253,16 +254,15 @@ void FixNSCDPolyhedra::set_arrays(int i) {
     step_start_velocity_[i][d] = atom->v[i][d];
     step_start_velocity_[i][3 + d] = atom->angmom[i][d];
   }
-  sleep_state_[i][0] = sleep_state_[i][1] = 0.0;  // awake
+  for (int k = 0; k < kSleepState; k++) sleep_state_[i][k] = 0.0;  // awake
 }
 
 // per grain (kAtomRecord): v_n, L_n (6), the force and torque summed over this step's
-// sub-steps (6), asleep (0/1) and quiet time
+// sub-steps (6), the sleep state (kSleepState)
 int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
   for (int k = 0; k < 6; k++) buf[k] = step_start_velocity_[i][k];
   for (int k = 0; k < 6; k++) buf[6 + k] = force_sum_[i][k];
-  buf[12] = sleep_state_[i][0];
-  buf[13] = sleep_state_[i][1];
+  for (int k = 0; k < kSleepState; k++) buf[12 + k] = sleep_state_[i][k];
   return kAtomRecord;
 }
 
@@ -270,8 +270,7 @@ int FixNSCDPolyhedra::unpack_exchange(int nlocal, double *buf) {
   for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = buf[k];
   for (int k = 0; k < 6; k++) force_sum_[nlocal][k] = buf[6 + k];
   for (int k = 0; k < 6; k++) contact_force_[nlocal][k] = 0.0;
-  sleep_state_[nlocal][0] = buf[12];
-  sleep_state_[nlocal][1] = buf[13];
+  for (int k = 0; k < kSleepState; k++) sleep_state_[nlocal][k] = buf[12 + k];
   return kAtomRecord;
 }
 
@@ -292,7 +291,7 @@ int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return kAtomRecord + 1; }
 
 int FixNSCDPolyhedra::maxsize_restart() { return kAtomRecord + 1; }
 
-double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * 20 * sizeof(double); }
+double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * (18 + kSleepState) * sizeof(double); }
 
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
@@ -507,14 +506,14 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
       load[d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
       load[3 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
     }
-    const double record[kGrainRecord] = {
+    const double record[25] = {
         double(atom->tag[i]), double(atom->shapetype[i]), atom->x[i][0], atom->x[i][1], atom->x[i][2],
         atom->quaternion[i][0], atom->quaternion[i][1], atom->quaternion[i][2], atom->quaternion[i][3],
         atom->v[i][0], atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1], atom->omega[i][2],
         load[0], load[1], load[2], load[3], load[4], load[5],
-        atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2],
-        sleep_state_[i][0], sleep_state_[i][1]};
-    mine.insert(mine.end(), record, record + kGrainRecord);
+        atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2]};
+    mine.insert(mine.end(), record, record + 25);
+    mine.insert(mine.end(), sleep_state_[i], sleep_state_[i] + kSleepState);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
   std::vector<wiregrain::GrainState> grains(all.size() / kGrainRecord);
@@ -533,6 +532,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.inertia = vec3(r + 22);
     g.asleep = r[25] != 0.0;
     g.quiet_time = r[26];
+    g.drift = vec3(r + 27);
+    g.drift_angular = vec3(r + 30);
   }
   std::sort(grains.begin(), grains.end(),
             [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
@@ -621,8 +622,13 @@ void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> 
       atom->v[i][d] = result.velocities[k][d];
       atom->omega[i][d] = result.angular_velocities[k][d];
     }
-    sleep_state_[i][0] = result.asleep.empty() ? 0.0 : result.asleep[k];
-    sleep_state_[i][1] = result.quiet_time.empty() ? 0.0 : result.quiet_time[k];
+    const bool sleeping = !result.asleep.empty();
+    sleep_state_[i][0] = sleeping ? result.asleep[k] : 0.0;
+    sleep_state_[i][1] = sleeping ? result.quiet_time[k] : 0.0;
+    for (int d = 0; d < 3; d++) {
+      sleep_state_[i][2 + d] = sleeping ? result.drift[k][d] : 0.0;
+      sleep_state_[i][5 + d] = sleeping ? result.drift_angular[k][d] : 0.0;
+    }
     grains_->angmom_from_omega(i);
   }
 }

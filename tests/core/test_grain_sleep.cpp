@@ -76,6 +76,8 @@ struct Scene {
         g.angular_velocity = last.angular_velocities[k];
         g.asleep = !last.asleep.empty() && last.asleep[k];
         g.quiet_time = last.quiet_time.empty() ? 0.0 : last.quiet_time[k];
+        g.drift = last.drift.empty() ? Eigen::Vector3d::Zero() : last.drift[k];
+        g.drift_angular = last.drift_angular.empty() ? Eigen::Vector3d::Zero() : last.drift_angular[k];
       }
       for (PlaneWall& w : walls) w.point += kH * w.velocity;
     }
@@ -172,11 +174,12 @@ TEST(GrainSleep, MovingWallWakesTheCubeItReaches) {
   EXPECT_NEAR((scene.grains[0].position - awake.grains[0].position).norm(), 0.0, 1e-12);
 }
 
-// A cube asleep on a floor of friction 0.5 is pulled sideways by 0.8 m g (another
-// style's force, e.g. the wire's): out of balance, it wakes within the step and slides
-// with a = (0.8 − 0.5) g from that step on. A pull far below the wake threshold leaves it
-// asleep.
-TEST(GrainSleep, PullOutOfBalanceWakesAndSlides) {
+// A cube asleep on a floor of friction 0.5 is pulled sideways by a force (another
+// style's, e.g. the wire's). A pull of 0.01 m g adds 0.01 g h to its drift every step: it
+// wakes in step ⌈v_sleep / (0.01 g h)⌉ = 11, friction holds it, it sleeps again after
+// t_sleep and then stays asleep, the floor's friction carrying the pull (statics). A pull
+// of 0.8 m g wakes it at once and it slides with a = (0.8 − 0.5) g from that step on.
+TEST(GrainSleep, PullWakesItThenFrictionHoldsItOrItSlides) {
   const ShapeLibrary library = cube_library();
   const GrainStepOptions options = options_sleeping(1e-3);
   Scene scene;
@@ -184,15 +187,24 @@ TEST(GrainSleep, PullOutOfBalanceWakesAndSlides) {
   scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
   scene.run(library, options, 60);
   ASSERT_EQ(scene.last.stats.sleeping, 1);
-  // the threshold: |Δv| per step above v_sleep h / t_sleep = 2e-5, i.e. a force of 0.04
-  scene.grains[0].force.x() = 0.01 * kMass * options.sleep.speed / options.sleep.time;
   const Eigen::Vector3d rest = scene.grains[0].position;
-  scene.run(library, options, 100);
+  const double pull = 0.01 * kMass * kG;
+  scene.grains[0].force.x() = pull;
+  scene.run(library, options, 10);
   EXPECT_EQ(scene.woken, 0);
   EXPECT_EQ(scene.grains[0].position, rest);
-  scene.grains[0].force.x() = 0.8 * kMass * kG;
   scene.run(library, options, 1);
   EXPECT_EQ(scene.woken, 1);
+  scene.run(library, options, 60);
+  EXPECT_EQ(scene.last.stats.sleeping, 1);
+  scene.run(library, options, 500);
+  EXPECT_EQ(scene.woken, 1);
+  EXPECT_LT((scene.grains[0].position - rest).norm(), 1e-12);
+  EXPECT_NEAR(scene.last.wall_forces[0].x(), pull, 1e-9 * pull);  // friction, frozen, takes the pull
+
+  scene.grains[0].force.x() = 0.8 * kMass * kG;
+  scene.run(library, options, 1);
+  EXPECT_EQ(scene.woken, 2);
   EXPECT_NEAR(scene.grains[0].velocity.x(), kH * 0.3 * kG, 1e-12);  // woken within the step: slides at once
   scene.run(library, options, 200);
   EXPECT_NEAR(scene.grains[0].velocity.x(), 201 * kH * 0.3 * kG, 1e-9);

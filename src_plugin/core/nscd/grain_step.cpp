@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include "core/common/errors.h"
@@ -144,21 +145,26 @@ ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vec
   return out;
 }
 
-// The sleeping grains out of balance after a solve (the header): the net impulse on the
-// grain, h F + its contact impulses, would change |v| + |ω| R by more than v_sleep h / t_sleep.
+// A sleeping grain's drift after this step (the header): the velocities it has gathered
+// since it fell asleep, plus what the net impulse of this step (h F and every contact
+// impulse on it) adds, (Δv, Δω).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> drift_after_step(const GrainStepProblem& problem, const GrainState& g,
+                                                            int k, const ContactImpulses& impulses) {
+  const double h = problem.step.time_step;
+  const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+  const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
+  return {g.drift + (h * g.force + impulses.on_grain[k]) / g.mass,
+          g.drift_angular + inverse_inertia * (h * g.torque + impulses.moment[k])};
+}
+
+// The sleeping grains whose drift after this step exceeds the sleep speed, |Δv| + |Δω| R > v_sleep.
 std::vector<int> out_of_balance(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                 const SleepOptions& sleep, const ContactImpulses& impulses) {
-  const double h = problem.step.time_step;
-  const double wake_speed_change = sleep.speed * h / sleep.time;
   std::vector<int> out;
   for (size_t k = 0; k < grains.size(); k++) {
     if (!problem.asleep[k]) continue;
-    const GrainState& g = grains[k];
-    const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
-    const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
-    const double change = (h * g.force + impulses.on_grain[k]).norm() / g.mass +
-                          problem.bounding_radius[k] * (inverse_inertia * (h * g.torque + impulses.moment[k])).norm();
-    if (change > wake_speed_change) out.push_back(static_cast<int>(k));
+    const auto [dv, dw] = drift_after_step(problem, grains[k], static_cast<int>(k), impulses);
+    if (dv.norm() + problem.bounding_radius[k] * dw.norm() > sleep.speed) out.push_back(static_cast<int>(k));
   }
   return out;
 }
@@ -198,17 +204,22 @@ void wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grai
 }
 
 // Sleeping (the header), after the step's last solve: the grains still asleep stay so
-// (they are balanced); an awake grain slower than v_sleep adds h to its quiet time, and
+// and carry their drift on; an awake grain slower than v_sleep adds h to its quiet time, and
 // falls asleep, stopped, once that reaches t_sleep.
-void update_sleep(const GrainStepProblem& problem, const SleepOptions& sleep, GrainStepResult& result) {
+void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>& grains, const SleepOptions& sleep,
+                  const ContactImpulses& impulses, GrainStepResult& result) {
   const double h = problem.step.time_step;
   const size_t n = problem.asleep.size();
   result.asleep.assign(n, 0);
   result.quiet_time.assign(n, 0.0);
+  result.drift.assign(n, Eigen::Vector3d::Zero());
+  result.drift_angular.assign(n, Eigen::Vector3d::Zero());
   for (size_t k = 0; k < n; k++) {
     if (problem.asleep[k]) {
       result.asleep[k] = 1;
       result.quiet_time[k] = problem.quiet_time[k];
+      std::tie(result.drift[k], result.drift_angular[k]) =
+          drift_after_step(problem, grains[k], static_cast<int>(k), impulses);
       continue;
     }
     const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * problem.bounding_radius[k];
@@ -226,8 +237,9 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
                   const std::vector<PlaneWall>& walls, double h) {
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
   for (const GrainState& g : grains) {
-    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time))
-      throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) + ": quiet time must be >= 0 and finite");
+    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite())
+      throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) +
+                                          ": quiet time must be >= 0 and finite, the drift finite");
     const std::string name = "grain step: grain " + std::to_string(g.tag) + ": ";
     if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("grains", name + "shape index " + std::to_string(g.shape) + " not in the library");
@@ -448,7 +460,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   }
   for (const auto& [pair, stored] : problem.frozen) add_point(pair, pair.first < 0, stored);
   if (options.sleep.on()) {
-    update_sleep(problem, options.sleep, result);
+    update_sleep(problem, grains, options.sleep, impulses, result);
     result.stats.woken = problem.woken + woken_in_step;
   }
   const NscdReport& report = solved.contacts.report;

@@ -32,19 +32,21 @@
 //    are frozen, kept with the impulse of the last step they were solved in, and still
 //    reported and counted in the grain's contact force and the walls' forces;
 //  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
-//    reach it within the step, and at the end of a step when it is out of balance: the
-//    net impulse on it (external force h F, the impulses of awake grains just solved, the
-//    frozen ones) would change its speed |Δv| + |Δω| R by more than v_sleep h / t_sleep,
-//    i.e. awake it would leave the sleep speed within t_sleep. It then wakes within the
-//    step: its frozen points become contact points and the step is solved again, until
-//    every grain still asleep is balanced.
-// An impact or a load on a sleeping pile thus wakes it within the step down to where the
-// load is carried, as far as the impulses reach, and the pile comes back to rest with the
-// forces it would have had awake (to the imbalance threshold). What sleeping changes:
-// the grains still asleep are held (a sleeping grain's velocity below v_sleep is dropped
-// when it falls asleep; a balanced one would not have moved more than that), and a pair
-// of sleeping grains whose gap exceeded the activation distance when they fell asleep is
-// not looked at until one wakes.
+//    reach it within the step, and within a step when it is out of balance: its drift,
+//    the velocities (Δv, Δω) that the net impulses on it since it fell asleep (external
+//    force h F, the impulses of awake grains just solved, the frozen ones) would have given
+//    it, reaches the sleep speed, |Δv| + |Δω| R > v_sleep. It then wakes within the step:
+//    its frozen points become contact points and the step is solved again, until every
+//    grain still asleep is below it. The drift adds up a lasting imbalance (a load of
+//    f m g wakes the grain after v_sleep / (f g h) steps) and lets the solver's noise,
+//    of either sign, average out; an impact wakes at once.
+// An impact on a sleeping pile thus wakes it within the step down to where the impulse is
+// carried, a new load within v_sleep / (f g h) steps, and the pile comes back to rest with
+// the forces it would have had awake. What sleeping changes: a grain's velocity below
+// v_sleep is dropped when it falls asleep; a sleeping grain is held while its drift stays
+// below v_sleep (it would have moved less than v_sleep × the time asleep); and a pair of
+// sleeping grains whose gap exceeded the activation distance when they fell asleep is not
+// looked at until one wakes.
 //
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
@@ -75,8 +77,11 @@ struct GrainState {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();                   // external, about the centre
   double mass = 1.0;
   Eigen::Vector3d inertia = Eigen::Vector3d::Ones();                  // principal moments (body axes)
-  bool asleep = false;      // sleeping (SleepOptions; the caller keeps it from step to step)
-  double quiet_time = 0.0;  // time it has been below the sleep speed
+  // sleeping (SleepOptions; the caller keeps these from step to step): asleep, the time it
+  // has been below the sleep speed, and while asleep its drift (the header)
+  bool asleep = false;
+  double quiet_time = 0.0;
+  Eigen::Vector3d drift = Eigen::Vector3d::Zero(), drift_angular = Eigen::Vector3d::Zero();
 };
 
 // A plane of infinite mass through `point`, unit `normal` into the grains, moving at
@@ -185,6 +190,7 @@ struct GrainStepResult {
   // per grain after the step; empty when sleeping is off
   std::vector<char> asleep;
   std::vector<double> quiet_time;
+  std::vector<Eigen::Vector3d> drift, drift_angular;
   GrainStepStats stats;
   ContactList contacts;  // every point (open ones too), force = impulse / h on b
 };
