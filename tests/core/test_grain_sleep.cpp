@@ -232,6 +232,43 @@ TEST(GrainSleep, OnlyTheSlowSleep) {
   EXPECT_NEAR(slow.grains[0].position.x(), 49 * kH * 0.5e-3, 1e-12);
 }
 
+// A cube falls asleep only when the grains that support it sleep or fall asleep in the
+// same step: held, it would no longer press on an awake support. Two stacked cubes, the
+// top one quiet for 0.04 already, the bottom one not: they fall asleep together, when the
+// bottom one's quiet time reaches t_sleep.
+TEST(GrainSleep, NoSleepOnAnAwakeSupport) {
+  const ShapeLibrary library = cube_library();
+  const GrainStepOptions options = options_sleeping(1e-3);
+  Scene scene;
+  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
+  scene.grains[1].quiet_time = 0.04;
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
+  scene.run(library, options, 49);
+  EXPECT_EQ(scene.last.stats.sleeping, 0);
+  scene.run(library, options, 1);
+  EXPECT_EQ(scene.last.stats.sleeping, 2);
+}
+
+// A cube asleep on another asleep on a frictionless floor; the bottom one is pulled by
+// 0.8 m g: it wakes, and the top one, resting on it, wakes with it in the same step; the
+// interface (μ = 0.5) holds, so both move off together at a = 0.4 g (dynamics).
+TEST(GrainSleep, GrainsRestingOnAWokenGrainWakeWithIt) {
+  const ShapeLibrary library = cube_library();
+  const GrainStepOptions options = options_sleeping(1e-3);
+  Scene scene;
+  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
+  scene.run(library, options, 60);
+  ASSERT_EQ(scene.last.stats.sleeping, 2);
+  scene.grains[0].force.x() = 0.8 * kMass * kG;
+  scene.run(library, options, 1);
+  EXPECT_EQ(scene.woken, 2);
+  EXPECT_NEAR(scene.grains[0].velocity.x(), 0.4 * kG * kH, 1e-12);
+  EXPECT_NEAR(scene.grains[1].velocity.x(), 0.4 * kG * kH, 1e-12);
+  scene.run(library, options, 99);
+  EXPECT_NEAR(scene.grains[1].velocity.x(), 100 * 0.4 * kG * kH, 1e-9);
+}
+
 TEST(GrainSleep, BadOptionsAreRejected) {
   GrainStepOptions options;
   options.sleep.speed = -1e-3;

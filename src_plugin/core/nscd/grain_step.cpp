@@ -145,6 +145,31 @@ ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vec
   return out;
 }
 
+// Whether a contact impulse on grain g supports it: it acts against g's external force
+// (gravity, the wire, ...), or, with no external force, any impulse.
+bool supports(const GrainState& g, const Eigen::Vector3d& impulse_on_g) {
+  return g.force.isZero(0.0) ? !impulse_on_g.isZero(0.0) : impulse_on_g.dot(g.force) < 0.0;
+}
+
+// Every grain–grain point of the step after a solve (the solved ones and the frozen
+// ones): (a, b, impulse on b).
+struct GrainPairImpulse {
+  int a, b;
+  Eigen::Vector3d on_b;
+};
+std::vector<GrainPairImpulse> grain_pair_impulses(const GrainStepProblem& problem, const NscdStepResult& solved) {
+  std::vector<GrainPairImpulse> out;
+  for (size_t c = 0; c < problem.points.size(); c++) {
+    const GrainContactPoint& p = problem.points[c];
+    if (p.constraint.body_a >= 0)
+      out.push_back({p.constraint.body_a, p.constraint.body_b, p.frame * solved.contacts.impulses[c]});
+  }
+  for (size_t f = 0; f < problem.frozen.size(); f++)
+    if (problem.frozen_bodies[f].first >= 0)
+      out.push_back({problem.frozen_bodies[f].first, problem.frozen_bodies[f].second, problem.frozen[f].second.impulse});
+  return out;
+}
+
 // A sleeping grain's drift after this step (the header): the velocities it has gathered
 // since it fell asleep, plus what the net impulse of this step (h F and every contact
 // impulse on it) adds, (Δv, Δω).
@@ -172,9 +197,31 @@ std::vector<int> out_of_balance(const GrainStepProblem& problem, const std::vect
 // Wakes `woken` within the step: finite mass and free velocities, and their frozen points
 // become contact points of the problem, warm-started from their frozen impulse; the points
 // already there start from `solved`.
-void wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grains, const std::vector<int>& woken,
-                  const GrainStepOptions& options, const NscdStepResult& solved) {
+//
+// A sleeping grain resting on a woken one (a frozen point between them supports it) wakes
+// with it, and so on up: held, it would no longer press on its support (a body of infinite
+// mass does not push), and the woken grain would miss its weight.
+// Returns the number of grains woken.
+int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grains, std::vector<int> woken,
+                 const GrainStepOptions& options, const NscdStepResult& solved) {
   const double h = problem.step.time_step;
+  {
+    std::vector<char> waking(grains.size(), 0);
+    for (int k : woken) waking[k] = 1;
+    for (size_t next = 0; next < woken.size(); next++) {
+      const int k = woken[next];
+      for (size_t f = 0; f < problem.frozen.size(); f++) {
+        const auto [a, b] = problem.frozen_bodies[f];
+        if (a < 0 || (a != k && b != k)) continue;
+        const int other = a == k ? b : a;
+        const Eigen::Vector3d on_other = other == b ? problem.frozen[f].second.impulse : Eigen::Vector3d(-problem.frozen[f].second.impulse);
+        if (!waking[other] && problem.asleep[other] && supports(grains[other], on_other)) {
+          waking[other] = 1;
+          woken.push_back(other);
+        }
+      }
+    }
+  }
   problem.warm_start = solved.contacts.impulses;
   for (int k : woken) {
     problem.asleep[k] = 0;
@@ -201,13 +248,14 @@ void wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grai
   problem.frozen = std::move(still_frozen);
   problem.frozen_bodies = std::move(still_frozen_bodies);
   sort_top_down(problem);
+  return static_cast<int>(woken.size());
 }
 
 // Sleeping (the header), after the step's last solve: the grains still asleep stay so
 // and carry their drift on; an awake grain slower than v_sleep adds h to its quiet time, and
 // falls asleep, stopped, once that reaches t_sleep.
 void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>& grains, const SleepOptions& sleep,
-                  const ContactImpulses& impulses, GrainStepResult& result) {
+                  const ContactImpulses& impulses, const NscdStepResult& solved, GrainStepResult& result) {
   const double h = problem.step.time_step;
   const size_t n = problem.asleep.size();
   result.asleep.assign(n, 0);
@@ -225,7 +273,26 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
     const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * problem.bounding_radius[k];
     if (!(speed < sleep.speed)) continue;
     result.quiet_time[k] = problem.quiet_time[k] + h;
-    if (result.quiet_time[k] < sleep.time) continue;
+    if (result.quiet_time[k] >= sleep.time) result.asleep[k] = 2;  // a candidate
+  }
+  // a candidate falls asleep only if every grain that supports it sleeps or falls asleep
+  // now (walls do): held, it would no longer press on an awake support
+  const std::vector<GrainPairImpulse> pairs = grain_pair_impulses(problem, solved);
+  for (bool removed = true; removed;) {
+    removed = false;
+    for (const GrainPairImpulse& p : pairs) {
+      if (result.asleep[p.b] == 2 && !result.asleep[p.a] && supports(grains[p.b], p.on_b)) {
+        result.asleep[p.b] = 0;
+        removed = true;
+      }
+      if (result.asleep[p.a] == 2 && !result.asleep[p.b] && supports(grains[p.a], -p.on_b)) {
+        result.asleep[p.a] = 0;
+        removed = true;
+      }
+    }
+  }
+  for (size_t k = 0; k < n; k++) {
+    if (result.asleep[k] != 2) continue;
     result.asleep[k] = 1;
     result.velocities[k].setZero();
     result.angular_velocities[k].setZero();
@@ -415,8 +482,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   if (options.sleep.on()) {
     for (std::vector<int> woken = out_of_balance(problem, grains, options.sleep, impulses); !woken.empty();
          woken = out_of_balance(problem, grains, options.sleep, impulses)) {
-      woken_in_step += static_cast<int>(woken.size());
-      wake_in_step(problem, grains, woken, options, solved);
+      woken_in_step += wake_in_step(problem, grains, woken, options, solved);
       solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
       impulses = contact_impulses(problem, grains, solved);
     }
@@ -460,7 +526,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   }
   for (const auto& [pair, stored] : problem.frozen) add_point(pair, pair.first < 0, stored);
   if (options.sleep.on()) {
-    update_sleep(problem, grains, options.sleep, impulses, result);
+    update_sleep(problem, grains, options.sleep, impulses, solved, result);
     result.stats.woken = problem.woken + woken_in_step;
   }
   const NscdReport& report = solved.contacts.report;
