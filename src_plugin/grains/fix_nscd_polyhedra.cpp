@@ -46,8 +46,8 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 // bounding radius: Table 1's ratio r_p / a_max.
 constexpr double kSharpReferenceOfBounding = 0.1;
 
-// per grain: its sleep state, asleep (0/1), quiet time, drift Δv (3), Δω (3)
-constexpr int kSleepState = 8;
+// per grain: its sleep state, asleep (0/1), quiet time, drift Δv (3), Δω (3), balance (6)
+constexpr int kSleepState = 14;
 // per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
 constexpr int kGrainRecord = 25 + kSleepState;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
@@ -534,6 +534,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.quiet_time = r[26];
     g.drift = vec3(r + 27);
     g.drift_angular = vec3(r + 30);
+    g.balance = vec3(r + 33);
+    g.balance_angular = vec3(r + 36);
   }
   std::sort(grains.begin(), grains.end(),
             [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
@@ -628,6 +630,8 @@ void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> 
     for (int d = 0; d < 3; d++) {
       sleep_state_[i][2 + d] = sleeping ? result.drift[k][d] : 0.0;
       sleep_state_[i][5 + d] = sleeping ? result.drift_angular[k][d] : 0.0;
+      sleep_state_[i][8 + d] = sleeping ? result.balance[k][d] : 0.0;
+      sleep_state_[i][11 + d] = sleeping ? result.balance_angular[k][d] : 0.0;
     }
     grains_->angmom_from_omega(i);
   }

@@ -78,6 +78,8 @@ struct Scene {
         g.quiet_time = last.quiet_time.empty() ? 0.0 : last.quiet_time[k];
         g.drift = last.drift.empty() ? Eigen::Vector3d::Zero() : last.drift[k];
         g.drift_angular = last.drift_angular.empty() ? Eigen::Vector3d::Zero() : last.drift_angular[k];
+        g.balance = last.balance.empty() ? Eigen::Vector3d::Zero() : last.balance[k];
+        g.balance_angular = last.balance_angular.empty() ? Eigen::Vector3d::Zero() : last.balance_angular[k];
       }
       for (PlaneWall& w : walls) w.point += kH * w.velocity;
     }

@@ -178,8 +178,8 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> drift_after_step(const GrainStepProb
   const double h = problem.step.time_step;
   const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
   const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
-  return {g.drift + (h * g.force + impulses.on_grain[k]) / g.mass,
-          g.drift_angular + inverse_inertia * (h * g.torque + impulses.moment[k])};
+  return {g.drift + (h * g.force + impulses.on_grain[k]) / g.mass - g.balance,
+          g.drift_angular + inverse_inertia * (h * g.torque + impulses.moment[k]) - g.balance_angular};
 }
 
 // The sleeping grains whose drift after this step exceeds the sleep speed, |Δv| + |Δω| R > v_sleep.
@@ -262,12 +262,16 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
   result.quiet_time.assign(n, 0.0);
   result.drift.assign(n, Eigen::Vector3d::Zero());
   result.drift_angular.assign(n, Eigen::Vector3d::Zero());
+  result.balance.assign(n, Eigen::Vector3d::Zero());
+  result.balance_angular.assign(n, Eigen::Vector3d::Zero());
   for (size_t k = 0; k < n; k++) {
     if (problem.asleep[k]) {
       result.asleep[k] = 1;
       result.quiet_time[k] = problem.quiet_time[k];
       std::tie(result.drift[k], result.drift_angular[k]) =
           drift_after_step(problem, grains[k], static_cast<int>(k), impulses);
+      result.balance[k] = grains[k].balance;
+      result.balance_angular[k] = grains[k].balance_angular;
       continue;
     }
     const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * problem.bounding_radius[k];
@@ -293,6 +297,14 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
   }
   for (size_t k = 0; k < n; k++) {
     if (result.asleep[k] != 2) continue;
+    // the net impulse of its last awake step, per mass: the drift counts from it
+    GrainState last = grains[k];
+    last.drift.setZero();
+    last.drift_angular.setZero();
+    last.balance.setZero();
+    last.balance_angular.setZero();
+    std::tie(result.balance[k], result.balance_angular[k]) =
+        drift_after_step(problem, last, static_cast<int>(k), impulses);
     result.asleep[k] = 1;
     result.velocities[k].setZero();
     result.angular_velocities[k].setZero();
@@ -304,9 +316,10 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
                   const std::vector<PlaneWall>& walls, double h) {
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
   for (const GrainState& g : grains) {
-    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite())
+    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite() ||
+        !g.balance.allFinite() || !g.balance_angular.allFinite())
       throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) +
-                                          ": quiet time must be >= 0 and finite, the drift finite");
+                                          ": quiet time must be >= 0 and finite, the drift and balance finite");
     const std::string name = "grain step: grain " + std::to_string(g.tag) + ": ";
     if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("grains", name + "shape index " + std::to_string(g.shape) + " not in the library");

@@ -34,8 +34,9 @@
 //  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
 //    reach it within the step, and within a step when it is out of balance: its drift,
 //    the velocities (Δv, Δω) that the net impulses on it since it fell asleep (external
-//    force h F, the impulses of awake grains just solved, the frozen ones) would have given
-//    it, reaches the sleep speed, |Δv| + |Δω| R > v_sleep. It then wakes within the step:
+//    force h F, the impulses of awake grains just solved, the frozen ones), less the net
+//    impulse of its last awake step each step (its balance: the solver's error, frozen
+//    with the points), would have given it, reaches the sleep speed, |Δv| + |Δω| R > v_sleep. It then wakes within the step:
 //    its frozen points become contact points and the step is solved again, until every
 //    grain still asleep is below it. The drift adds up a lasting imbalance (a load of
 //    f m g wakes the grain after v_sleep / (f g h) steps) and lets the solver's noise,
@@ -82,6 +83,7 @@ struct GrainState {
   bool asleep = false;
   double quiet_time = 0.0;
   Eigen::Vector3d drift = Eigen::Vector3d::Zero(), drift_angular = Eigen::Vector3d::Zero();
+  Eigen::Vector3d balance = Eigen::Vector3d::Zero(), balance_angular = Eigen::Vector3d::Zero();
 };
 
 // A plane of infinite mass through `point`, unit `normal` into the grains, moving at
@@ -190,7 +192,7 @@ struct GrainStepResult {
   // per grain after the step; empty when sleeping is off
   std::vector<char> asleep;
   std::vector<double> quiet_time;
-  std::vector<Eigen::Vector3d> drift, drift_angular;
+  std::vector<Eigen::Vector3d> drift, drift_angular, balance, balance_angular;
   GrainStepStats stats;
   ContactList contacts;  // every point (open ones too), force = impulse / h on b
 };
