@@ -22,12 +22,15 @@ P=postprocess
 /usr/bin/python3 $P/plot_columns.py "$R/wire/wire=0/seed=1001" "$R/mu_w/mu_w=0.6/seed=1001" \
     "$R/E_w/E_w=1000/seed=1001" "$R/E_w/E_w=10000/seed=1001" -o docs/column/final_columns_E_w.png \
     --legend "no wire" "E_w = 100" "E_w = 1000" "E_w = 10000"
-# grain models side by side (issue 15): NSCD spheropolyhedra against stock Hertz spheres,
-# the same deck, seeds, mu_w 0.6
+# grain models side by side (issue 15): NSCD spheropolyhedra against stock Hertz spheres
+# and stock superquadrics (blockiness 3), the same deck, seeds, mu_w 0.6
 G=$R/grains
 /usr/bin/python3 $P/plot_column.py "$G/grains=nscd/seed=1001" "$G/grains=nscd/seed=2002" "$G/grains=nscd/seed=3003" \
     "$G/grains=spheres/seed=1001" "$G/grains=spheres/seed=2002" "$G/grains=spheres/seed=3003" \
+    "$G/grains=superquadrics/seed=1001" "$G/grains=superquadrics/seed=2002" "$G/grains=superquadrics/seed=3003" \
     -o docs/column/grain_models.png --legend "NSCD 1001" "NSCD 2002" "NSCD 3003" \
-    "spheres 1001" "spheres 2002" "spheres 3003" --colors C0 C0 C0 C1 C1 C1 --no-energy
+    "spheres 1001" "spheres 2002" "spheres 3003" "superquadrics 1001" "superquadrics 2002" "superquadrics 3003" \
+    --colors C0 C0 C0 C1 C1 C1 C2 C2 C2 --no-energy
 /usr/bin/python3 $P/plot_columns.py "$G/grains=nscd/seed=1001" "$G/grains=spheres/seed=1001" \
-    -o docs/column/final_columns_grain_models.png --legend "NSCD polyhedra" "stock spheres"
+    "$G/grains=superquadrics/seed=1001" \
+    -o docs/column/final_columns_grain_models.png --legend "NSCD polyhedra" "stock spheres" "stock superquadrics"
