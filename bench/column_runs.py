@@ -1,6 +1,7 @@
 """One column deck run for the benchmarks (bench/grain_models.py, bench/sleeping.py): the
 deck in a fresh directory with -var NAME VALUE pairs, timed; its final observables."""
 
+import argparse
 import os
 import re
 import subprocess
@@ -29,3 +30,15 @@ def run_column(liggghts, np_ranks, deck, variables, label):
         sys.exit(f"the {label} run failed in {work}:\n{proc.stdout[-3000:]}")
     loop = sum(float(t) for t in re.findall(r"^Loop time of (\S+)", proc.stdout, re.M))
     return wall, loop, [float(v) for v in final[-1]], proc.stdout
+
+
+def column_arguments(description, np_ranks):
+    """An argument parser with the options every column benchmark takes: --liggghts, --np
+    (default `np_ranks`), --deck, --seed and --var NAME VALUE (repeatable)."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
+    parser.add_argument("--np", type=int, default=np_ranks)
+    parser.add_argument("--deck", default=os.path.join(ROOT, "examples", "column", "in.column_small"))
+    parser.add_argument("--seed", type=int, default=4242)
+    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
+    return parser

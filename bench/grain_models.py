@@ -13,10 +13,9 @@ time LIGGGHTS reports for its runs (the sum of its "Loop time" lines), the final
 U_s/L and z_wpc, and the ratio of each model's times to nscd's. Run it on an otherwise
 idle machine."""
 
-import argparse
 import os
 
-from column_runs import ROOT, run_column
+from column_runs import ROOT, column_arguments, run_column
 
 
 def run(args, model):
@@ -26,12 +25,7 @@ def run(args, model):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
-    parser.add_argument("--np", type=int, default=1)
-    parser.add_argument("--deck", default=os.path.join(ROOT, "examples", "column", "in.column_small"))
-    parser.add_argument("--seed", type=int, default=4242)
-    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
+    parser = column_arguments(__doc__.splitlines()[0], 1)
     parser.add_argument("--models", nargs="+", default=["nscd", "spheres", "superquadrics"],
                         choices=["nscd", "spheres", "superquadrics"], help="nscd is always run (the reference)")
     args = parser.parse_args()

@@ -12,11 +12,10 @@ U_s/L and z_wpc, the largest and the last number of grains asleep in the thermo 
 and the ratio of each setting's times to the reference's. Run it on an otherwise idle
 machine (or read only the ratios)."""
 
-import argparse
 import os
 import re
 
-from column_runs import ROOT, run_column
+from column_runs import ROOT, column_arguments, run_column
 
 
 def asleep_counts(stdout):
@@ -39,14 +38,9 @@ def asleep_counts(stdout):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
-    parser.add_argument("--np", type=int, default=2)
-    parser.add_argument("--deck", default=os.path.join(ROOT, "examples", "column", "in.column_small"))
-    parser.add_argument("--seed", type=int, default=4242)
+    parser = column_arguments(__doc__.splitlines()[0], 2)
     parser.add_argument("--sleep", type=float, nargs="+", default=[1e-3, 1e-2])
     parser.add_argument("--t-sleep", type=float, default=0.5)
-    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     args = parser.parse_args()
     results = {}
     for v_sleep in [0.0] + args.sleep:

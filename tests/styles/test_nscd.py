@@ -40,14 +40,24 @@ grain_shapes write grains.shapes
     return made
 
 
-def deck(body):
-    return f"""
+# the head of every deck here: one rank per x slab
+HEAD = """
 units           lj
 atom_style      polyhedron
 atom_modify     map array sort 0 0.0
 boundary        f f f
 processors      * 1 1
-grain_shapes    read grains.shapes
+"""
+
+
+def restarted(path):
+    """The head of a deck that continues from the restart file `path`."""
+    return HEAD + f"read_restart    {path}\n"
+
+
+def deck(body):
+    """A deck on grains.data and grains.shapes (grains_data) with `body` after them."""
+    return HEAD + f"""grain_shapes    read grains.shapes
 read_data       grains.data
 {body}
 """
@@ -522,14 +532,7 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
         half = run(text.replace("dump.h", "dump3.h") + "run 1200\nwrite_restart heap.restart\n", workdir=made.workdir)
         for r in (one, two, half):
             self.assertRanCleanly(r)
-        rest = run(full_precision("""
-units lj
-atom_style polyhedron
-atom_modify map array sort 0 0.0
-boundary f f f
-processors * 1 1
-read_restart heap.restart
-""" + self.BODY.replace("dump.h", "dump4.h") + "run 1200\n", "d"), workdir=made.workdir)
+        rest = run(full_precision(restarted("heap.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 1200\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)
         b, c = read_dump(made.path("dump2.h")), read_dump(made.path("dump4.h"))
         cols = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
@@ -603,14 +606,7 @@ thermo          10
                    workdir=made.workdir)
         for r in (one, two, half):
             self.assertRanCleanly(r)
-        rest = run(full_precision("""
-units lj
-atom_style polyhedron
-atom_modify map array sort 0 0.0
-boundary f f f
-processors * 1 1
-read_restart stacks.restart
-""" + self.BODY.replace("dump.h", "dump4.h") + "run 450\n", "d"), workdir=made.workdir)
+        rest = run(full_precision(restarted("stacks.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 450\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)
         settled, kicked = one.thermo(0), one.thermo(-1)  # the runs before and after the kick
         weight = 6 * G
