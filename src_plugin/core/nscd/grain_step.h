@@ -23,31 +23,33 @@
 // The position update that follows the step is advance_grain_pose, then the projection of
 // the overlaps it leaves (core/nscd/overlap_projection.h).
 //
-// Sleeping (issue 14; not in the paper; off unless SleepOptions::speed > 0): a grain whose
-// speed |v| + |ω| R (R its bounding radius) stays below v_sleep for t_sleep falls asleep:
-// its velocities are set to zero and it is held. A sleeping grain
+// Sleeping (issue 14; not in the paper; off unless SleepOptions::speed > 0; the design and
+// its measurements: docs/core_nscd.md, "Sleeping grains"). A grain whose speed
+// |v| + |ω| R (R its bounding radius) stays below v_sleep for t_sleep falls asleep once
+// every grain supporting it (a contact impulse on it against its external force) sleeps
+// or falls asleep in the same step: its velocities are set to zero and it is held. A
+// sleeping grain
 //  - is a body of infinite mass in the solve (it takes the impulses of awake grains
 //    touching it and does not move);
 //  - has no contact detection with other sleeping grains or with walls: those contacts
 //    are frozen, kept with the impulse of the last step they were solved in, and still
 //    reported and counted in the grain's contact force and the walls' forces;
 //  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
-//    reach it within the step, and within a step when it is out of balance: its drift,
-//    the velocities (Δv, Δω) that the net impulses on it since it fell asleep (external
-//    force h F, the impulses of awake grains just solved, the frozen ones), less the net
-//    impulse of its last awake step each step (its balance: the solver's error, frozen
-//    with the points), would have given it, reaches the sleep speed, |Δv| + |Δω| R > v_sleep. It then wakes within the step:
-//    its frozen points become contact points and the step is solved again, until every
-//    grain still asleep is below it. The drift adds up a lasting imbalance (a load of
-//    f m g wakes the grain after v_sleep / (f g h) steps) and lets the solver's noise,
-//    of either sign, average out; an impact wakes at once.
-// An impact on a sleeping pile thus wakes it within the step down to where the impulse is
-// carried, a new load within v_sleep / (f g h) steps, and the pile comes back to rest with
-// the forces it would have had awake. What sleeping changes: a grain's velocity below
-// v_sleep is dropped when it falls asleep; a sleeping grain is held while its drift stays
-// below v_sleep (it would have moved less than v_sleep × the time asleep); and a pair of
-// sleeping grains whose gap exceeded the activation distance when they fell asleep is not
-// looked at until one wakes.
+//    reach it within the step, and within a step when its drift reaches the sleep speed,
+//    |Δv| + |Δω| R > v_sleep: (Δv, Δω) are the velocities that the net impulses on it
+//    since it fell asleep (h F, the impulses of awake grains just solved, the frozen
+//    ones), less its balance each step (the net impulse of its last awake step), would
+//    have given it. It wakes with the sleepers resting on it (a frozen point supporting
+//    them), their frozen points become contact points and the step is solved again,
+//    until every grain still asleep is below the sleep speed.
+// An impact wakes a sleeping pile within the step down to where the impulse is carried, a
+// lasting load f m g within v_sleep / (f g h) steps. What sleeping changes: a grain's
+// velocity below v_sleep is dropped when it falls asleep; a sleeping grain is held while
+// its drift stays below v_sleep; a pair of sleeping grains whose gap exceeded the
+// activation distance when they fell asleep is not looked at until one wakes. Known
+// (measured): beside awake grains the drift is a random walk (an awake grain's weight is
+// shared among its supports in a statically indeterminate way), so on piles grains wake
+// after a few hundred steps.
 //
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
@@ -79,7 +81,7 @@ struct GrainState {
   double mass = 1.0;
   Eigen::Vector3d inertia = Eigen::Vector3d::Ones();                  // principal moments (body axes)
   // sleeping (SleepOptions; the caller keeps these from step to step): asleep, the time it
-  // has been below the sleep speed, and while asleep its drift (the header)
+  // has been below the sleep speed, and while asleep its drift and balance (the header)
   bool asleep = false;
   double quiet_time = 0.0;
   Eigen::Vector3d drift = Eigen::Vector3d::Zero(), drift_angular = Eigen::Vector3d::Zero();
