@@ -46,7 +46,8 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 // bounding radius: Table 1's ratio r_p / a_max.
 constexpr double kSharpReferenceOfBounding = 0.1;
 
-// per grain: its sleep state, asleep (0/1), quiet time, drift Δv (3), Δω (3), balance (6)
+// per grain: its sleep state, asleep (0/1), quiet time, drift v (3), ω (3), checked load
+// impulse (3) and moment (3) (GrainState)
 constexpr int kSleepState = 14;
 // per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
 constexpr int kGrainRecord = 25 + kSleepState;
@@ -203,7 +204,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 12;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 13;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -534,8 +535,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.quiet_time = r[26];
     g.drift = vec3(r + 27);
     g.drift_angular = vec3(r + 30);
-    g.balance = vec3(r + 33);
-    g.balance_angular = vec3(r + 36);
+    g.load = vec3(r + 33);
+    g.load_moment = vec3(r + 36);
   }
   std::sort(grains.begin(), grains.end(),
             [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
@@ -630,8 +631,8 @@ void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> 
     for (int d = 0; d < 3; d++) {
       sleep_state_[i][2 + d] = sleeping ? result.drift[k][d] : 0.0;
       sleep_state_[i][5 + d] = sleeping ? result.drift_angular[k][d] : 0.0;
-      sleep_state_[i][8 + d] = sleeping ? result.balance[k][d] : 0.0;
-      sleep_state_[i][11 + d] = sleeping ? result.balance_angular[k][d] : 0.0;
+      sleep_state_[i][8 + d] = sleeping ? result.load[k][d] : 0.0;
+      sleep_state_[i][11 + d] = sleeping ? result.load_moment[k][d] : 0.0;
     }
     grains_->angmom_from_omega(i);
   }
@@ -679,6 +680,7 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   sleep_stats_[0] = stats.sleeping;
   sleep_stats_[1] = stats.woken;
   sleep_stats_[2] = stats.frozen_points;
+  sleep_stats_[3] = stats.sleeper_checks;
   for (size_t w = 0; w < result.wall_forces.size(); w++)
     for (int d = 0; d < 3; d++) wall_forces_[3 * w + d] = result.wall_forces[w][d];
   if (!stats.hit_iteration_cap) return;
@@ -756,7 +758,8 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   // end-of-step overlap it found in the last solve (relative to the pair's size)
   if (k == 13 + (int)wall_forces_.size()) return double(projections_);
   if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
-  // sleeping: grains asleep after the last solve, woken in it, frozen contact points
+  // sleeping: grains asleep after the last solve, woken in it, frozen contact points,
+  // sleepers solved in its equilibrium checks
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs
   if (!core_->pairs) return 0.0;

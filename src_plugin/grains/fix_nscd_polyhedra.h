@@ -158,8 +158,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double **contact_force_;                  // per grain: force, torque
   double **step_start_velocity_;            // per grain: v_n, L_n of the last solve (θ-method)
   double **force_sum_;                      // per grain: Σ f, Σ torque since the last solve
-  double **sleep_state_;                    // per grain: asleep (0/1), quiet time, drift (6), balance (6) (keyword sleep)
-  double sleep_stats_[3] = {0.0, 0.0, 0.0}; // last solve: asleep, woken, frozen points
+  double **sleep_state_;                    // per grain: asleep (0/1), quiet time, drift (6), checked load (6) (keyword sleep)
+  double sleep_stats_[4] = {0.0, 0.0, 0.0, 0.0}; // last solve: asleep, woken, frozen points, checks
   bigint grains_known_ = 0;                 // grains in the group at the run start or last solve
   int lost_warnings_ = 0;                   // warnings about lost grains so far
   int overlap_warnings_ = 0;                // warnings about large overlaps so far

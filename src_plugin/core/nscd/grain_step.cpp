@@ -170,33 +170,126 @@ std::vector<GrainPairImpulse> grain_pair_impulses(const GrainStepProblem& proble
   return out;
 }
 
-// A sleeping grain's drift after this step (the header): the velocities it has gathered
-// since it fell asleep, plus what the net impulse of this step (h F and every contact
-// impulse on it) adds, (Δv, Δω).
-std::pair<Eigen::Vector3d, Eigen::Vector3d> drift_after_step(const GrainStepProblem& problem, const GrainState& g,
-                                                            int k, const ContactImpulses& impulses) {
+// The sleepers' equilibrium check (the header), after a solve. Each sleeping grain k,
+// from the top down (descending z of its centre, ties by index), is solved alone: a
+// body of its mass starting at its drift, loaded by h F, the impulses of the awake grains
+// just solved and the frozen points it does not own, held by the frozen points it owns
+// (all taken as touching, gap 0: it does not move, so an overlap is not pushed out and a
+// small gap does not close), its partners fixed. A frozen point between two sleepers is
+// owned by the upper one (higher centre; ties: higher index), a wall point by its grain,
+// so one top-down pass carries a new weight down a sleeping pile to the floor. The end
+// velocities are its new drift; at most v_sleep (|v| + |ω| R), it stays asleep and its
+// owned points take the solved impulses; above, it wakes. A sleeper is not solved when
+// its net load (force and moment) is what it was at its last check (to 1e-6 v_sleep in
+// velocity) and its drift is below 1e-3 v_sleep: its last solution still holds.
+// Returns the grains that wake; `checks` counts the solves made.
+std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                                const GrainStepOptions& options, const NscdStepResult& solved, int& checks) {
+  const int n = static_cast<int>(grains.size());
   const double h = problem.step.time_step;
-  const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
-  const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
-  return {g.drift + (h * g.force + impulses.on_grain[k]) / g.mass - g.balance,
-          g.drift_angular + inverse_inertia * (h * g.torque + impulses.moment[k]) - g.balance_angular};
-}
-
-// The sleeping grains whose drift after this step exceeds the sleep speed, |Δv| + |Δω| R > v_sleep.
-std::vector<int> out_of_balance(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
-                                const SleepOptions& sleep, const ContactImpulses& impulses) {
-  std::vector<int> out;
-  for (size_t k = 0; k < grains.size(); k++) {
-    if (!problem.asleep[k]) continue;
-    const auto [dv, dw] = drift_after_step(problem, grains[k], static_cast<int>(k), impulses);
-    if (dv.norm() + problem.bounding_radius[k] * dw.norm() > sleep.speed) out.push_back(static_cast<int>(k));
+  const double v_sleep = options.sleep.speed;
+  // per sleeper: the solved points (index, sign of the impulse on it) and frozen points on it
+  std::vector<std::vector<std::pair<int, double>>> solved_on(n);
+  std::vector<std::vector<int>> frozen_on(n);
+  for (size_t c = 0; c < problem.points.size(); c++) {
+    const NscdContact& row = problem.points[c].constraint;
+    if (row.body_a >= 0 && problem.asleep[row.body_a]) solved_on[row.body_a].emplace_back(int(c), -1.0);
+    if (problem.asleep[row.body_b]) solved_on[row.body_b].emplace_back(int(c), 1.0);
   }
-  return out;
+  for (size_t f = 0; f < problem.frozen.size(); f++) {
+    const auto [a, b] = problem.frozen_bodies[f];
+    if (a >= 0) frozen_on[a].push_back(int(f));
+    frozen_on[b].push_back(int(f));
+  }
+  const auto above = [&](int j, int k) {  // j above k
+    return grains[j].position.z() > grains[k].position.z() ||
+           (grains[j].position.z() == grains[k].position.z() && j > k);
+  };
+  const auto owner = [&](int f) {
+    const auto [a, b] = problem.frozen_bodies[f];
+    return a < 0 || above(b, a) ? b : a;
+  };
+  std::vector<int> order;
+  for (int k = 0; k < n; k++)
+    if (problem.asleep[k]) order.push_back(k);
+  std::stable_sort(order.begin(), order.end(), [&](int j, int k) { return above(j, k); });
+
+  NscdOptions local_options = options.solver;
+  local_options.method = SolverMethod::gauss_seidel;
+  local_options.order = SweepOrder::forward;
+  std::vector<int> woken;
+  for (int k : order) {
+    const GrainState& g = grains[k];
+    const double radius = problem.bounding_radius[k];
+    Eigen::Vector3d load = h * g.force, moment = h * g.torque;
+    const auto add_load = [&](const Eigen::Vector3d& position, const Eigen::Vector3d& impulse) {
+      load += impulse;
+      moment += (position - g.position).cross(impulse);
+    };
+    for (const auto& [c, sign] : solved_on[k])
+      add_load(problem.points[c].position, sign * (problem.points[c].frame * solved.contacts.impulses[c]));
+    std::vector<int> owned;
+    for (int f : frozen_on[k]) {
+      if (owner(f) == k) {
+        owned.push_back(f);
+        continue;
+      }
+      const double sign = problem.frozen_bodies[f].second == k ? 1.0 : -1.0;
+      add_load(problem.frozen[f].second.position, sign * problem.frozen[f].second.impulse);
+    }
+    const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+    const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
+    const double load_change =
+        (load - problem.load[k]).norm() / g.mass + radius * (inverse_inertia * (moment - problem.load_moment[k])).norm();
+    const double drift = problem.drift[k].norm() + radius * problem.drift_angular[k].norm();
+    if (load_change <= 1e-6 * v_sleep && drift <= 1e-3 * v_sleep) continue;
+
+    GrainState alone = g;
+    alone.velocity = problem.drift[k];
+    alone.angular_velocity = problem.drift_angular[k];
+    alone.force = load / h;
+    alone.torque = moment / h;
+    NscdStep local;
+    local.time_step = h;
+    local.bodies.push_back(free_body(alone, h, options.damping));
+    std::vector<Eigen::Vector3d> warm;
+    std::vector<Eigen::Matrix3d> frames;
+    for (int f : owned) {
+      const auto& [pair, stored] = problem.frozen[f];
+      const double sign = problem.frozen_bodies[f].second == k ? 1.0 : -1.0;
+      const Eigen::Matrix3d frame = contact_frame(sign * stored.normal);  // from the partner to k
+      NscdContact row;
+      row.body_b = 0;
+      row.jacobian_b = contact_jacobian(frame, stored.position - g.position, 1.0);
+      row.friction = pair.first < 0 ? problem.walls[-pair.first - 1].friction : options.friction;
+      local.contacts.push_back(row);
+      frames.push_back(frame);
+      warm.push_back(frame.transpose() * (sign * stored.impulse));
+    }
+    const NscdStepResult rest = solve_nscd_step(local, local_options, warm);
+    checks++;
+    if (rest.velocities[0].norm() + radius * rest.angular_velocities[0].norm() > v_sleep) {
+      woken.push_back(k);  // its step starts again from its drift at the step start
+      continue;
+    }
+    problem.drift[k] = rest.velocities[0];
+    problem.drift_angular[k] = rest.angular_velocities[0];
+    problem.load[k] = load;
+    problem.load_moment[k] = moment;
+    for (size_t i = 0; i < owned.size(); i++) {
+      auto& stored = problem.frozen[owned[i]].second;
+      const double sign = problem.frozen_bodies[owned[i]].second == k ? 1.0 : -1.0;
+      stored.impulse = sign * (frames[i] * rest.contacts.impulses[i]);
+      stored.status = static_cast<ContactStatus>(static_cast<int>(rest.contacts.states[i]));
+    }
+  }
+  return woken;
 }
 
-// Wakes `woken` within the step: finite mass and free velocities, and their frozen points
-// become contact points of the problem, warm-started from their frozen impulse; the points
-// already there start from `solved`.
+// Wakes `woken` within the step: finite mass and free velocities from their drift (the
+// velocity the check gave them), and their frozen points become contact points of the
+// problem, warm-started from their frozen impulse; the points already there start from
+// `solved`.
 //
 // A sleeping grain resting on a woken one (a frozen point between them supports it) wakes
 // with it, and so on up: held, it would no longer press on its support (a body of infinite
@@ -226,7 +319,10 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
   for (int k : woken) {
     problem.asleep[k] = 0;
     problem.quiet_time[k] = 0.0;
-    problem.step.bodies[k] = free_body(grains[k], h, options.damping);
+    GrainState moving = grains[k];
+    moving.velocity = problem.drift[k];
+    moving.angular_velocity = problem.drift_angular[k];
+    problem.step.bodies[k] = free_body(moving, h, options.damping);
   }
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> still_frozen;
   std::vector<std::pair<int, int>> still_frozen_bodies;
@@ -252,26 +348,27 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
 }
 
 // Sleeping (the header), after the step's last solve: the grains still asleep stay so
-// and carry their drift on; an awake grain slower than v_sleep adds h to its quiet time, and
-// falls asleep, stopped, once that reaches t_sleep.
+// with their drift and last checked load; an awake grain slower than v_sleep adds h to its
+// quiet time, and falls asleep, stopped, once that reaches t_sleep (its load set to 0, so
+// the next step checks it).
 void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>& grains, const SleepOptions& sleep,
-                  const ContactImpulses& impulses, const NscdStepResult& solved, GrainStepResult& result) {
+                  const NscdStepResult& solved, GrainStepResult& result) {
   const double h = problem.step.time_step;
   const size_t n = problem.asleep.size();
   result.asleep.assign(n, 0);
   result.quiet_time.assign(n, 0.0);
   result.drift.assign(n, Eigen::Vector3d::Zero());
   result.drift_angular.assign(n, Eigen::Vector3d::Zero());
-  result.balance.assign(n, Eigen::Vector3d::Zero());
-  result.balance_angular.assign(n, Eigen::Vector3d::Zero());
+  result.load.assign(n, Eigen::Vector3d::Zero());
+  result.load_moment.assign(n, Eigen::Vector3d::Zero());
   for (size_t k = 0; k < n; k++) {
     if (problem.asleep[k]) {
       result.asleep[k] = 1;
       result.quiet_time[k] = problem.quiet_time[k];
-      std::tie(result.drift[k], result.drift_angular[k]) =
-          drift_after_step(problem, grains[k], static_cast<int>(k), impulses);
-      result.balance[k] = grains[k].balance;
-      result.balance_angular[k] = grains[k].balance_angular;
+      result.drift[k] = problem.drift[k];
+      result.drift_angular[k] = problem.drift_angular[k];
+      result.load[k] = problem.load[k];
+      result.load_moment[k] = problem.load_moment[k];
       continue;
     }
     const double speed = result.velocities[k].norm() + result.angular_velocities[k].norm() * problem.bounding_radius[k];
@@ -297,14 +394,6 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
   }
   for (size_t k = 0; k < n; k++) {
     if (result.asleep[k] != 2) continue;
-    // the net impulse of its last awake step, per mass: the drift counts from it
-    GrainState last = grains[k];
-    last.drift.setZero();
-    last.drift_angular.setZero();
-    last.balance.setZero();
-    last.balance_angular.setZero();
-    std::tie(result.balance[k], result.balance_angular[k]) =
-        drift_after_step(problem, last, static_cast<int>(k), impulses);
     result.asleep[k] = 1;
     result.velocities[k].setZero();
     result.angular_velocities[k].setZero();
@@ -317,9 +406,9 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
   for (const GrainState& g : grains) {
     if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite() ||
-        !g.balance.allFinite() || !g.balance_angular.allFinite())
+        !g.load.allFinite() || !g.load_moment.allFinite())
       throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) +
-                                          ": quiet time must be >= 0 and finite, the drift and balance finite");
+                                          ": quiet time must be >= 0 and finite, the drift and load finite");
     const std::string name = "grain step: grain " + std::to_string(g.tag) + ": ";
     if (g.shape < 0 || g.shape >= library.size())
       throw InvalidArgument("grains", name + "shape index " + std::to_string(g.shape) + " not in the library");
@@ -354,6 +443,12 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   if (sleep) {
     problem.asleep.assign(n, 0);
     problem.quiet_time.assign(n, 0.0);
+    for (const GrainState& g : grains) {
+      problem.drift.push_back(g.drift);
+      problem.drift_angular.push_back(g.drift_angular);
+      problem.load.push_back(g.load);
+      problem.load_moment.push_back(g.load_moment);
+    }
     problem.bounding_radius.assign(n, 0.0);
     for (int k = 0; k < n; k++) {
       const GrainState& g = grains[k];
@@ -488,18 +583,17 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
                                  GrainImpulseMemory& memory) {
   const NscdOptions solver = options.solver_for_step(step_number);
   NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
-  ContactImpulses impulses = contact_impulses(problem, grains, solved);
-  // sleeping grains out of balance wake within the step, and the step is solved again
-  // with them, until every grain still asleep is balanced (the header)
-  int woken_in_step = 0;
+  // sleeping grains that cannot stay at rest wake within the step, and the step is
+  // solved again with them, until every grain still asleep can (the header)
+  int woken_in_step = 0, sleeper_checks = 0;
   if (options.sleep.on()) {
-    for (std::vector<int> woken = out_of_balance(problem, grains, options.sleep, impulses); !woken.empty();
-         woken = out_of_balance(problem, grains, options.sleep, impulses)) {
+    for (std::vector<int> woken = check_sleepers(problem, grains, options, solved, sleeper_checks); !woken.empty();
+         woken = check_sleepers(problem, grains, options, solved, sleeper_checks)) {
       woken_in_step += wake_in_step(problem, grains, woken, options, solved);
       solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
-      impulses = contact_impulses(problem, grains, solved);
     }
   }
+  const ContactImpulses impulses = contact_impulses(problem, grains, solved);
   const double h = problem.step.time_step;
   const int n = static_cast<int>(grains.size());
   GrainStepResult result;
@@ -539,8 +633,9 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   }
   for (const auto& [pair, stored] : problem.frozen) add_point(pair, pair.first < 0, stored);
   if (options.sleep.on()) {
-    update_sleep(problem, grains, options.sleep, impulses, solved, result);
+    update_sleep(problem, grains, options.sleep, solved, result);
     result.stats.woken = problem.woken + woken_in_step;
+    result.stats.sleeper_checks = sleeper_checks;
   }
   const NscdReport& report = solved.contacts.report;
   result.stats.sweeps = report.iterations;

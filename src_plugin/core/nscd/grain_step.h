@@ -32,25 +32,24 @@
 //  - is a body of infinite mass in the solve (it takes the impulses of awake grains
 //    touching it and does not move);
 //  - has no contact detection with other sleeping grains or with walls: those contacts
-//    are frozen, kept with the impulse of the last step they were solved in, and still
-//    reported and counted in the grain's contact force and the walls' forces;
+//    are frozen, kept with their impulses, and still reported and counted in the grain's
+//    contact force and the walls' forces;
+//  - after each solve, is checked for equilibrium: solved alone, from the top of the pile
+//    down, as a body starting at its drift velocity, loaded by h F, the awake grains'
+//    impulses and the frozen points of the sleepers above it, held by its other frozen
+//    points (partners fixed). Its end velocity is its new drift; up to v_sleep it stays
+//    asleep and its frozen points take the impulses found, so a new load is carried
+//    down to the floor in the step; above v_sleep it wakes (with the sleepers resting on
+//    it: a frozen point supporting them), starting from its drift, its frozen points
+//    become contact points and the step is solved again, until every sleeper stays;
 //  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
-//    reach it within the step, and within a step when its drift reaches the sleep speed,
-//    |Δv| + |Δω| R > v_sleep: (Δv, Δω) are the velocities that the net impulses on it
-//    since it fell asleep (h F, the impulses of awake grains just solved, the frozen
-//    ones), less its balance each step (the net impulse of its last awake step), would
-//    have given it. It wakes with the sleepers resting on it (a frozen point supporting
-//    them), their frozen points become contact points and the step is solved again,
-//    until every grain still asleep is below the sleep speed.
-// An impact wakes a sleeping pile within the step down to where the impulse is carried, a
-// lasting load f m g within v_sleep / (f g h) steps. What sleeping changes: a grain's
-// velocity below v_sleep is dropped when it falls asleep; a sleeping grain is held while
-// its drift stays below v_sleep; a pair of sleeping grains whose gap exceeded the
-// activation distance when they fell asleep is not looked at until one wakes. Known
-// (measured): beside awake grains the drift is a random walk (an awake grain's weight is
-// shared among its supports in a statically indeterminate way), so on piles grains wake
-// after a few hundred steps.
-//
+//    reach it within the step.
+// What sleeping changes: a grain's velocity below v_sleep is dropped when it falls
+// asleep; a sleeper moves only once its drift passes v_sleep (an unbalanced load f m g
+// within v_sleep / (f g h) steps); the load sharing in a sleeping pile is the one the
+// top-down checks give (the same statics; the split among redundant supports may
+// differ); a pair of sleeping grains whose gap exceeded the activation distance when they
+// fell asleep is not looked at until one wakes, and a frozen point counts as touching.
 // Identities are grain tags; a wall w is −(w + 1) (as in core/contact/contact_list.h).
 #pragma once
 
@@ -81,11 +80,12 @@ struct GrainState {
   double mass = 1.0;
   Eigen::Vector3d inertia = Eigen::Vector3d::Ones();                  // principal moments (body axes)
   // sleeping (SleepOptions; the caller keeps these from step to step): asleep, the time it
-  // has been below the sleep speed, and while asleep its drift and balance (the header)
+  // has been below the sleep speed, and while asleep its drift (v, ω) and the net load
+  // impulse and moment on it at its last equilibrium check (the header)
   bool asleep = false;
   double quiet_time = 0.0;
   Eigen::Vector3d drift = Eigen::Vector3d::Zero(), drift_angular = Eigen::Vector3d::Zero();
-  Eigen::Vector3d balance = Eigen::Vector3d::Zero(), balance_angular = Eigen::Vector3d::Zero();
+  Eigen::Vector3d load = Eigen::Vector3d::Zero(), load_moment = Eigen::Vector3d::Zero();
 };
 
 // A plane of infinite mass through `point`, unit `normal` into the grains, moving at
@@ -168,6 +168,7 @@ struct GrainStepProblem {
   // when sleeping is off), and the frozen points of sleeping pairs (not in `step`)
   std::vector<char> asleep;
   std::vector<double> quiet_time, bounding_radius;  // per grain, sleeping on
+  std::vector<Eigen::Vector3d> drift, drift_angular, load, load_moment;  // per grain, as in GrainState
   int woken = 0;                                    // at the start of the step
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
   std::vector<std::pair<int, int>> frozen_bodies;   // (body a or −1 for a wall, body b) of each
@@ -185,6 +186,7 @@ struct GrainStepStats {
   int sleeping = 0;        // grains asleep after the step
   int woken = 0;           // grains woken in the step (at its start or end)
   int frozen_points = 0;   // contact points of sleeping pairs, not solved
+  int sleeper_checks = 0;  // sleepers solved alone in the equilibrium check
 };
 
 struct GrainStepResult {
@@ -194,7 +196,7 @@ struct GrainStepResult {
   // per grain after the step; empty when sleeping is off
   std::vector<char> asleep;
   std::vector<double> quiet_time;
-  std::vector<Eigen::Vector3d> drift, drift_angular, balance, balance_angular;
+  std::vector<Eigen::Vector3d> drift, drift_angular, load, load_moment;
   GrainStepStats stats;
   ContactList contacts;  // every point (open ones too), force = impulse / h on b
 };
