@@ -307,6 +307,27 @@ TEST(GrainSleep, GrainsRestingOnAWokenGrainWakeWithIt) {
   EXPECT_NEAR(scene.grains[1].velocity.x(), 100 * 0.4 * kG * kH, 1e-9);
 }
 
+// The same pair, now the top cube pulled by 0.3 m g. Checked first, it is held by the
+// cube under it (the interface's friction, μ = 0.5); the bottom cube's check then gets
+// that friction as a load, cannot stay on the frictionless floor and wakes, taking the
+// top one along: both move off together at 0.15 g from that step (dynamics).
+TEST(GrainSleep, PullOnTheTopCubeIsPassedDownAndWakesThePair) {
+  const ShapeLibrary library = cube_library();
+  const GrainStepOptions options = options_sleeping(1e-3);
+  Scene scene;
+  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
+  scene.run(library, options, 60);
+  ASSERT_EQ(scene.last.stats.sleeping, 2);
+  scene.grains[1].force.x() = 0.3 * kMass * kG;
+  scene.run(library, options, 1);
+  EXPECT_EQ(scene.woken, 2);
+  EXPECT_NEAR(scene.grains[0].velocity.x(), 0.15 * kG * kH, 1e-12);
+  EXPECT_NEAR(scene.grains[1].velocity.x(), 0.15 * kG * kH, 1e-12);
+  scene.run(library, options, 99);
+  EXPECT_NEAR(scene.grains[0].velocity.x(), 100 * 0.15 * kG * kH, 1e-9);
+}
+
 TEST(GrainSleep, BadOptionsAreRejected) {
   GrainStepOptions options;
   options.sleep.speed = -1e-3;

@@ -181,7 +181,8 @@ std::vector<GrainPairImpulse> grain_pair_impulses(const GrainStepProblem& proble
 // velocities are its new drift; at most v_sleep (|v| + |ω| R), it stays asleep and its
 // owned points take the solved impulses; above, it wakes. A sleeper is not solved when
 // its net load (force and moment) is what it was at its last check (to 1e-6 v_sleep in
-// velocity) and its drift is below 1e-3 v_sleep: its last solution still holds.
+// velocity) and the drift that check left is below 1e-3 v_sleep: its last solution
+// still holds.
 // Returns the grains that wake; `checks` counts the solves made.
 std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                 const GrainStepOptions& options, const NscdStepResult& solved, int& checks) {
@@ -245,8 +246,8 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
     if (load_change <= 1e-6 * v_sleep && drift <= 1e-3 * v_sleep) continue;
 
     GrainState alone = g;
-    alone.velocity = problem.drift[k];
-    alone.angular_velocity = problem.drift_angular[k];
+    alone.velocity = g.drift;  // at the step start (a second pass in the step starts there too)
+    alone.angular_velocity = g.drift_angular;
     alone.force = load / h;
     alone.torque = moment / h;
     NscdStep local;
@@ -286,10 +287,9 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
   return woken;
 }
 
-// Wakes `woken` within the step: finite mass and free velocities from their drift (the
-// velocity the check gave them), and their frozen points become contact points of the
-// problem, warm-started from their frozen impulse; the points already there start from
-// `solved`.
+// Wakes `woken` within the step: finite mass and free velocities from their drift at the
+// step start, and their frozen points become contact points of the problem, warm-started
+// from their frozen impulse; the points already there start from `solved`.
 //
 // A sleeping grain resting on a woken one (a frozen point between them supports it) wakes
 // with it, and so on up: held, it would no longer press on its support (a body of infinite
@@ -320,8 +320,8 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
     problem.asleep[k] = 0;
     problem.quiet_time[k] = 0.0;
     GrainState moving = grains[k];
-    moving.velocity = problem.drift[k];
-    moving.angular_velocity = problem.drift_angular[k];
+    moving.velocity = grains[k].drift;
+    moving.angular_velocity = grains[k].drift_angular;
     problem.step.bodies[k] = free_body(moving, h, options.damping);
   }
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> still_frozen;
