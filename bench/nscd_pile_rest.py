@@ -4,8 +4,9 @@ box (examples/grain_deposit without its damping), integrated by fix nscd/polyhed
 each solver setting side by side; prints the kinetic energy per grain (translation +
 rotation, in m g a_max with m the mean grain mass) at several times, the mean and largest
 sweeps per step, the contact points solved, the largest overlap at a step start (of the
-last step and of all steps so far, in a_max), the grains asleep and the frozen points
-(keyword sleep), the steps that hit the sweep cap and the wall time.
+last step and of all steps so far, in a_max), the grains asleep, the frozen points and
+the sleepers solved in the last step's equilibrium checks (keyword sleep), the steps that
+hit the sweep cap and the wall time.
 
     bench/nscd_pile_rest.py [--liggghts build/liggghts] [--steps 20000] [--every 2000]
         [--config "method gauss_seidel" "method subspace tolerance 1e-6" ...] [--side-by-side]
@@ -46,7 +47,7 @@ compute         ket all ke
 variable        mg equal mass(all)/count(all)
 variable        ke equal (c_ket+c_rot[1])/count(all)/v_mg
 variable        sweeps equal f_nscd[1]
-thermo_style    custom step v_ke v_sweeps f_nscd[3] f_nscd[4] f_nscd[24] f_nscd[6] f_nscd[25] f_nscd[26] f_nscd[31] f_nscd[33]
+thermo_style    custom step v_ke v_sweeps f_nscd[3] f_nscd[4] f_nscd[24] f_nscd[6] f_nscd[25] f_nscd[26] f_nscd[31] f_nscd[33] f_nscd[34]
 thermo_modify   norm no format float %.6g
 thermo          {every}
 run             {steps}
@@ -66,7 +67,7 @@ def finish(config, started):
     out = process.communicate()[0].decode()
     seconds = time.time() - begin
     number = r"\s+([0-9.eE+-]+)"
-    rows = re.findall(r"^\s*(\d+)" + 10 * number + r"\s*$", out, re.M)
+    rows = re.findall(r"^\s*(\d+)" + 11 * number + r"\s*$", out, re.M)
     if not rows:
         raise SystemExit(f"no thermo output for '{config}':\n{out[-2000:]}")
     return rows, seconds
@@ -77,10 +78,10 @@ def report(config, rows, seconds):
     print(f"{config}: {seconds:.0f} s, largest overlap {overlap_all:.2e}, steps at the cap {capped:.0f}, "
           f"stick solves {tried:.0f} (kept {kept:.0f})", flush=True)
     print(f"  {'t':>6} {'KE per grain':>13} {'sweeps (last step)':>19} {'contacts':>9} {'overlap':>9} {'of all':>9}"
-          f" {'asleep':>7} {'frozen':>7}")
-    for step, ke, sweeps, contacts, overlap, overlap_all, _, _, _, asleep, frozen in rows:
+          f" {'asleep':>7} {'frozen':>7} {'checked':>7}")
+    for step, ke, sweeps, contacts, overlap, overlap_all, _, _, _, asleep, frozen, checked in rows:
         print(f"  {int(step) * 1e-3:6.1f} {float(ke):13.3e} {float(sweeps):19.0f} {float(contacts):9.0f}"
-              f" {float(overlap):9.2e} {float(overlap_all):9.2e} {float(asleep):7.0f} {float(frozen):7.0f}", flush=True)
+              f" {float(overlap):9.2e} {float(overlap_all):9.2e} {float(asleep):7.0f} {float(frozen):7.0f} {float(checked):7.0f}", flush=True)
 
 
 def main():

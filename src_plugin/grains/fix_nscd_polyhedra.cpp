@@ -105,6 +105,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
     else if (key == "max_iterations") {
       core_->options.solver.max_iterations = (int)args.value_int_in_range(key, 1);
+    } else if (key == "freeze") {
+      core_->options.solver.freeze = (int)args.value_int_in_range(key, 0, INT_MAX);
     } else if (key == "order") {
       const std::string v = args.value_word(key);
       if (v == "forward") core_->options.solver.order = wiregrain::SweepOrder::forward;
@@ -198,6 +200,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     }
   }
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
+  if (core_->options.solver.freeze > 0 && core_->options.solver.measure == wiregrain::ConvergenceMeasure::increment)
+    args.fail("'freeze' needs 'convergence natural_map' or 'convergence both' (the increment does not see frozen contacts)");
   if (skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(skin));
   wall_fix_ids_.resize(core_->walls.size());
   core_->walls_take_grain_friction();

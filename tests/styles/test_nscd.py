@@ -889,6 +889,9 @@ class BadInput(DeckTestCase):
         self.check("sleep 1e-3", "fix nscd/polyhedra (id nscd): missing value after 'sleep'")
         self.check("\nfix_modify nscd sleep 1e-3", "fix_modify nscd/polyhedra (id nscd): missing value after 'sleep'")
         self.check("restitution 1.5", "fix nscd/polyhedra (id nscd): value of 'restitution' must be in [0, 1], got 1.5")
+        self.check("freeze -1", "fix nscd/polyhedra (id nscd): value of 'freeze' must be >= 0, got -1")
+        self.check("freeze 5 convergence increment",
+                   "fix nscd/polyhedra (id nscd): 'freeze' needs 'convergence natural_map' or 'convergence both'")
         self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")
         self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1 (")

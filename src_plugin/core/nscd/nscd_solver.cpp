@@ -56,6 +56,11 @@ void NscdOptions::validate() const {
     throw InvalidArgument("subspace_regularization", "subspace_regularization must be in (0, 1), got " +
                                                          format_number(subspace_regularization));
   }
+  if (freeze < 0) throw InvalidArgument("freeze", "freeze must be >= 0 sweeps, got " + std::to_string(freeze));
+  if (freeze > 0 && measure == ConvergenceMeasure::increment) {
+    throw InvalidArgument("freeze", "freeze needs a measure with the Siconos error (natural_map or "
+                                    "increment_then_natural_map): the increment does not see frozen contacts");
+  }
   if (!(overlap_recovery >= 0.0 && overlap_recovery <= 1.0)) {
     throw InvalidArgument("overlap_recovery", "overlap_recovery must be in [0, 1], got " +
                                                   format_number(overlap_recovery));
@@ -211,6 +216,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
 
   std::vector<int> order(n);
   for (int c = 0; c < n; ++c) order[c] = c;
+  std::vector<int> frozen_until(options.freeze > 0 ? n : 0, 0);  // skipped in sweeps before this
   std::mt19937_64 generator(options.seed);
   const double omega = options.relaxation;
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
@@ -247,6 +253,11 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     int counts[3] = {0, 0, 0};
     for (int k = 0; k < n; ++k) {
       const int c = backward ? order[n - 1 - k] : order[k];
+      if (!frozen_until.empty() && frozen_until[c] > iteration) {
+        ++report.frozen_updates;
+        ++counts[static_cast<int>(result.states[c])];
+        continue;
+      }
       const LocalDelassus& W = op.delassus_block(c);
       Eigen::Vector3d& r = result.impulses[c];
       const Eigen::Vector3d q_local = op.velocity(c) - W.matrix() * r;
@@ -263,6 +274,8 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         r = updated;
         increment_squared += delta.squaredNorm();
       }
+      if (!frozen_until.empty() && delta.squaredNorm() <= options.tolerance * options.tolerance * r.squaredNorm())
+        frozen_until[c] = iteration + 1 + options.freeze;
       result.states[c] = local.state;
       ++counts[static_cast<int>(local.state)];
     }

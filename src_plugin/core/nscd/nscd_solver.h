@@ -144,9 +144,15 @@ struct NscdOptions {
   double restitution = 0.0;  // [0, 1]
   double overlap_recovery = 1.0;  // β ∈ [0, 1]: fraction of an overlap removed per step
   double overlap_speed = 1e300;   // v_o ≥ 0: largest push-out speed (none by default here)
+  // Freezing (the idea of Siconos' fc3d_nsgs "freezing contacts"): a contact whose impulse
+  // changed by at most tolerance × |r_c| in a sweep is skipped in the next `freeze` sweeps
+  // (its impulse held; the Siconos error, computed on every contact, still decides the
+  // stop). 0: off. Needs a measure with the Siconos error (not `increment`).
+  int freeze = 0;
 
   // InvalidArgument("tolerance" | "max_iterations" | "relaxation" | "theta" |
-  // "restitution" | "overlap_recovery" | "overlap_speed", ...) on values outside the ranges.
+  // "restitution" | "overlap_recovery" | "overlap_speed" | "freeze", ...) on values outside
+  // the ranges.
   void validate() const;
 };
 
@@ -161,6 +167,7 @@ struct NscdReport {
   long slide_fallbacks = 0;            // local slide solves that needed the scan
   int subspace_solves = 0;             // stick solves tried (method subspace)
   int subspace_accepted = 0;           // of which halved the Siconos error and were kept
+  long frozen_updates = 0;             // contact updates skipped (freeze)
 };
 
 // n × n blocks of 3×3, stored by block row (each row sorted by column).
