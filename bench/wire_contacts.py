@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Benchmark: a 4242-segment wire (Table 1 material) piled in a box, its time per step
-with wire-wire contacts (pair_style wire/contact) against without, and the exact
-segment-pair evaluations per second. Both runs start from the same piled state, one
-after the other in this invocation.
+with wire-wire contacts (pair_style wire/contact, with its pair cache and with `cache
+no`) against without, and the exact segment-pair evaluations per second. The runs start
+from the same piled state, one after the other in this invocation.
 
     bench/wire_contacts.py [--liggghts build/liggghts] [--steps 2000] [--np 1]"""
 
@@ -85,8 +85,11 @@ def main():
              "thermo_modify norm no")
     with_contacts = liggghts(args, work, MEASURE.format(
         pair="pair_style wire/contact\npair_coeff * *", stats=stats, steps=args.steps, fixes=FIXES))
+    no_cache = liggghts(args, work, MEASURE.format(
+        pair="pair_style wire/contact cache no\npair_coeff * *", stats=stats, steps=args.steps, fixes=FIXES))
     without = liggghts(args, work, MEASURE.format(pair="pair_style none", stats="", steps=args.steps, fixes=FIXES))
     t_with, steps, atoms = loop_time(with_contacts)
+    t_no_cache, _, _ = loop_time(no_cache)
     t_without, _, _ = loop_time(without)
     rows = re.findall(r"^\s*\d+\s+\d+\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s*$", with_contacts, re.M)
     contacts, evaluations = (float(v) for v in rows[-1])
@@ -94,9 +97,12 @@ def main():
           f"{contacts:.0f} wire-wire contacts, {evaluations:.0f} segment-pair evaluations per step")
     print(f"with contacts   : {t_with / steps * 1e3:8.3f} ms per step  "
           f"{t_with / (steps * atoms) * 1e9:8.1f} ns per bead-step")
+    print(f"  cache no      : {t_no_cache / steps * 1e3:8.3f} ms per step  "
+          f"{t_no_cache / (steps * atoms) * 1e9:8.1f} ns per bead-step")
     print(f"without contacts: {t_without / steps * 1e3:8.3f} ms per step  "
           f"{t_without / (steps * atoms) * 1e9:8.1f} ns per bead-step")
-    print(f"ratio with / without: {t_with / t_without:.2f}")
+    print(f"ratio with / without: {t_with / t_without:.2f} (cache no: {t_no_cache / t_without:.2f}); "
+          f"cache yes / no: {t_with / t_no_cache:.2f}")
     print(f"segment-pair evaluations per second (whole step time): {evaluations * steps / t_with:.4g}")
 
 

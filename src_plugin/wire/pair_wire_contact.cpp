@@ -99,7 +99,11 @@ void PairWireContact::parse(int narg, char **arg, int first, Coefficients &c, co
   wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first);
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (!wiregrain_lmp::parse_material_keyword(args, key, "E", "nu", c.material) &&
+    if (key == "cache" && std::string(kind) == "pair_style") {
+      const std::string v = args.value_word(key);
+      if (v != "yes" && v != "no") args.fail("value of 'cache' must be yes or no, got '" + v + "'");
+      cache_ = v == "yes";
+    } else if (!wiregrain_lmp::parse_material_keyword(args, key, "E", "nu", c.material) &&
         !wiregrain_lmp::parse_friction_keyword(args, key, c.friction))
       args.unknown_keyword(key);
   }
@@ -246,31 +250,44 @@ void PairWireContact::compute(int eflag, int vflag) {
   double largest_ratio = 0.0, largest_overlap = 0.0, largest_radius = 1.0;
   int largest_a = 0, largest_b = 0;
 
-  const int inum = list->inum;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = list->ilist[ii];
-    const int *jlist = list->firstneigh[i];
-    const int jnum = list->numneigh[i];
-    if (segment_next_[i] == -1) continue;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (segment_next_[j] == -1) continue;
-      const int a = tag[i] < tag[j] ? i : j;
-      const int b = a == i ? j : i;
-      if (a >= nlocal) continue;
-      if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
-      if (segment_next_[b] == -2)
-        error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
-                           " is missing (a segment stretched beyond 25 %?)").c_str());
-
+  // the segment pairs (a, b) of the neighbour list, in its order, this rank computes; with
+  // the cache, only those that may touch before the list is built again
+  // (segments_may_touch with the neighbour skin), chosen when the list is built
+  if (!cache_ || neighbor->ncalls != candidates_built_at_) {
+    candidates_.clear();
+    candidates_built_at_ = neighbor->ncalls;
+    const int inum = list->inum;
+    for (int ii = 0; ii < inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      const int jnum = list->numneigh[i];
+      if (segment_next_[i] == -1) continue;
+      for (int jj = 0; jj < jnum; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if (segment_next_[j] == -1) continue;
+        const int a = tag[i] < tag[j] ? i : j;
+        const int b = a == i ? j : i;
+        if (a >= nlocal) continue;
+        if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
+        if (segment_next_[b] == -2)
+          error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
+                             " is missing (a segment stretched beyond 25 %?)").c_str());
+        if (cache_ && !wiregrain::segments_may_touch(as_vector(x[a]), as_vector(segment_end_[a]), as_vector(x[b]),
+                                                     as_vector(segment_end_[b]), radius[a], radius[b], neighbor->skin))
+          continue;
+        candidates_.emplace_back(a, b);
+      }
+    }
+  }
+  for (const auto &[a, b] : candidates_) {
+    {
       // positions as the neighbour list has them (ghosts are the right periodic images)
       const int a1 = segment_next_[a], b1 = segment_next_[b];
       const Eigen::Vector3d xa0 = as_vector(x[a]), xa1 = as_vector(segment_end_[a]);
       const Eigen::Vector3d xb0 = as_vector(x[b]), xb1 = as_vector(segment_end_[b]);
       const double r_a = radius[a], r_b = radius[b];
-      // bounding spheres of the two spherocylinders first (most pairs of the list)
-      const double reach = 0.5 * ((xa1 - xa0).norm() + (xb1 - xb0).norm()) + r_a + r_b;
-      if ((0.5 * (xa0 + xa1 - xb0 - xb1)).squaredNorm() >= reach * reach) continue;
+      // bounding spheres of the two spherocylinders first (most pairs)
+      if (!wiregrain::segments_may_touch(xa0, xa1, xb0, xb1, r_a, r_b, 0.0)) continue;
       evaluations++;
       const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
       const double overlap = r_a + r_b - cp.distance;
@@ -426,5 +443,6 @@ void PairWireContact::read_restart(FILE *fp, const int /*major*/, const int /*mi
 double PairWireContact::memory_usage() {
   const int n = atom->ntypes + 1;
   return double(n) * n * (sizeof(int) + 2 * sizeof(double) + sizeof(Coefficients) + sizeof(wiregrain::ContactFriction)) +
-         double(contacts_->size()) * sizeof(wiregrain::ContactRecord);
+         double(contacts_->size()) * sizeof(wiregrain::ContactRecord) +
+         double(candidates_.capacity()) * sizeof(std::pair<int, int>);
 }

@@ -2,8 +2,8 @@
    section 4, the paper's section 2.2).
 
    pair_style wire/contact [E 100] [nu 0] [mu_s 0.5] [mu_d 0.5]
-                           [restitution 0.5 | damping_ratio z] [limit_force no|yes]
-   pair_coeff I J [same keywords]      (per type pair, overriding pair_style's values)
+                           [restitution 0.5 | damping_ratio z] [limit_force no|yes] [cache yes|no]
+   pair_coeff I J [same keywords but cache]  (per type pair, overriding pair_style's values)
 
    Each segment (bead i to its next bead) is a spherocylinder of the bead radius; the
    closest points of two segments (Sunday's algorithm) give the overlap ξ, the normal and
@@ -15,7 +15,10 @@
    (common/plugin_material.h); damping γ = 2ζ√(k m) with m = m_A m_B/(m_A + m_B) and m_A the
    mass of segment A's two beads. The tangential springs live in the fix
    WIRE_CONTACT_HISTORY, so they survive neighbour rebuilds, migration and restarts;
-   restart files also keep the pair_style and pair_coeff settings. Publishes its contacts
+   restart files also keep the pair_style and pair_coeff settings. cache yes (the
+   default): when the neighbour list is built, only its segment pairs that can touch before
+   the next build (core/geometry/segment_distance.h, segments_may_touch with the neighbour
+   skin) are kept and looked at each step; no: every pair of the list each step. Publishes its contacts
    (kind wire_wire, a and b the tags of the segments' first beads) as a ContactPublisher.
 
    Checks (common/contact_checks.h): at each run start the timestep against the stability
@@ -34,6 +37,9 @@ PairStyle(wire/contact,PairWireContact)
 #define LMP_PAIR_WIRE_CONTACT_H
 
 #include "pair.h"
+
+#include <utility>
+#include <vector>
 
 #include "common/contact_checks.h"
 #include "common/contact_publisher.h"
@@ -83,6 +89,11 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
   int *segment_next_;
   double **segment_end_;
   int segment_capacity_;
+  // keyword cache (pair_style): the segment pairs to look at until the neighbour list is
+  // built again (compute()), and the neighbour build they were chosen at
+  bool cache_ = true;
+  std::vector<std::pair<int, int>> candidates_;
+  bigint candidates_built_at_ = -1;
 
   wiregrain_lmp::ContactTimeStepCheck time_step_check_;
   wiregrain_lmp::OverlapWarnings overlap_warnings_;

@@ -7,8 +7,8 @@ import re
 
 import numpy as np
 
-from liggghts_run import (DeckTestCase, contact_overlap_warning, contact_time_step_warning, loaded_contact_measurement,
-                          main, read_dump, run, static_contact_measurement, warning_lines)
+from liggghts_run import (DeckTestCase, contact_overlap_warning, contact_time_step_warning, full_precision,
+                          loaded_contact_measurement, main, read_dump, run, static_contact_measurement, warning_lines)
 
 HEADER = """
 units           lj
@@ -387,6 +387,53 @@ run             60000
         print("\n".join(found))
         self.assertEqual(len(found), 1)
         self.assertRegex(found[0], r"^fix wire/wall \(id floor\): at step \d+ bead \d+ and the wall overlap by ")
+
+
+class PairCache(DeckTestCase):
+    # pair_style wire/contact cache yes (the default) looks only at the neighbour-list
+    # pairs that can touch before the list is built again: a 600-segment coil falling into
+    # a box and piling up (neighbour rebuilds every few steps, skin 0.1 and 0.4) follows
+    # the same trajectory to the bit as with cache no (every pair of the list each step).
+    DECK = """
+units           lj
+atom_style      wire
+boundary        f f f
+newton          off
+region          box block -3 3 -3 3 -1 8
+create_box      1 box
+create_wire     1 loop 0 0 1 1.5 12.5 0.3 segment 0.2
+pair_style      wire/contact cache {cache}
+pair_coeff      * *
+neighbor        {skin} bin
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+fix             g all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1
+fix             w1 all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
+fix             w2 all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
+fix             w3 all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
+fix             w4 all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
+timestep        1e-4
+compute         c all wire/contacts
+thermo_style    custom step c_c[1]
+thermo          1000
+dump            d all custom 20000 {dump} id x y z vx vy vz
+run             20000
+"""
+
+    def test_same_trajectory_with_and_without_the_cache(self):
+        for skin in (0.1, 0.4):
+            runs = {}
+            for cache in ("yes", "no"):
+                r = run(full_precision(self.DECK.format(cache=cache, skin=skin, dump=f"pile_{cache}.dump"), "d"))
+                self.assertRanCleanly(r)
+                runs[cache] = r
+            contacts = runs["yes"].thermo()["c[1]"]
+            print(f"skin {skin}: wire–wire contacts at the end {contacts[-1]:.0f}, most {np.max(contacts):.0f}")
+            self.assertGreater(np.max(contacts), 100)  # it piles up
+            with_cache, without = (read_dump(r.path(f"pile_{c}.dump")) for r, c in ((runs["yes"], "yes"), (runs["no"], "no")))
+            for column in ("x", "y", "z", "vx", "vy", "vz"):
+                np.testing.assert_array_equal(with_cache[column], without[column], err_msg=f"skin {skin} {column}")
 
 
 class Warnings(DeckTestCase):

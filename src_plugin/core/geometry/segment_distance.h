@@ -56,4 +56,18 @@ struct SegmentClosestPoints {
 SegmentClosestPoints segment_closest_points(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                                             const Eigen::Vector3d& b0, const Eigen::Vector3d& b1);
 
+// Whether spherocylinders around segments A and B (radii r_a, r_b) can touch while each of
+// their end points moves by at most skin / 2 from where it is now: their midpoints then
+// move by at most skin / 2 and their half-lengths grow by at most skin / 2, so
+//     |m_A − m_B| < (|A| + |B|) / 2 + r_a + r_b + 2 skin
+// (m the midpoints) is necessary. skin = 0: whether their bounding spheres overlap now.
+// The wire–wire pair keeps the pairs of its neighbour list that pass this with the
+// neighbour skin, until the list is built again (LIGGGHTS rebuilds it before any atom
+// has moved skin / 2).
+inline bool segments_may_touch(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& b0,
+                               const Eigen::Vector3d& b1, double r_a, double r_b, double skin) {
+  const double reach = 0.5 * ((a1 - a0).norm() + (b1 - b0).norm()) + r_a + r_b + 2.0 * skin;
+  return (0.5 * (a0 + a1 - b0 - b1)).squaredNorm() < reach * reach;
+}
+
 }  // namespace wiregrain
