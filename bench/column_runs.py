@@ -1,4 +1,4 @@
-"""One column deck run for the benchmarks (bench/grain_models.py, bench/sleeping.py): the
+"""One column deck run for the benchmarks (bench/grain_models.py, bench/column_settings.py): the
 deck in a fresh directory with -var NAME VALUE pairs, timed; its final observables."""
 
 import argparse
