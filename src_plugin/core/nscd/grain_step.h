@@ -40,7 +40,7 @@
 //    points (partners fixed). Its end velocity is its new drift; up to v_sleep it stays
 //    asleep and its frozen points take the impulses found, so a new load is carried
 //    down to the floor in the step; above v_sleep it wakes (with the sleepers resting on
-//    it: a frozen point supporting them), starting from its drift, its frozen points
+//    it: a frozen point supporting them) from its drift at the step start, its frozen points
 //    become contact points and the step is solved again, until every sleeper stays;
 //  - wakes at the start of a step when the deck gave it a velocity or a moving wall can
 //    reach it within the step.
