@@ -280,69 +280,67 @@ void PairWireContact::compute(int eflag, int vflag) {
     }
   }
   for (const auto &[a, b] : candidates_) {
-    {
-      // positions as the neighbour list has them (ghosts are the right periodic images)
-      const int a1 = segment_next_[a], b1 = segment_next_[b];
-      const Eigen::Vector3d xa0 = as_vector(x[a]), xa1 = as_vector(segment_end_[a]);
-      const Eigen::Vector3d xb0 = as_vector(x[b]), xb1 = as_vector(segment_end_[b]);
-      const double r_a = radius[a], r_b = radius[b];
-      // bounding spheres of the two spherocylinders first (most pairs)
-      if (!wiregrain::segments_may_touch(xa0, xa1, xb0, xb1, r_a, r_b, 0.0)) continue;
-      evaluations++;
-      const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
-      const double overlap = r_a + r_b - cp.distance;
-      if (overlap <= 0.0) continue;
-      if (overlap > largest_ratio * 0.5 * (r_a + r_b)) {
-        largest_ratio = overlap / (0.5 * (r_a + r_b));
-        largest_overlap = overlap;
-        largest_radius = 0.5 * (r_a + r_b);
-        largest_a = tag[a];
-        largest_b = tag[b];
-      }
-
-      Eigen::Vector3d normal = cp.q - cp.p;
-      if (cp.distance > 0.0) normal /= cp.distance;
-      else {  // axes intersect: push apart perpendicular to both
-        normal = (xa1 - xa0).cross(xb1 - xb0);
-        if (normal.norm() == 0.0) normal = Eigen::Vector3d::UnitZ();
-        normal.normalize();
-      }
-      const Eigen::Vector3d va = (1.0 - cp.s) * as_vector(v[a]) + cp.s * as_vector(v[a1]);
-      const Eigen::Vector3d vb = (1.0 - cp.t) * as_vector(v[b]) + cp.t * as_vector(v[b1]);
-      const double m_a = rmass[a] + rmass[a1], m_b = rmass[b] + rmass[b1];
-
-      // l_w and r_w: the means of the two segments'
-      const wiregrain::SoftContactLaw law =
-          wiregrain::segment_contact_law(effective_modulus_[type[a]][type[b]], 0.5 * (rest[a] + rest[b]),
-                                         0.5 * (r_a + r_b), friction_[type[a]][type[b]]);
-
-      wiregrain::TangentialHistory h;
-      history_->lookup(a, tag[b], h);
-      // the setup force call of a run must not advance the springs (a restart would
-      // otherwise count the step twice): evaluate on a copy, keep the history
-      wiregrain::TangentialHistory advanced = h;
-      const wiregrain::SoftContactForce fc = wiregrain::soft_contact_force(
-          law, overlap, normal, vb - va, setup ? 0.0 : dt, m_a * m_b / (m_a + m_b), advanced);
-      history_->store(a, tag[b], setup ? h : advanced);
-
-      add_force(f[b], 1.0 - cp.t, fc.force);
-      add_force(f[b1], cp.t, fc.force);
-      add_force(f[a], -(1.0 - cp.s), fc.force);
-      add_force(f[a1], -cp.s, fc.force);
-      if (eflag)
-        eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
-                    0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
-      wiregrain::ContactRecord record;
-      record.kind = wiregrain::ContactKind::wire_wire;
-      record.a = tag[a];
-      record.b = tag[b];
-      record.point = cp.p + (r_a - 0.5 * overlap) * normal;  // the middle of the overlap
-      record.normal = normal;
-      record.force = fc.force;
-      record.overlap = overlap;
-      record.status = advanced.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
-      contacts_->add(record);
+    // positions as the neighbour list has them (ghosts are the right periodic images)
+    const int a1 = segment_next_[a], b1 = segment_next_[b];
+    const Eigen::Vector3d xa0 = as_vector(x[a]), xa1 = as_vector(segment_end_[a]);
+    const Eigen::Vector3d xb0 = as_vector(x[b]), xb1 = as_vector(segment_end_[b]);
+    const double r_a = radius[a], r_b = radius[b];
+    // bounding spheres of the two spherocylinders first (most pairs)
+    if (!wiregrain::segments_may_touch(xa0, xa1, xb0, xb1, r_a, r_b, 0.0)) continue;
+    evaluations++;
+    const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
+    const double overlap = r_a + r_b - cp.distance;
+    if (overlap <= 0.0) continue;
+    if (overlap > largest_ratio * 0.5 * (r_a + r_b)) {
+      largest_ratio = overlap / (0.5 * (r_a + r_b));
+      largest_overlap = overlap;
+      largest_radius = 0.5 * (r_a + r_b);
+      largest_a = tag[a];
+      largest_b = tag[b];
     }
+
+    Eigen::Vector3d normal = cp.q - cp.p;
+    if (cp.distance > 0.0) normal /= cp.distance;
+    else {  // axes intersect: push apart perpendicular to both
+      normal = (xa1 - xa0).cross(xb1 - xb0);
+      if (normal.norm() == 0.0) normal = Eigen::Vector3d::UnitZ();
+      normal.normalize();
+    }
+    const Eigen::Vector3d va = (1.0 - cp.s) * as_vector(v[a]) + cp.s * as_vector(v[a1]);
+    const Eigen::Vector3d vb = (1.0 - cp.t) * as_vector(v[b]) + cp.t * as_vector(v[b1]);
+    const double m_a = rmass[a] + rmass[a1], m_b = rmass[b] + rmass[b1];
+
+    // l_w and r_w: the means of the two segments'
+    const wiregrain::SoftContactLaw law =
+        wiregrain::segment_contact_law(effective_modulus_[type[a]][type[b]], 0.5 * (rest[a] + rest[b]),
+                                       0.5 * (r_a + r_b), friction_[type[a]][type[b]]);
+
+    wiregrain::TangentialHistory h;
+    history_->lookup(a, tag[b], h);
+    // the setup force call of a run must not advance the springs (a restart would
+    // otherwise count the step twice): evaluate on a copy, keep the history
+    wiregrain::TangentialHistory advanced = h;
+    const wiregrain::SoftContactForce fc = wiregrain::soft_contact_force(
+        law, overlap, normal, vb - va, setup ? 0.0 : dt, m_a * m_b / (m_a + m_b), advanced);
+    history_->store(a, tag[b], setup ? h : advanced);
+
+    add_force(f[b], 1.0 - cp.t, fc.force);
+    add_force(f[b1], cp.t, fc.force);
+    add_force(f[a], -(1.0 - cp.s), fc.force);
+    add_force(f[a1], -cp.s, fc.force);
+    if (eflag)
+      eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
+                  0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
+    wiregrain::ContactRecord record;
+    record.kind = wiregrain::ContactKind::wire_wire;
+    record.a = tag[a];
+    record.b = tag[b];
+    record.point = cp.p + (r_a - 0.5 * overlap) * normal;  // the middle of the overlap
+    record.normal = normal;
+    record.force = fc.force;
+    record.overlap = overlap;
+    record.status = advanced.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+    contacts_->add(record);
   }
   history_->end_step();
   contacts_->count_evaluations(evaluations);
