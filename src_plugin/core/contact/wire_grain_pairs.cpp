@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/common/errors.h"
 #include "core/common/validation.h"
@@ -42,11 +43,11 @@ void WireGrainPairCache::reset(const HeldGrains& held) {
   }
 }
 
-bool WireGrainPairCache::entry_valid(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
-                                     double radius) const {
-  if (e.epoch != epoch_ || e.radius != radius) return false;
-  const double moved = std::max((x0 - e.x0).norm(), (x1 - e.x1).norm());
-  return moved + grain_bound_ + e.grain_bound < skin_;  // false for NaN
+double WireGrainPairCache::motion_since_build(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                                              double radius) const {
+  if (e.epoch != epoch_ || e.radius != radius) return std::numeric_limits<double>::infinity();
+  const double moved = std::max((x0 - e.x0).norm(), (x1 - e.x1).norm()) + grain_bound_ + e.grain_bound;
+  return std::isnan(moved) ? std::numeric_limits<double>::infinity() : moved;
 }
 
 }  // namespace wiregrain

@@ -20,6 +20,10 @@
 // appears, disappears or changes its shape or bounding radius (a sphere that grew). An entry whose segment changed its radius is
 // rebuilt. Grains move only when fix nscd/polyhedra solves, so D is updated once per held
 // grain set (hold()); segments are checked at every visit.
+// Within a valid entry a pair is not evaluated while its gap at the build exceeds the
+// motion bound since, g_build > d_seg + D(now) + D(build): it is still apart (its surfaces
+// moved at most that far towards each other), as its evaluation would find. Superquadric
+// pairs are always evaluated: their contact solve starts from the last evaluation's.
 #pragma once
 
 #include <unordered_map>
@@ -54,8 +58,16 @@ class WireGrainPairCache {
   void for_each_pair(long key, const HeldGrains& held, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                      double wire_radius, Evaluate evaluate) {
     Entry& entry = entries_[key];
-    if (entry_valid(entry, x0, x1, wire_radius)) {
-      for (const Pair& p : entry.pairs) evaluate(held.index_of(p.tag), p.shift, 0.0);
+    const double moved = motion_since_build(entry, x0, x1, wire_radius);
+    if (moved < skin_) {  // the entry is valid
+      for (const Pair& p : entry.pairs) {
+        const int k = held.index_of(p.tag);
+        if (p.gap > moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
+          ++skipped_;
+          continue;
+        }
+        evaluate(k, p.shift, 0.0);
+      }
       return;
     }
     ++rebuilds_;
@@ -66,18 +78,22 @@ class WireGrainPairCache {
     entry.radius = wire_radius;
     entry.pairs.clear();
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
-      if (evaluate(k, shift, skin_) < skin_) entry.pairs.push_back({held.grain(k).tag, shift});
+      const double gap = evaluate(k, shift, skin_);
+      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap});
     });
   }
 
-  // segment entries built since construction, reference resets
+  // segment entries built since construction, reference resets, pair visits skipped as
+  // still apart
   long rebuilds() const { return rebuilds_; }
   long resets() const { return resets_; }
+  long skipped() const { return skipped_; }
 
  private:
   struct Pair {
     long tag;
     Eigen::Vector3d shift;
+    double gap;  // exact, at the entry's build
   };
   struct Entry {
     long epoch = -1;           // the reference it was built against
@@ -97,9 +113,12 @@ class WireGrainPairCache {
   double grain_bound_ = 0.0;
   std::unordered_map<long, Pose> reference_;  // grain tag → pose at the last reset
   std::unordered_map<long, Entry> entries_;   // segment key → entry
-  long rebuilds_ = 0, resets_ = 0;
+  long rebuilds_ = 0, resets_ = 0, skipped_ = 0;
 
-  bool entry_valid(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double radius) const;
+  // d_seg + D(now) + D(build) for an entry of the current reference with the same radius
+  // (valid while below the skin), else infinity
+  double motion_since_build(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                            double radius) const;
   void reset(const HeldGrains& held);
 };
 
