@@ -5,7 +5,7 @@
    fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
        [order forward|alternating|random] [seed 1] [warm_start yes|no] [restitution 0]
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
-       [convergence natural_map|increment|both]
+       [convergence natural_map|increment|both] [freeze 0]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
        [project 5e-5] [project_passes 20] [sleep 0 0.5]
        (README: every keyword, skin, manifold, method, ...)
