@@ -10,6 +10,11 @@ hit the sweep cap and the wall time.
 
     bench/nscd_pile_rest.py [--liggghts build/liggghts] [--steps 20000] [--every 2000]
         [--config "method gauss_seidel" "method subspace tolerance 1e-6" ...] [--side-by-side]
+        [--grains 500] [--half-width 5]
+
+--grains and --half-width change the pile: N grains created in the box of that half
+width less 1.1 (the heap of 60 of docs/core_nscd.md, "Sleeping grains": --grains 60
+--half-width 3 --config "sleep 1e-2 0.2").
 
 --side-by-side runs the settings at the same time (one process each; on a 2-core machine
 two settings share the machine equally, so their wall times compare).
@@ -32,15 +37,15 @@ units           lj
 atom_style      polyhedron
 atom_modify     map array sort 0 0.0
 boundary        f f f
-region          box block -5 5 -5 5 0 40
+region          box block -{w} {w} -{w} {w} 0 40
 create_box      1 box
-region          fill block -3.9 3.9 -3.9 3.9 1.1 38
-create_grains   1 500 random fill seed 2718
+region          fill block -{f} {f} -{f} {f} 1.1 38
+create_grains   1 {grains} random fill seed 2718
 fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra {config} &
                 wall 0 0 0 0 0 1 &
-                wall -5 0 0 1 0 0 wall_friction 0 wall 5 0 0 -1 0 0 wall_friction 0 &
-                wall 0 -5 0 0 1 0 wall_friction 0 wall 0 5 0 0 -1 0 wall_friction 0
+                wall -{w} 0 0 1 0 0 wall_friction 0 wall {w} 0 0 -1 0 0 wall_friction 0 &
+                wall 0 -{w} 0 0 1 0 wall_friction 0 wall 0 {w} 0 0 -1 0 wall_friction 0
 timestep        1e-3
 compute         rot all grain/rotation
 compute         ket all ke
@@ -54,10 +59,10 @@ run             {steps}
 """
 
 
-def start(liggghts, config, steps, every):
+def start(liggghts, config, steps, every, grains=500, half_width=5.0):
     work = tempfile.mkdtemp(prefix="wiregrain-pile-")
     with open(os.path.join(work, "in.pile"), "w") as f:
-        f.write(DECK.format(config=config, steps=steps, every=every))
+        f.write(DECK.format(config=config, steps=steps, every=every, grains=grains, w=half_width, f=half_width - 1.1))
     return time.time(), subprocess.Popen([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
                                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
 
@@ -91,14 +96,17 @@ def main():
     parser.add_argument("--every", type=int, default=2000)
     parser.add_argument("--config", nargs="*", default=["method gauss_seidel", "method subspace"])
     parser.add_argument("--side-by-side", action="store_true")
+    parser.add_argument("--grains", type=int, default=500)
+    parser.add_argument("--half-width", type=float, default=5.0)
     args = parser.parse_args()
     if args.side_by_side:
-        started = [start(args.liggghts, c, args.steps, args.every) for c in args.config]
+        started = [start(args.liggghts, c, args.steps, args.every, args.grains, args.half_width) for c in args.config]
         for config, s in zip(args.config, started):
             report(config, *finish(config, s))
     else:
         for config in args.config:
-            report(config, *finish(config, start(args.liggghts, config, args.steps, args.every)))
+            report(config, *finish(config, start(args.liggghts, config, args.steps, args.every, args.grains,
+                                                  args.half_width)))
 
 
 if __name__ == "__main__":
