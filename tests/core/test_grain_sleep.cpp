@@ -99,6 +99,15 @@ ShapeLibrary cube_library() {
   return library;
 }
 
+// Two cubes stacked on a frictionless floor, run for 60 steps (they fall asleep after 50).
+Scene sleeping_pair(const ShapeLibrary& library, const GrainStepOptions& options) {
+  Scene scene;
+  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
+  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
+  scene.run(library, options, 60);
+  return scene;
+}
+
 }  // namespace
 
 // Three cubes stacked on the floor fall asleep: nothing is detected or solved any more,
@@ -293,10 +302,7 @@ TEST(GrainSleep, NoSleepOnAnAwakeSupport) {
 TEST(GrainSleep, GrainsRestingOnAWokenGrainWakeWithIt) {
   const ShapeLibrary library = cube_library();
   const GrainStepOptions options = options_sleeping(1e-3);
-  Scene scene;
-  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
-  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
-  scene.run(library, options, 60);
+  Scene scene = sleeping_pair(library, options);
   ASSERT_EQ(scene.last.stats.sleeping, 2);
   scene.grains[0].force.x() = 0.8 * kMass * kG;
   scene.run(library, options, 1);
@@ -314,10 +320,7 @@ TEST(GrainSleep, GrainsRestingOnAWokenGrainWakeWithIt) {
 TEST(GrainSleep, PullOnTheTopCubeIsPassedDownAndWakesThePair) {
   const ShapeLibrary library = cube_library();
   const GrainStepOptions options = options_sleeping(1e-3);
-  Scene scene;
-  scene.grains = {cube(1, 0.0, 0.5), cube(2, 0.0, 1.5)};
-  scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.0));
-  scene.run(library, options, 60);
+  Scene scene = sleeping_pair(library, options);
   ASSERT_EQ(scene.last.stats.sleeping, 2);
   scene.grains[1].force.x() = 0.3 * kMass * kG;
   scene.run(library, options, 1);

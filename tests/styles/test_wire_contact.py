@@ -20,6 +20,32 @@ create_box      2 box
 """
 
 
+# A wire coiled above a floor (loop of radius 1.5, pitch 0.3, segments 0.2), falling into a
+# 4 x 4 box of frictionless side walls: the piles of Pile and PairCache. {top}: the box
+# height, {turns}: the coil's turns, {pair}: pair_style options, {skin}: neighbour skin.
+COIL = """
+units           lj
+atom_style      wire
+boundary        f f f
+newton          off
+region          box block -3 3 -3 3 -1 {top}
+create_box      1 box
+create_wire     1 loop 0 0 1 1.5 {turns} 0.3 segment 0.2
+pair_style      wire/contact {pair}
+pair_coeff      * *
+neighbor        {skin} bin
+fix             el all wire/elastic
+fix             int all nve/gear forces velocity
+fix             g all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1
+fix             w1 all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
+fix             w2 all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
+fix             w3 all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
+fix             w4 all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
+timestep        1e-4
+compute         c all wire/contacts
+"""
+
 def bead_mass(rho=0.5, r=0.1, l=0.2):
     return rho * math.pi * r * r * l
 
@@ -345,28 +371,7 @@ class Pile(DeckTestCase):
     # A 2000-segment wire coiled above a floor falls into a box and piles up; the segments
     # never pass through each other: the largest overlap stays below half the wire radius.
     def test_pile_does_not_pass_through_itself(self):
-        deck = """
-units           lj
-atom_style      wire
-boundary        f f f
-newton          off
-region          box block -3 3 -3 3 -1 20
-create_box      1 box
-create_wire     1 loop 0 0 1 1.5 42.5 0.3 segment 0.2
-pair_style      wire/contact
-pair_coeff      * *
-neighbor        0.1 bin
-fix             el all wire/elastic
-fix             int all nve/gear forces velocity
-fix             g all gravity 1.0 vector 0 0 -1
-fix             floor all wire/wall plane 0 0 0 0 0 1
-fix             w1 all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
-fix             w2 all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
-fix             w3 all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
-fix             w4 all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
-timestep        1e-4
-compute         c all wire/contacts
-compute         zmax all reduce max z
+        deck = COIL.format(top=20, turns=42.5, pair="", skin=0.1) + """compute         zmax all reduce max z
 thermo_style    custom step atoms ke c_c[1] c_c[3] c_zmax f_floor[2]
 thermo          1000
 run             60000
@@ -394,28 +399,7 @@ class PairCache(DeckTestCase):
     # pairs that can touch before the list is built again: a 600-segment coil falling into
     # a box and piling up (neighbour rebuilds every few steps, skin 0.1 and 0.4) follows
     # the same trajectory to the bit as with cache no (every pair of the list each step).
-    DECK = """
-units           lj
-atom_style      wire
-boundary        f f f
-newton          off
-region          box block -3 3 -3 3 -1 8
-create_box      1 box
-create_wire     1 loop 0 0 1 1.5 12.5 0.3 segment 0.2
-pair_style      wire/contact cache {cache}
-pair_coeff      * *
-neighbor        {skin} bin
-fix             el all wire/elastic
-fix             int all nve/gear forces velocity
-fix             g all gravity 1.0 vector 0 0 -1
-fix             floor all wire/wall plane 0 0 0 0 0 1
-fix             w1 all wire/wall plane -2 0 0 1 0 0 mu_s 0 mu_d 0
-fix             w2 all wire/wall plane 2 0 0 -1 0 0 mu_s 0 mu_d 0
-fix             w3 all wire/wall plane 0 -2 0 0 1 0 mu_s 0 mu_d 0
-fix             w4 all wire/wall plane 0 2 0 0 -1 0 mu_s 0 mu_d 0
-timestep        1e-4
-compute         c all wire/contacts
-thermo_style    custom step c_c[1]
+    DECK = COIL.format(top=8, turns=12.5, pair="cache {cache}", skin="{skin}") + """thermo_style    custom step c_c[1]
 thermo          1000
 dump            d all custom 20000 {dump} id x y z vx vy vz
 run             20000
