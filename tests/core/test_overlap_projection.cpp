@@ -30,7 +30,7 @@ GrainState grain_at(long tag, int shape, const Vector3d& position, double mass, 
 }
 
 // A problem listing one (open) point for each pair (a, b) given: only the pairs, the body
-// indices and h matter to the projection.
+// indices, the normal and h matter to the projection.
 GrainStepProblem problem_of(const std::vector<GrainState>& grains, const std::vector<std::pair<int, int>>& pairs) {
   GrainStepProblem p;
   p.step.time_step = kH;
@@ -39,6 +39,9 @@ GrainStepProblem problem_of(const std::vector<GrainState>& grains, const std::ve
     c.constraint.body_a = a >= 0 ? a : -1;
     c.constraint.body_b = b;
     c.pair = {a >= 0 ? grains[a].tag : long(a), grains[b].tag};  // a < 0: −(wall + 1)
+    // the normal: along the centres (a wall: its own normal, not read)
+    c.frame = Eigen::Matrix3d::Identity();
+    if (a >= 0) c.frame.col(0) = (grains[b].position - grains[a].position).normalized();
     p.points.push_back(c);
   }
   return p;
@@ -186,6 +189,38 @@ TEST(OverlapProjection, AColumnOfOverlappingSpheresIsResolvedByThePasses) {
   EXPECT_GE(z[2] - z[1] - 1.0, -tolerance * 0.5 * (1 + 1e-9));
   EXPECT_LE(stats.max_overlap_after, tolerance);
   EXPECT_GT(stats.passes, 1);
+}
+
+// A cube resting face on face 1e-5 inside the cube below it (τ = 1e-4), turning about the
+// vertical by 1e-3 in the step: the separation along the start normal z settles the pair
+// without GJK, and its overlap is the exact one, 1e-5 / R; a cube turning about x by 0.01
+// dips an edge 0.5 (cos + sin − 1) ≈ 5e-3 deep: the bound cannot settle it, GJK does and
+// the pair is pushed to ½ τ R (then the bound settles it).
+TEST(OverlapProjection, PairsWithinTheToleranceAreSettledByTheSeparationAlongTheirNormal) {
+  ShapeLibrary library;
+  const int cube = library.add(ConvexShape::cube(1.0, 0.0));
+  const double size = library[cube].bounding_radius, tolerance = 1e-4;
+  std::vector<GrainState> grains = {grain_at(1, cube, Vector3d::Zero(), 1.0, 1.0 / 6.0),
+                                    grain_at(2, cube, Vector3d(0.2, 0.1, 1.0 - 1e-5), 1.0, 1.0 / 6.0)};
+  GrainStepResult turning = at_rest(grains);
+  turning.angular_velocities[1] = Vector3d(0, 0, 1.0);  // 1e-3 rad in the step
+  GrainStepProblem problem = problem_of(grains, {{0, 1}});
+  problem.points[0].frame.col(0) = Vector3d::UnitZ();  // the faces' normal
+  OverlapProjectionStats stats;
+  std::vector<Vector3d> c = project_overlaps(grains, library, {}, problem, turning, 1.0, tolerance, 10, &stats);
+  EXPECT_EQ(stats.bounded, 1);
+  EXPECT_EQ(stats.projections, 0);
+  EXPECT_NEAR(stats.max_overlap_before, 1e-5 / size, 1e-12);
+  for (const Vector3d& k : c) EXPECT_EQ(k, Vector3d::Zero());
+
+  grains[1].position = Vector3d(0.0, 0.0, 1.0);
+  turning.angular_velocities[1] = Vector3d(10.0, 0, 0);  // 0.01 rad
+  c = project_overlaps(grains, library, {}, problem_of(grains, {{0, 1}}), turning, 1.0, tolerance, 10, &stats);
+  const double dip = 0.5 * (std::cos(0.01) + std::sin(0.01) - 1.0);
+  EXPECT_EQ(stats.projections, 1);
+  EXPECT_EQ(stats.bounded, 1);  // the check after the push, in the second pass
+  EXPECT_NEAR(stats.max_overlap_before, dip / size, 1e-9);
+  EXPECT_NEAR(c[1].z() - c[0].z(), dip - 0.5 * tolerance * size, 1e-9);
 }
 
 TEST(OverlapProjection, BadArgumentsAreRejected) {

@@ -430,8 +430,8 @@ std::vector<SatEdge> sat_edges(const PosedShape& P, double sign) {
     SatEdge& e = out[i];
     e.point = P.vertices()[edges[i][0]];
     e.dir = P.vertices()[edges[i][1]] - e.point;
-    e.n1 = sign * P.face_normals()[faces[i][0]];
-    e.n2 = sign * P.face_normals()[faces[i][1]];
+    e.n1 = sign * P.face_normal(faces[i][0]);
+    e.n2 = sign * P.face_normal(faces[i][1]);
     e.n2_x_n1 = e.n2.cross(e.n1);
   }
   return out;
@@ -450,13 +450,13 @@ SatAxis sat_polytopes(const PosedShape& A, const PosedShape& B) {
       best.normal = n;
     }
   };
-  for (std::size_t f = 0; f < A.face_normals().size(); ++f) {
-    const Vector3d& n = A.face_normals()[f];
-    consider(A.face_offsets()[f] + support_value(B, -n), n);
+  for (std::size_t f = 0; f < A.shape().faces().size(); ++f) {
+    const Vector3d n = A.face_normal(f);
+    consider(A.face_offset(f) + support_value(B, -n), n);
   }
-  for (std::size_t g = 0; g < B.face_normals().size(); ++g) {
-    const Vector3d& m = B.face_normals()[g];
-    consider(support_value(A, -m) + B.face_offsets()[g], -m);
+  for (std::size_t g = 0; g < B.shape().faces().size(); ++g) {
+    const Vector3d m = B.face_normal(g);
+    consider(support_value(A, -m) + B.face_offset(g), -m);
   }
   // Edge pairs: the arcs (a1, a2) of A and (−b1, −b2) of B must cross (the test of
   // arcs_cross, unrolled so that half the pairs stop after two dot products). For a
@@ -528,17 +528,17 @@ SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end, dou
     }
     return axis;
   }
-  for (std::size_t f = 0; f < P.face_normals().size(); ++f) {
-    const Vector3d& n = P.face_normals()[f];
-    consider(P.face_offsets()[f] + segment_support(end, -n), n);
+  for (std::size_t f = 0; f < P.shape().faces().size(); ++f) {
+    const Vector3d n = P.face_normal(f);
+    consider(P.face_offset(f) + segment_support(end, -n), n);
   }
   const Vector3d s = end[1] - end[0];
   if (s.squaredNorm() > 0.0) {
     const auto faces = edge_faces(P.shape());
     const auto& edges = P.shape().edges();
     for (std::size_t i = 0; i < edges.size(); ++i) {
-      const Vector3d& n1 = P.face_normals()[faces[i][0]];
-      const Vector3d& n2 = P.face_normals()[faces[i][1]];
+      const Vector3d n1 = P.face_normal(faces[i][0]);
+      const Vector3d n2 = P.face_normal(faces[i][1]);
       if (n1.dot(s) * n2.dot(s) > 1e-14 * s.squaredNorm()) continue;
       const Vector3d dir = P.vertices()[edges[i][1]] - P.vertices()[edges[i][0]];
       Vector3d axis = dir.cross(s);
@@ -578,6 +578,7 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
   const ConvexShape& shape = P.shape();
   const auto& faces = shape.faces();
   const auto& masks = shape.face_vertex_masks();
+  const Vector3d body_n = P.rotation().transpose() * n;  // the faces' cosines in the body frame
   const auto best_face_at_v = [&](bool whole_support_set, double& best_cos) {
     int best = -1;
     best_cos = -2.0;
@@ -590,7 +591,7 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
           for (int i : support_set) contains = contains && face_has_vertex(faces[f], i);
       }
       if (!contains) continue;
-      const double c = P.face_normals()[f].dot(n);
+      const double c = faces[f].normal.dot(body_n);
       if (c > best_cos) {
         best_cos = c;
         best = f;
@@ -666,8 +667,8 @@ Vector3d feature_point_on_line(const PosedShape& P, const ContactFeature& f, con
                                const Vector3d& n) {
   switch (f.kind) {
     case FeatureKind::face: {
-      const Vector3d& N = P.face_normals()[f.index];
-      return x + ((P.face_offsets()[f.index] - N.dot(x)) / N.dot(n)) * n;
+      const Vector3d N = P.face_normal(f.index);
+      return x + ((P.face_offset(f.index) - N.dot(x)) / N.dot(n)) * n;
     }
     case FeatureKind::edge: {
       const auto& e = P.shape().edges()[f.index];
@@ -688,7 +689,7 @@ std::vector<Vector2d> face_polygon(const PosedShape& P, int face, const ContactF
   std::vector<Vector2d> poly;
   poly.reserve(loop.size());
   for (int i : loop) poly.push_back(frame.project(P.vertices()[i]));
-  if (P.face_normals()[face].dot(frame.n) < 0.0) std::reverse(poly.begin(), poly.end());
+  if (P.face_normal(face).dot(frame.n) < 0.0) std::reverse(poly.begin(), poly.end());
   return poly;
 }
 
@@ -841,12 +842,12 @@ std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& f
     std::vector<Vector2d> poly =
         clip_polygon(face_polygon(A, fa.index, frame), face_polygon(B, fb.index, frame), tol);
     poly = convex_hull_2d(poly, tol);
-    const Vector3d& Na = A.face_normals()[fa.index];
-    const Vector3d& Nb = B.face_normals()[fb.index];
+    const Vector3d Na = A.face_normal(fa.index);
+    const Vector3d Nb = B.face_normal(fb.index);
     for (const auto& p : poly) {
       const Vector3d x = frame.lift(p);
-      out.push_back({frame.onto_plane(x, Na, A.face_offsets()[fa.index]),
-                     frame.onto_plane(x, Nb, B.face_offsets()[fb.index]), p});
+      out.push_back({frame.onto_plane(x, Na, A.face_offset(fa.index)),
+                     frame.onto_plane(x, Nb, B.face_offset(fb.index)), p});
     }
     return out;
   }
@@ -870,7 +871,7 @@ std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& f
     for (double s : params) {
       const Vector3d on_edge = e0 + s * (e1 - e0);
       const Vector3d on_face =
-          frame.onto_plane(on_edge, F.face_normals()[face], F.face_offsets()[face]);
+          frame.onto_plane(on_edge, F.face_normal(face), F.face_offset(face));
       if (edge_face)
         out.push_back({on_edge, on_face, frame.project(on_edge)});
       else
@@ -995,14 +996,14 @@ void add_near_vertices(const PosedShape& P, const PosedShape& Q, bool p_is_a, co
       // inside (or on) Q's core: the face of Q whose plane is nearest
       int face = 0;
       double depth = kInf;
-      for (int f = 0; f < static_cast<int>(Q.face_normals().size()); ++f) {
-        const double d = Q.face_offsets()[f] - Q.face_normals()[f].dot(v);
+      for (int f = 0; f < static_cast<int>(Q.shape().faces().size()); ++f) {
+        const double d = Q.shape().faces()[f].offset - Q.face_normal(f).dot(v - Q.position());
         if (d < depth) {
           depth = d;
           face = f;
         }
       }
-      normal = -Q.face_normals()[face];
+      normal = -Q.face_normal(face);
       on_q = v - depth * normal;
     }
     // the vertex–vertex point of B's pass may repeat one of A's pass
@@ -1043,13 +1044,6 @@ PosedShape::PosedShape(const ConvexShape& shape, const Vector3d& position,
     core_radius_ = std::max(core_radius_, v.norm());
     vertices_.push_back(rotation_ * v + position_);
   }
-  face_normals_.reserve(shape.faces().size());
-  face_offsets_.reserve(shape.faces().size());
-  for (const auto& f : shape.faces()) {
-    const Vector3d n = rotation_ * f.normal;
-    face_normals_.push_back(n);
-    face_offsets_.push_back(f.offset + n.dot(position_));
-  }
 }
 
 int PosedShape::support_vertex(const Vector3d& direction) const {
@@ -1067,6 +1061,14 @@ int PosedShape::support_vertex(const Vector3d& direction) const {
 
 // ---------------------------------------------------------------------------------------
 // Core distance
+
+double lowest_core_point(const ConvexShape& shape, const Vector3d& position, const Eigen::Quaterniond& orientation,
+                         const Vector3d& n) {
+  const Vector3d body_n = orientation.normalized().conjugate() * n;
+  double lowest = kInf;
+  for (const Vector3d& v : shape.vertices()) lowest = std::min(lowest, body_n.dot(v));
+  return lowest + n.dot(position);
+}
 
 CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
                            double early_exit_distance) {

@@ -78,10 +78,11 @@ class PosedShape {
   double core_radius() const { return core_radius_; }
 
   // world-frame core: vertex i, unit outward normal and plane offset of face f
-  // (normal · x = offset on the face)
+  // (normal · x = offset on the face). The faces are turned when asked for: most pairs
+  // need those at one vertex only (posing them all was half of the posing time).
   const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
-  const std::vector<Eigen::Vector3d>& face_normals() const { return face_normals_; }
-  const std::vector<double>& face_offsets() const { return face_offsets_; }
+  Eigen::Vector3d face_normal(int f) const { return rotation_ * shape_->faces()[f].normal; }
+  double face_offset(int f) const { return shape_->faces()[f].offset + face_normal(f).dot(position_); }
 
   Eigen::Vector3d to_world(const Eigen::Vector3d& body_point) const {
     return rotation_ * body_point + position_;
@@ -96,8 +97,6 @@ class PosedShape {
   Eigen::Matrix3d rotation_;
   double core_radius_ = 0.0;
   std::vector<Eigen::Vector3d> vertices_;
-  std::vector<Eigen::Vector3d> face_normals_;
-  std::vector<double> face_offsets_;
 };
 
 // How the signed core distance was obtained.
@@ -124,6 +123,14 @@ struct CoreDistance {
   int gjk_iterations = 0;
   bool overlapping() const { return distance <= 0.0; }
 };
+
+// min over the core's vertices of n · x, the shape placed at (position, orientation)
+// without posing it (n turned into the body frame). For two cores and any unit n,
+//     lowest_core_point(B, n) + lowest_core_point(A, −n) ≤ signed core distance of A and B
+// (the separation along n; equal for the optimal n, the signed distance of two convex sets
+// being their largest separation over all axes).
+double lowest_core_point(const ConvexShape& shape, const Eigen::Vector3d& position,
+                         const Eigen::Quaterniond& orientation, const Eigen::Vector3d& n);
 
 // Distance of the cores of a and b. early_exit_distance: if > 0, GJK stops as soon as its
 // lower bound proves distance > early_exit_distance (method gjk_far); 0 or +inf: always

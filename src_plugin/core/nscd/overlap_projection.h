@@ -11,6 +11,9 @@
 //  2. for every pair that had contact points in the step (open ones too: every pair whose
 //     gap could close within it), the gap at those poses: GJK/SAT core distance minus the
 //     sweep radii, a wall by the support point along −n (walls moved by h v_wall);
+//     a pair whose separation along its start normal n at those poses (the cores'
+//     supports along n: a lower bound of the gap, exact for a wall) leaves it within
+//     the tolerance is settled without GJK; it counts with that bound as its overlap;
 //  3. while a pair overlaps by more than tolerance × its size (the smaller bounding radius
 //     of its grains), a Gauss–Seidel pass over the pairs: a pair deeper than that is
 //     pushed apart along its normal n, inversely to the masses (a wall and a sleeping
@@ -36,6 +39,7 @@ namespace wiregrain {
 
 struct OverlapProjectionStats {
   int pairs = 0;                 // pairs checked
+  int bounded = 0;               // checks settled by the separation bound, without GJK
   int projections = 0;           // pair corrections applied (over all passes)
   int passes = 0;
   double max_overlap_before = 0.0;  // deepest predicted overlap relative to its pair's size
