@@ -409,15 +409,15 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
         !g.load.allFinite() || !g.load_moment.allFinite())
       throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) +
                                           ": quiet time must be >= 0 and finite, the drift and load finite");
-    const std::string name = "grain step: grain " + std::to_string(g.tag) + ": ";
+    const auto name = [&g] { return "grain step: grain " + std::to_string(g.tag) + ": "; };  // on failure only
     if (g.shape < 0 || g.shape >= library.size())
-      throw InvalidArgument("grains", name + "shape index " + std::to_string(g.shape) + " not in the library");
+      throw InvalidArgument("grains", name() + "shape index " + std::to_string(g.shape) + " not in the library");
     if (!(g.mass > 0.0) || !std::isfinite(g.mass) || !(g.inertia.minCoeff() > 0.0) || !g.inertia.allFinite())
-      throw InvalidArgument("grains", name + "mass and principal moments must be > 0 and finite");
+      throw InvalidArgument("grains", name() + "mass and principal moments must be > 0 and finite");
     if (!(g.position.allFinite() && g.orientation.coeffs().allFinite() && g.velocity.allFinite() &&
           g.angular_velocity.allFinite() && g.force.allFinite() && g.torque.allFinite()))
-      throw InvalidArgument("grains", name + "non-finite state");
-    if (std::fabs(g.orientation.norm() - 1.0) > 1e-9) throw InvalidArgument("grains", name + "orientation is not a unit quaternion");
+      throw InvalidArgument("grains", name() + "non-finite state");
+    if (std::fabs(g.orientation.norm() - 1.0) > 1e-9) throw InvalidArgument("grains", name() + "orientation is not a unit quaternion");
   }
   for (const PlaneWall& w : walls)
     if (!(w.point.allFinite() && w.velocity.allFinite()) || !(std::fabs(w.normal.norm() - 1.0) <= 1e-9) ||

@@ -18,14 +18,18 @@ namespace {
 
 std::string contact_label(int c) { return "contact " + std::to_string(c) + ": "; }
 
-void check_finite(bool finite, const char* argument, const std::string& what) {
-  if (!finite) throw InvalidArgument(argument, what + " has a non-finite entry");
+// The checks run for every body and contact of every step: `what()` (the subject of the
+// message) is built only when a check fails.
+template <class What>
+void check_finite(bool finite, const char* argument, const What& what) {
+  if (!finite) throw InvalidArgument(argument, std::string(what()) + " has a non-finite entry");
 }
 
 // "<what> must be a finite number >= 0, got <value>" under the keyword `argument`.
-void check_nonnegative(double value, const char* argument, const std::string& what) {
+template <class What>
+void check_nonnegative(double value, const char* argument, const What& what) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
-    throw InvalidArgument(argument, what + " must be a finite number >= 0, got " +
+    throw InvalidArgument(argument, std::string(what()) + " must be a finite number >= 0, got " +
                                         format_number(value));
   }
 }
@@ -206,7 +210,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
                                               " contacts");
     }
     for (int c = 0; c < n; ++c) {
-      check_finite(warm_start[c].allFinite(), "warm_start", contact_label(c) + "impulse");
+      check_finite(warm_start[c].allFinite(), "warm_start", [&] { return contact_label(c) + "impulse"; });
       if (!warm_start[c].isZero(0.0)) {
         result.impulses[c] = warm_start[c];
         op.add_impulse(c, warm_start[c]);
@@ -387,13 +391,13 @@ class BodyContactOperator final : public ContactOperator {
     inverse_mass_.resize(body_count);
     for (int b = 0; b < body_count; ++b) {
       const NscdBody& body = step.bodies[b];
-      const std::string label = "body " + std::to_string(b) + ": ";
-      check_nonnegative(body.inverse_mass, "bodies", label + "inverse mass");
-      check_finite(body.inverse_inertia.allFinite(), "bodies", label + "inverse inertia");
+      const auto label = [b](const char* what) { return "body " + std::to_string(b) + ": " + what; };
+      check_nonnegative(body.inverse_mass, "bodies", [&] { return label("inverse mass"); });
+      check_finite(body.inverse_inertia.allFinite(), "bodies", [&] { return label("inverse inertia"); });
       check_finite(body.velocity_begin.allFinite() && body.angular_velocity_begin.allFinite(),
-                     "bodies", label + "start velocity");
+                   "bodies", [&] { return label("start velocity"); });
       check_finite(body.velocity_free.allFinite() && body.angular_velocity_free.allFinite(),
-                     "bodies", label + "free velocity");
+                   "bodies", [&] { return label("free velocity"); });
       velocities_[b] << body.velocity_free, body.angular_velocity_free;
       inverse_mass_[b].setZero();
       inverse_mass_[b].topLeftCorner<3, 3>().diagonal().setConstant(body.inverse_mass);
@@ -406,23 +410,23 @@ class BodyContactOperator final : public ContactOperator {
     double norm_q_squared = 0.0;
     for (int c = 0; c < n; ++c) {
       const NscdContact& contact = step.contacts[c];
-      const std::string label = contact_label(c);
+      const auto label = [c](const char* what) { return contact_label(c) + what; };
       for (int body : {contact.body_a, contact.body_b}) {
         if (body < -1 || body >= body_count) {
-          throw InvalidArgument("contacts", label + "body index " + std::to_string(body) +
+          throw InvalidArgument("contacts", label("body index ") + std::to_string(body) +
                                                 " out of range [-1, " +
                                                 std::to_string(body_count) + ")");
         }
       }
       if (contact.body_a == contact.body_b && contact.body_a >= 0) {
-        throw InvalidArgument("contacts", label + "both sides are body " +
+        throw InvalidArgument("contacts", label("both sides are body ") +
                                               std::to_string(contact.body_a));
       }
-      check_nonnegative(contact.friction, "contacts", label + "friction");
-      check_finite(std::isfinite(contact.gap), "contacts", label + "gap");
-      check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(),
-                     "contacts", label + "Jacobian");
-      check_finite(contact.velocity_offset.allFinite(), "contacts", label + "velocity offset");
+      check_nonnegative(contact.friction, "contacts", [&] { return label("friction"); });
+      check_finite(std::isfinite(contact.gap), "contacts", [&] { return label("gap"); });
+      check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(), "contacts",
+                   [&] { return label("Jacobian"); });
+      check_finite(contact.velocity_offset.allFinite(), "contacts", [&] { return label("velocity offset"); });
 
       Link& link = links_[c];
       link.body_a = contact.body_a;
@@ -447,7 +451,7 @@ class BodyContactOperator final : public ContactOperator {
                    link.jacobian_b.rightCols<3>() * body.angular_velocity_begin;
       }
       if (!(W(0, 0) > 0.0)) {
-        throw InvalidArgument("contacts", label + "Delassus block has W_nn = " +
+        throw InvalidArgument("contacts", label("Delassus block has W_nn = ") +
                                               format_number(W(0, 0)) +
                                               " (both sides of infinite mass, or a zero normal row)");
       }
@@ -680,11 +684,11 @@ void ReducedProblem::validate() const {
     throw InvalidArgument("mu", "mu has " + std::to_string(mu.size()) + " entries for " +
                                     std::to_string(n) + " contacts");
   }
-  check_finite(q.allFinite(), "q", "q");
+  check_finite(q.allFinite(), "q", [] { return "q"; });
   for (int c = 0; c < n; ++c) {
-    check_nonnegative(mu[c], "mu", contact_label(c) + "friction");
+    check_nonnegative(mu[c], "mu", [&] { return contact_label(c) + "friction"; });
     for (const BlockSparseMatrix3::Entry& e : W.row(c)) {
-      check_finite(e.block.allFinite(), "W", contact_label(c) + "a block of W");
+      check_finite(e.block.allFinite(), "W", [&] { return contact_label(c) + "a block of W"; });
     }
     const Eigen::Matrix3d* diagonal = W.find(c, c);
     if (diagonal == nullptr || !((*diagonal)(0, 0) > 0.0)) {
