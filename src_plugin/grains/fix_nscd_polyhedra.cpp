@@ -160,6 +160,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     } else if (key == "sleep") {
       core_->options.sleep.speed = args.value_nonnegative(key);
       core_->options.sleep.time = args.value_positive(key);
+    } else if (key == "detection") {
+      const std::string v = args.value_word(key);
+      if (v != "shared" && v != "replicated") args.fail("value of 'detection' must be shared or replicated, got '" + v + "'");
+      share_detection_ = v == "shared";
     } else if (key == "manifold") {
       const std::string v = args.value_word(key);
       if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
@@ -450,8 +454,14 @@ void FixNSCDPolyhedra::solve_step() {
   check_lost_grains((bigint)grains.size());
   wiregrain::GrainStepProblem problem;
   try {
+    // detection shared: each rank computes a block of the candidate pairs, the blocks are
+    // all-gathered (the same problem on every rank, to the bit)
+    wiregrain::NarrowPhaseShare share;
+    share.worker = comm->me;
+    share.workers = comm->nprocs;
+    share.all_gather = [this](const std::vector<double> &mine) { return wiregrain_lmp::all_gather_records(world, mine); };
     problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses,
-                                             core_->pairs.get());
+                                             core_->pairs.get(), share_detection_ ? &share : nullptr);
   } catch (const std::exception &e) {  // the same on every rank (replicated solve)
     solve_failed(e);
   }

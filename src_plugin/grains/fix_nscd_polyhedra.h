@@ -7,7 +7,7 @@
        [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
        [convergence natural_map|increment|both] [freeze 0]
        [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
-       [project 5e-5] [project_passes 20] [sleep 0 0.5]
+       [project 5e-5] [project_passes 20] [sleep 0 0.5] [detection shared|replicated]
        (README: every keyword, skin, manifold, method, ...)
        [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
        [wall_fix ID [wall_friction mu]] ...
@@ -44,10 +44,12 @@
    v_sleep (|v| + |ω| R) for t_sleep are held and drop out of detection and solve among
    themselves until something moves them (core/nscd/grain_step.h, "Sleeping").
 
-   MPI: every rank gathers all grains of the group, detects and solves the same contact
-   problem in the same order and keeps its own grains' results (replicated solve), so 1
-   and N ranks give the same state to the last bit; the cost of the solve does not
-   shrink with more ranks.
+   MPI: every rank gathers all grains of the group, solves the same contact problem in
+   the same order and keeps its own grains' results (replicated solve), so 1 and N ranks
+   give the same state to the last bit; the cost of the solve does not shrink with more
+   ranks. The contact detection is shared (detection shared, the default): each rank
+   computes the contact points of a block of the candidate pairs and the blocks are
+   all-gathered, the same points to the bit; detection replicated: every rank computes all.
 
    Outputs: vector [sweeps, residual, contact points, largest overlap at the step start,
    largest predicted penetration, steps that hit the iteration cap, then for each wall
@@ -150,6 +152,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double largest_overlap_ = 0.0;            // over all steps since the fix was made
   double project_tolerance_;                // keyword project (0: off)
   int project_passes_;
+  bool share_detection_ = true;             // keyword detection shared|replicated
   long projections_ = 0;                    // pair corrections since the fix was made
   double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
   double stick_solves_[2] = {0.0, 0.0};     // method subspace: tried, kept, since the fix was made

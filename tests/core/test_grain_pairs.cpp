@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
@@ -44,6 +47,40 @@ std::vector<PlaneWall> box_walls(double half) {
   return walls;
 }
 
+// The step assembled by `workers` workers on threads with the detection shared
+// (NarrowPhaseShare): all_gather joins their blocks in worker order; each worker has its
+// own pair cache, as each MPI rank has.
+std::vector<GrainStepProblem> assemble_shared(int workers, const std::vector<GrainState>& grains,
+                                              const ShapeLibrary& library, const std::vector<PlaneWall>& walls,
+                                              double h, const GrainStepOptions& options,
+                                              const GrainImpulseMemory& memory, std::vector<GrainPairCache>& caches) {
+  std::mutex mutex;
+  std::condition_variable all_arrived;
+  std::vector<std::vector<double>> blocks(workers);
+  int arrived = 0;
+  std::vector<GrainStepProblem> problems(workers);
+  std::vector<std::thread> threads;
+  for (int w = 0; w < workers; ++w)
+    threads.emplace_back([&, w] {
+      NarrowPhaseShare share;
+      share.worker = w;
+      share.workers = workers;
+      share.all_gather = [&, w](const std::vector<double>& mine) {
+        std::unique_lock<std::mutex> lock(mutex);
+        blocks[w] = mine;
+        ++arrived;
+        all_arrived.notify_all();
+        all_arrived.wait(lock, [&] { return arrived == workers; });
+        std::vector<double> all;
+        for (const std::vector<double>& b : blocks) all.insert(all.end(), b.begin(), b.end());
+        return all;
+      };
+      problems[w] = assemble_grain_step(grains, library, walls, h, options, memory, &caches[w], &share);
+    });
+  for (std::thread& t : threads) t.join();
+  return problems;
+}
+
 }  // namespace
 
 TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) {
@@ -72,6 +109,10 @@ TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) 
   const double h = 2e-3;
   GrainImpulseMemory memory, memory_cached;
   GrainPairCache cache(0.1);
+  // the detection shared by 3 workers (every 25th step: each worker's cache is built
+  // then, and reused when still valid) gives the full search's problem too, on every worker
+  std::vector<GrainPairCache> worker_caches(3, GrainPairCache(0.1));
+  int shared_checks = 0;
   int with_points = 0;
   const int steps = 3000;
   for (int step = 0; step < steps; ++step) {
@@ -79,6 +120,11 @@ TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) 
     GrainStepProblem full = assemble_grain_step(grains, library, walls, h, options, memory);
     GrainStepProblem cached = assemble_grain_step(grains, library, walls, h, options, memory_cached, &cache);
     expect_same_problem(full, cached, step);
+    if (step % 25 == 0) {
+      for (const GrainStepProblem& shared : assemble_shared(3, grains, library, walls, h, options, memory, worker_caches))
+        expect_same_problem(full, shared, step);
+      shared_checks += !full.points.empty();
+    }
     if (::testing::Test::HasFailure()) return;
     with_points += !full.points.empty();
     const GrainStepResult r = solve_grain_step(full, grains, options, step, memory);
@@ -100,6 +146,7 @@ TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) 
   std::printf("builds %ld, reuses %ld over %d steps; fastest grain at the end %.3g\n", cache.builds(), cache.reuses(),
               steps, fastest);
   EXPECT_GT(with_points, steps / 2);
+  EXPECT_GT(shared_checks, 60);
   EXPECT_EQ(cache.builds() + cache.reuses(), steps);
   EXPECT_LT(cache.builds(), steps / 4);  // measured: see the printout
 }
@@ -125,6 +172,28 @@ TEST(GrainPairCache, ATurnAboutTheCentreInvalidatesIt) {
   EXPECT_TRUE(cache.valid(grains, library, 0.01));  // 2 · 2 · 0.866 · sin(0.25°) = 0.015 < 0.1
   grains[1].tag = 7;
   EXPECT_FALSE(cache.valid(grains, library, 0.01));
+}
+
+// A join that does not hold every block, and a worker index outside [0, workers), are
+// refused with a message instead of a problem made of missing points.
+TEST(GrainPairCache, ASharedDetectionWithABadJoinIsRefused) {
+  ShapeLibrary library;
+  library.add(ConvexShape::cube(1.0, 0.1));
+  std::vector<GrainState> grains(2);
+  for (int k = 0; k < 2; ++k) {
+    grains[k].tag = k + 1;
+    grains[k].position = Vector3d(0, 0, 0.6 + 1.15 * k);
+  }
+  GrainStepOptions options;
+  GrainImpulseMemory memory;
+  NarrowPhaseShare share;
+  share.workers = 2;
+  share.all_gather = [](const std::vector<double>& mine) { return mine; };  // the other block missing
+  EXPECT_THROW(assemble_grain_step(grains, library, box_walls(3.0), 1e-3, options, memory, nullptr, &share),
+               NumericalFailure);
+  share.worker = 2;
+  EXPECT_THROW(assemble_grain_step(grains, library, box_walls(3.0), 1e-3, options, memory, nullptr, &share),
+               InvalidArgument);
 }
 
 TEST(GrainPairCache, SkinMustBePositiveAndFinite) {

@@ -271,6 +271,7 @@ class NscdKeywords(Table):
         (NSCD + "convergence fast\nrun 1", P + "value of 'convergence' must be natural_map, increment or both, got 'fast'"),
         (NSCD + "manifold all\nrun 1", P + "value of 'manifold' must be near_vertices or closest, got 'all'"),
         (NSCD + "manifold\nrun 1", P + "missing value after 'manifold'"),
+        (NSCD + "detection split\nrun 1", P + "value of 'detection' must be shared or replicated, got 'split'"),
         (NSCD + "wall_friction 0.3\nrun 1", P + "'wall_friction' must follow a 'wall' or 'wall_fix'"),
         (NSCD + "wall 0 0 0 0 0\nrun 1", P + "missing value after 'wall'"),
         (NSCD + "max_iterations 1.5\nrun 1", P + "value of 'max_iterations' must be an integer, got '1.5'"),

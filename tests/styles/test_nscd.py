@@ -529,8 +529,11 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
         one = run(text + "run 2400\n", workdir=made.workdir)
         a = read_dump(made.path("dump.h"))
         two = run(text.replace("dump.h", "dump2.h") + "run 2400\n", workdir=made.workdir, np_ranks=2)
+        # detection shared (the default: each rank a block of the pairs) or replicated
+        two_replicated = run(text.replace("dump.h", "dump5.h").replace("tolerance 1e-6", "tolerance 1e-6 detection replicated")
+                             + "run 2400\n", workdir=made.workdir, np_ranks=2)
         half = run(text.replace("dump.h", "dump3.h") + "run 1200\nwrite_restart heap.restart\n", workdir=made.workdir)
-        for r in (one, two, half):
+        for r in (one, two, two_replicated, half):
             self.assertRanCleanly(r)
         rest = run(full_precision(restarted("heap.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 1200\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)
@@ -538,8 +541,11 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
         cols = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
         ranks = max(np.max(np.abs(a[k] - b[k])) for k in cols)
         restart = max(np.max(np.abs(a[k] - c[k])) for k in cols)
-        print(f"heap of 30: 1 vs 2 ranks {ranks:.2e}, restart vs straight {restart:.2e}")
+        e = read_dump(made.path("dump5.h"))
+        replicated = max(np.max(np.abs(a[k] - e[k])) for k in cols)
+        print(f"heap of 30: 1 vs 2 ranks {ranks:.2e} (detection replicated {replicated:.2e}), restart vs straight {restart:.2e}")
         self.assertLess(ranks, 1e-12)
+        self.assertLess(replicated, 1e-12)
         self.assertLess(restart, 1e-12)
 
 
@@ -605,7 +611,7 @@ thermo          10
         two = run(text.replace("dump.h", "dump2.h") + "run 300\n" + self.KICK, workdir=made.workdir, np_ranks=2)
         half = run(text.replace("dump.h", "dump3.h") + "run 300\nset atom 3 vz -1.0\nrun 150\nwrite_restart stacks.restart\n",
                    workdir=made.workdir)
-        for r in (one, two, half):
+        for r in (one, two, two_replicated, half):
             self.assertRanCleanly(r)
         rest = run(full_precision(restarted("stacks.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 450\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -401,6 +403,97 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
   for (char a : result.asleep) result.stats.sleeping += a;
 }
 
+// A candidate of the narrow phase: grains a < b (wall < 0), or wall `wall` and grain b
+// (a = −1); a frozen pair (two sleepers) is not computed.
+struct NarrowPhaseCandidate {
+  int a = -1, b = -1, wall = -1;
+  bool frozen = false;
+};
+
+struct NarrowPhaseResult {
+  double gap = std::numeric_limits<double>::infinity();  // the manifold's (a lower bound when far)
+  std::vector<ContactPoint> points;                      // position, normal and gap are used
+};
+
+// The contact manifolds of the candidates (NarrowPhaseShare): this worker's block by
+// `compute`, the others' from the joined buffer. The buffer of a block: its status (0, or
+// the length + 1 of the message of an exception thrown in it, then the message's
+// characters), then per candidate its gap, its point count and 7 numbers per point. Every
+// worker throws when any block failed, with that block's message.
+template <class Compute>
+std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandidate>& candidates,
+                                            const NarrowPhaseShare* share, const Compute& compute) {
+  const std::size_t count = candidates.size();
+  const int workers = share && share->workers > 1 ? share->workers : 1;
+  const int me = workers > 1 ? share->worker : 0;
+  if (me < 0 || me >= workers)
+    throw InvalidArgument("share", "grain step: worker " + std::to_string(me) + " of " + std::to_string(workers));
+  const auto block_begin = [&](int w) { return count * static_cast<std::size_t>(w) / static_cast<std::size_t>(workers); };
+  std::vector<NarrowPhaseResult> found(count);
+  std::string failure;
+  try {
+    for (std::size_t i = block_begin(me); i < block_begin(me + 1); i++) {
+      if (candidates[i].frozen) continue;
+      ContactManifold m = compute(candidates[i]);
+      found[i].gap = m.gap;
+      found[i].points = std::move(m.points);
+    }
+  } catch (const std::exception& e) {
+    if (workers == 1) throw;
+    failure = e.what();
+    if (failure.empty()) failure = "narrow phase failed";
+  }
+  if (workers == 1) return found;
+
+  std::vector<double> mine{failure.empty() ? 0.0 : double(failure.size() + 1)};
+  if (!failure.empty())
+    for (char ch : failure) mine.push_back(static_cast<unsigned char>(ch));
+  else
+    for (std::size_t i = block_begin(me); i < block_begin(me + 1); i++) {
+      mine.push_back(found[i].gap);
+      mine.push_back(static_cast<double>(found[i].points.size()));
+      for (const ContactPoint& p : found[i].points) {
+        mine.insert(mine.end(), {p.position.x(), p.position.y(), p.position.z(), p.normal.x(), p.normal.y(),
+                                 p.normal.z(), p.gap});
+      }
+    }
+  const std::vector<double> all = share->all_gather(mine);
+  std::size_t at = 0;
+  const auto next = [&]() {
+    if (at >= all.size()) throw NumericalFailure("grain step: the joined narrow phase is shorter than its candidates");
+    return all[at++];
+  };
+  std::string failed_block;
+  for (int w = 0; w < workers; w++) {
+    const double status = next();
+    if (status != 0.0) {
+      std::string message;
+      for (std::size_t k = 0; k + 1 < static_cast<std::size_t>(status); k++) message.push_back(static_cast<char>(next()));
+      if (failed_block.empty()) failed_block = message;
+      continue;
+    }
+    for (std::size_t i = block_begin(w); i < block_begin(w + 1); i++) {
+      NarrowPhaseResult r;
+      r.gap = next();
+      const double points = next();
+      for (int k = 0; k < static_cast<int>(points); k++) {
+        ContactPoint p;
+        p.position.x() = next();
+        p.position.y() = next();
+        p.position.z() = next();
+        p.normal.x() = next();
+        p.normal.y() = next();
+        p.normal.z() = next();
+        p.gap = next();
+        r.points.push_back(p);
+      }
+      if (w != me) found[i] = std::move(r);
+    }
+  }
+  if (!failed_block.empty()) throw NumericalFailure(failed_block);
+  return found;
+}
+
 void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                   const std::vector<PlaneWall>& walls, double h) {
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
@@ -429,7 +522,8 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
 
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double h, const GrainStepOptions& options,
-                                     const GrainImpulseMemory& memory, GrainPairCache* pairs) {
+                                     const GrainImpulseMemory& memory, GrainPairCache* pairs,
+                                     const NarrowPhaseShare* share) {
   options.validate();
   check_inputs(grains, library, walls, h);
   const int n = static_cast<int>(grains.size());
@@ -472,11 +566,8 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
 
   // 1. bodies: free velocities with implicit damping (see the header); a sleeping grain
   // has infinite mass and no velocity
-  std::vector<PosedShape> posed;
-  posed.reserve(n);
   double largest_radius = 0.0, fastest = 0.0;
   for (const GrainState& g : grains) {
-    posed.emplace_back(library[g.shape].shape, g.position, g.orientation);
     const NscdBody b = asleep(static_cast<int>(problem.step.bodies.size())) ? NscdBody() : free_body(g, h, options.damping);
     problem.step.bodies.push_back(b);
     const double radius = library[g.shape].bounding_radius;
@@ -484,31 +575,24 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     fastest = std::max(fastest, b.velocity_free.norm() + b.angular_velocity_free.norm() * radius);
   }
 
-  // 2. contact points of every pair whose gap may close within the step
+  // 2. contact points of every pair whose gap may close within the step: the candidates
+  // in a fixed order (grain pairs a < b, b ascending for each a, grains in tag order: the
+  // same whether they come from the broad phase or from the pair cache, grain_pairs.h;
+  // then each wall's grains), their narrow phase (shared out when `share` is given), then
+  // their points in that order
   double wall_speed = 0.0;
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
   const double activation = options.margin + 2.0 * h * (2.0 * fastest + wall_speed) + 1e-12;
   ContactOptions contact_options;
   contact_options.near_vertices = options.near_vertices;
-  std::vector<GrainContactPoint>& points = problem.points;
-  const auto add_point = [&](int body_a, int body_b, const ContactPoint& p, double mu,
-                             const Eigen::Vector3d& wall_velocity, long key_a) {
-    points.push_back(make_point(grains, body_a, body_b, p.position, p.normal, p.gap, mu, wall_velocity, key_a));
-  };
-  // pairs a < b, b ascending for each a (grains in tag order): the same order whether the
-  // pairs come from the broad phase or from the pair cache (grain_pairs.h)
-  const auto add_pair_points = [&](int a, int b, const ContactManifold& m) {
-    for (const ContactPoint& p : m.points) add_point(a, b, p, options.friction, Eigen::Vector3d::Zero(), grains[a].tag);
-  };
-  if (n > 0 && pairs && pairs->valid(grains, library, activation)) {
+  std::vector<NarrowPhaseCandidate> candidates;
+  const bool reuse = n > 0 && pairs && pairs->valid(grains, library, activation);
+  const double skin = pairs && !reuse ? pairs->skin() : 0.0;
+  if (reuse) {
     pairs->count_reuse();
     for (const auto& [a, b] : pairs->pairs())
-      if (!(asleep(a) && asleep(b))) add_pair_points(a, b, contact_manifold(posed[a], posed[b], activation, contact_options));
+      if (!(asleep(a) && asleep(b))) candidates.push_back({a, b, -1, false});
   } else if (n > 0) {
-    const double skin = pairs ? pairs->skin() : 0.0;
-    ContactOptions build_options = contact_options;
-    build_options.exit_beyond_activation = skin;
-    if (pairs) pairs->begin_build();
     BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
     for (const GrainState& g : grains) grid.insert(g.position);
     std::vector<int> near;
@@ -521,30 +605,50 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
         if ((grains[b].position - grains[a].position).squaredNorm() < reach * reach) near.push_back(b);
       });
       std::sort(near.begin(), near.end());
-      for (int b : near) {
-        if (asleep(a) && asleep(b)) {  // frozen; kept in the cache for when one wakes
-          if (pairs) pairs->keep(a, b);
-          continue;
-        }
-        const ContactManifold m = contact_manifold(posed[a], posed[b], activation, build_options);
-        add_pair_points(a, b, m);
-        if (pairs && m.gap < activation + skin) pairs->keep(a, b);
-      }
+      // a pair of sleepers is frozen: not computed, kept in the cache for when one wakes
+      for (int b : near) candidates.push_back({a, b, -1, asleep(a) && asleep(b)});
     }
-    if (pairs) pairs->end_build(grains, library, activation);
   }
-  for (int w = 0; w < (int)walls.size(); w++) {
-    Plane plane;
-    plane.point = walls[w].point;
-    plane.normal = walls[w].normal;
+  for (int w = 0; w < (int)walls.size(); w++)
     for (int b = 0; b < n; b++) {
       if (asleep(b)) continue;  // frozen (a moving wall within reach woke it above)
-      if (plane.normal.dot(grains[b].position - plane.point) > library[grains[b].shape].bounding_radius + activation)
+      if (walls[w].normal.dot(grains[b].position - walls[w].point) > library[grains[b].shape].bounding_radius + activation)
         continue;
-      for (const ContactPoint& p : plane_contact(plane, posed[b], activation, contact_options).points)
-        add_point(-1, b, p, walls[w].friction, walls[w].velocity, -w - 1);
+      candidates.push_back({-1, b, w, false});
     }
+  ContactOptions build_options = contact_options;  // a cache build learns which pairs lie beyond activation + skin
+  build_options.exit_beyond_activation = skin;
+  std::vector<std::optional<PosedShape>> posed(n);  // the grains of this worker's candidates
+  const auto posed_grain = [&](int k) -> const PosedShape& {
+    if (!posed[k]) posed[k].emplace(library[grains[k].shape].shape, grains[k].position, grains[k].orientation);
+    return *posed[k];
+  };
+  const std::vector<NarrowPhaseResult> found = narrow_phase(candidates, share, [&](const NarrowPhaseCandidate& c) {
+    if (c.wall >= 0) {
+      Plane plane;
+      plane.point = walls[c.wall].point;
+      plane.normal = walls[c.wall].normal;
+      return plane_contact(plane, posed_grain(c.b), activation, contact_options);
+    }
+    return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, reuse ? contact_options : build_options);
+  });
+
+  std::vector<GrainContactPoint>& points = problem.points;
+  if (pairs && !reuse && n > 0) pairs->begin_build();
+  for (std::size_t i = 0; i < candidates.size(); i++) {
+    const NarrowPhaseCandidate& c = candidates[i];
+    if (c.wall >= 0) {
+      for (const ContactPoint& p : found[i].points)
+        points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
+                                    walls[c.wall].velocity, -c.wall - 1));
+      continue;
+    }
+    if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin)) pairs->keep(c.a, c.b);
+    for (const ContactPoint& p : found[i].points)
+      points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
+                                  Eigen::Vector3d::Zero(), grains[c.a].tag));
   }
+  if (pairs && !reuse && n > 0) pairs->end_build(grains, library, activation);
 
   // 3. top-down order (descending z of the point, ties in detection order)
   sort_top_down(problem);
