@@ -582,19 +582,19 @@ ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos
   const auto best_face_at_v = [&](bool whole_support_set, double& best_cos) {
     int best = -1;
     best_cos = -2.0;
-    for (int f : shape.faces_at_vertex(v)) {
+    for (const ConvexShape::IncidentFace& at : shape.incident_faces(v)) {
       bool contains = true;
       if (whole_support_set) {
         if (!masks.empty())
-          contains = (support_mask & ~masks[f]) == 0;
+          contains = (support_mask & ~at.mask) == 0;
         else
-          for (int i : support_set) contains = contains && face_has_vertex(faces[f], i);
+          for (int i : support_set) contains = contains && face_has_vertex(faces[at.face], i);
       }
       if (!contains) continue;
-      const double c = faces[f].normal.dot(body_n);
+      const double c = at.normal.dot(body_n);
       if (c > best_cos) {
         best_cos = c;
-        best = f;
+        best = at.face;
       }
     }
     return best;

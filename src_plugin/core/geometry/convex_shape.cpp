@@ -447,6 +447,22 @@ void ConvexShape::index_adjacency() {
       for (int v : f.vertices) mask |= std::uint64_t(1) << v;
       face_vertex_masks_.push_back(mask);
     }
+  index_incident_faces();
+}
+
+void ConvexShape::index_incident_faces() {
+  incident_faces_.clear();
+  incident_offsets_.assign(1, 0);
+  for (const std::vector<int>& at : faces_at_vertex_) {
+    for (int f : at) {
+      IncidentFace i;
+      i.normal = faces_[f].normal;
+      i.mask = face_vertex_masks_.empty() ? 0 : face_vertex_masks_[f];
+      i.face = f;
+      incident_faces_.push_back(i);
+    }
+    incident_offsets_.push_back(static_cast<int>(incident_faces_.size()));
+  }
 }
 
 ConvexShape ConvexShape::random_ellipsoid(std::mt19937_64& rng, int n_vertices, double a,
@@ -571,6 +587,7 @@ ConvexShape ConvexShape::transformed(const Matrix3d& rotation, const Vector3d& t
     f.offset = -std::numeric_limits<double>::infinity();
     for (int v : f.vertices) f.offset = std::max(f.offset, f.normal.dot(out.vertices_[v]));
   }
+  out.index_incident_faces();
   return out;
 }
 
