@@ -788,18 +788,26 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
   std::vector<double> data = {kRestartLayout, solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
                               double(core_->walls.size())};
   for (const wiregrain::PlaneWall &w : core_->walls) data.insert(data.end(), w.point.data(), w.point.data() + 3);
-  data.push_back(double(core_->impulses.pairs().size()));
-  for (const auto &entry : core_->impulses.pairs()) {
-    data.push_back(entry.first.first);
-    data.push_back(entry.first.second);
-    data.push_back(double(entry.second.size()));
-    for (const wiregrain::GrainImpulseMemory::Impulse &s : entry.second) {
-      data.insert(data.end(), s.position.data(), s.position.data() + 3);
-      data.insert(data.end(), s.impulse.data(), s.impulse.data() + 3);
-      data.insert(data.end(), s.normal.data(), s.normal.data() + 3);
-      data.push_back(s.gap);
-      data.push_back(double(static_cast<int>(s.status)));
+  // per pair (ascending): its key, its point count, then each point
+  const std::vector<wiregrain::GrainImpulseMemory::Entry> &points = core_->impulses.points();
+  const size_t pairs_at = data.size();
+  data.push_back(0.0);
+  size_t count_at = 0;
+  for (size_t e = 0; e < points.size(); e++) {
+    if (e == 0 || points[e].pair != points[e - 1].pair) {
+      data[pairs_at] += 1.0;
+      data.push_back(points[e].pair.first);
+      data.push_back(points[e].pair.second);
+      count_at = data.size();
+      data.push_back(0.0);
     }
+    const wiregrain::GrainImpulseMemory::Impulse &s = points[e].impulse;
+    data[count_at] += 1.0;
+    data.insert(data.end(), s.position.data(), s.position.data() + 3);
+    data.insert(data.end(), s.impulse.data(), s.impulse.data() + 3);
+    data.insert(data.end(), s.normal.data(), s.normal.data() + 3);
+    data.push_back(s.gap);
+    data.push_back(double(static_cast<int>(s.status)));
   }
   data.push_back(core_->impulses.backoff.skip);
   data.push_back(core_->impulses.backoff.wait);
@@ -839,6 +847,7 @@ void FixNSCDPolyhedra::restart(char *buf) {
       core_->impulses.add(pair, point);
     }
   }
+  core_->impulses.commit();
   core_->impulses.backoff.skip = (int)d[k++];
   core_->impulses.backoff.wait = (int)d[k++];
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
@@ -205,8 +206,8 @@ TEST(GrainStep, WarmStartReproducesTheStoredImpulse) {
   const std::vector<PlaneWall> walls = {floor_wall()};
   GrainImpulseMemory memory;
   const GrainStepResult first = grain_step(grains, library, walls, kH, tight(), 0, memory);
-  ASSERT_EQ(memory.pairs().size(), 1u);
-  ASSERT_EQ(memory.pairs().begin()->first, GrainImpulseMemory::PairKey(-1, 3));
+  ASSERT_EQ(memory.points().size(), 4u);  // the four corners of one pair
+  for (const GrainImpulseMemory::Entry& e : memory.points()) ASSERT_EQ(e.pair, GrainImpulseMemory::PairKey(-1, 3));
   // the same configuration again: every point starts from its own last impulse (local frame)
   GrainStepProblem problem = assemble_grain_step(grains, library, walls, kH, tight(), memory);
   ASSERT_EQ(problem.warm_start.size(), 4u);
@@ -256,4 +257,31 @@ TEST(GrainStep, BadInputIsRejected) {
   GrainStepOptions negative;
   negative.friction = -1.0;
   EXPECT_THROW(grain_step({resting_cube(1, 2.0)}, library, {}, kH, negative, 0, memory), InvalidArgument);
+}
+
+// The impulse memory: points added in any order are found by pair after commit (the
+// nearest within the radius, none beyond it, none of another pair), a pair's points keep
+// the order they were added in, and a recall before the commit is refused.
+TEST(GrainImpulseMemory, RecallsTheNearestPointOfThePairAfterCommit) {
+  GrainImpulseMemory memory;
+  const auto impulse_at = [](double x, double j) {
+    return GrainImpulseMemory::Impulse{Eigen::Vector3d(x, 0, 0), Eigen::Vector3d(0, 0, j)};
+  };
+  memory.add({4, 9}, impulse_at(0.0, 1.0));
+  memory.add({-1, 9}, impulse_at(0.0, 2.0));
+  memory.add({4, 9}, impulse_at(1.0, 3.0));
+  memory.add({2, 4}, impulse_at(0.0, 4.0));
+  EXPECT_THROW(memory.recall({4, 9}, Eigen::Vector3d::Zero(), 1.0), std::logic_error);
+  memory.commit();
+  ASSERT_EQ(memory.points().size(), 4u);
+  EXPECT_EQ(memory.points()[0].pair, GrainImpulseMemory::PairKey(-1, 9));
+  EXPECT_EQ(memory.points()[1].pair, GrainImpulseMemory::PairKey(2, 4));
+  EXPECT_EQ(memory.points()[2].impulse.impulse.z(), 1.0);  // (4, 9) in the order added
+  EXPECT_EQ(memory.points()[3].impulse.impulse.z(), 3.0);
+  const GrainImpulseMemory::Impulse* near = memory.recall({4, 9}, Eigen::Vector3d(0.8, 0, 0), 1.0);
+  ASSERT_NE(near, nullptr);
+  EXPECT_EQ(near->impulse.z(), 3.0);
+  EXPECT_EQ(memory.recall({4, 9}, Eigen::Vector3d(3.0, 0, 0), 1.0), nullptr);  // beyond the radius
+  EXPECT_EQ(memory.recall({4, 8}, Eigen::Vector3d::Zero(), 1.0), nullptr);     // no such pair
+  EXPECT_EQ(memory.recall({-1, 9}, Eigen::Vector3d::Zero(), 1.0)->impulse.z(), 2.0);
 }

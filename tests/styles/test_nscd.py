@@ -611,7 +611,7 @@ thermo          10
         two = run(text.replace("dump.h", "dump2.h") + "run 300\n" + self.KICK, workdir=made.workdir, np_ranks=2)
         half = run(text.replace("dump.h", "dump3.h") + "run 300\nset atom 3 vz -1.0\nrun 150\nwrite_restart stacks.restart\n",
                    workdir=made.workdir)
-        for r in (one, two, two_replicated, half):
+        for r in (one, two, half):
             self.assertRanCleanly(r)
         rest = run(full_precision(restarted("stacks.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 450\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -40,17 +41,28 @@ void GrainStepOptions::validate() const {
                                        std::to_string(sleep.speed) + " and " + std::to_string(sleep.time));
 }
 
+void GrainImpulseMemory::commit() {
+  if (sorted_) return;
+  std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) { return x.pair < y.pair; });
+  sorted_ = true;
+}
+
+const std::vector<GrainImpulseMemory::Entry>& GrainImpulseMemory::points() const {
+  if (!sorted_) throw std::logic_error("GrainImpulseMemory: points added since the last commit");
+  return entries_;
+}
+
 const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pair, const Eigen::Vector3d& position,
                                                                double radius2) const {
-  const auto it = pairs_.find(pair);
-  if (it == pairs_.end()) return nullptr;
+  const std::vector<Entry>& all = points();
+  auto it = std::lower_bound(all.begin(), all.end(), pair, [](const Entry& e, const PairKey& p) { return e.pair < p; });
   const Impulse* nearest = nullptr;
   double best = radius2;
-  for (const Impulse& stored : it->second) {
-    const double d2 = (stored.position - position).squaredNorm();
+  for (; it != all.end() && it->pair == pair; ++it) {
+    const double d2 = (it->impulse.position - position).squaredNorm();
     if (d2 < best) {
       best = d2;
-      nearest = &stored;
+      nearest = &it->impulse;
     }
   }
   return nearest;
@@ -661,13 +673,12 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
       const auto it = index_of_tag.find(tag);
       return it != index_of_tag.end() && problem.asleep[it->second];
     };
-    for (const auto& [pair, stored] : memory.pairs())
-      if (sleeping_tag(pair.second) && (pair.first < 0 || sleeping_tag(pair.first)))
-        for (const GrainImpulseMemory::Impulse& point : stored) {
-          problem.frozen.emplace_back(pair, point);
-          problem.frozen_bodies.emplace_back(pair.first < 0 ? -1 : index_of_tag.at(pair.first),
-                                             index_of_tag.at(pair.second));
-        }
+    for (const auto& [pair, point] : memory.points())
+      if (sleeping_tag(pair.second) && (pair.first < 0 || sleeping_tag(pair.first))) {
+        problem.frozen.emplace_back(pair, point);
+        problem.frozen_bodies.emplace_back(pair.first < 0 ? -1 : index_of_tag.at(pair.first),
+                                           index_of_tag.at(pair.second));
+      }
     problem.walls = walls;
   }
 
@@ -736,6 +747,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
     add_point(point.pair, point.constraint.body_a < 0, stored);
   }
   for (const auto& [pair, stored] : problem.frozen) add_point(pair, pair.first < 0, stored);
+  memory.commit();
   if (options.sleep.on()) {
     update_sleep(problem, grains, options.sleep, solved, result);
     result.stats.woken = problem.woken + woken_in_step;
