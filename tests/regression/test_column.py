@@ -264,6 +264,7 @@ class Column(DeckTestCase):
                                    ({"dt_NSCD": 2.5e-4}, "in.column: dt_NSCD (0.00025) must be a multiple of dt_SP (1e-4)"),
                                    ({"dt_NSCD": 5e-5}, "in.column: dt_NSCD (5e-05) must be a multiple of dt_SP (1e-4)"),
                                    ({"dt_SP": 0}, "in.column: dt_SP must be > 0, got 0"),
+                                   ({"box_height": -5}, "in.column: box_height must be >= 0 (0: 4 R + 10), got -5"),
                                    ({"ke_stop": -1}, "in.column: ke_stop must be >= 0 (0: off), got -1"),
                                    ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
