@@ -47,6 +47,16 @@ std::vector<PlaneWall> box_walls(double half) {
   return walls;
 }
 
+// `count` grains of shape 0, tags 1, 2, ..., centred on the z axis at z0, z0 + dz, ...
+std::vector<GrainState> grain_column(int count, double z0, double dz) {
+  std::vector<GrainState> grains(count);
+  for (int k = 0; k < count; ++k) {
+    grains[k].tag = k + 1;
+    grains[k].position = Vector3d(0, 0, z0 + dz * k);
+  }
+  return grains;
+}
+
 // The step assembled by `workers` workers on threads with the detection shared
 // (NarrowPhaseShare): all_gather joins their blocks in worker order; each worker has its
 // own pair cache, as each MPI rank has.
@@ -156,11 +166,7 @@ TEST(GrainPairCache, ATurnAboutTheCentreInvalidatesIt) {
   // centres moves no centre, but its corners sweep 2 R sin(10°) ≈ 0.3 > skin/2
   ShapeLibrary library;
   library.add(ConvexShape::cube(1.0, 0.0));
-  std::vector<GrainState> grains(2);
-  for (int k = 0; k < 2; ++k) {
-    grains[k].tag = k + 1;
-    grains[k].position = Vector3d(0, 0, 1.3 * k);
-  }
+  std::vector<GrainState> grains = grain_column(2, 0.0, 1.3);
   GrainPairCache cache(0.1);
   cache.begin_build();
   cache.end_build(grains, library, 0.01);
@@ -179,11 +185,7 @@ TEST(GrainPairCache, ATurnAboutTheCentreInvalidatesIt) {
 TEST(GrainPairCache, ASharedDetectionWithABadJoinIsRefused) {
   ShapeLibrary library;
   library.add(ConvexShape::cube(1.0, 0.1));
-  std::vector<GrainState> grains(2);
-  for (int k = 0; k < 2; ++k) {
-    grains[k].tag = k + 1;
-    grains[k].position = Vector3d(0, 0, 0.6 + 1.15 * k);
-  }
+  const std::vector<GrainState> grains = grain_column(2, 0.6, 1.15);
   GrainStepOptions options;
   GrainImpulseMemory memory;
   NarrowPhaseShare share;
