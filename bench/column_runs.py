@@ -14,12 +14,12 @@ FINAL = re.compile(r"^in\.column final: H_n = (\S+) phi_p = (\S+) U_s/L = (\S+) 
 
 
 def run_column(liggghts, np_ranks, deck, variables, label):
-    """Run `deck` with -var root ROOT -var vtk 0 and `variables` [(name, value), ...];
+    """Run `deck` with -var root ROOT -var t_vtk 0 and `variables` [(name, value), ...];
     returns (wall seconds of the process, the sum of LIGGGHTS' "Loop time" lines,
     [H_n, phi_p, U_s/L, z_wpc], stdout). Exits naming `label` if the run fails."""
     work = tempfile.mkdtemp(prefix=f"wiregrain-bench-{label}-")
     cmd = [] if np_ranks == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np_ranks)]
-    cmd += [os.path.abspath(liggghts), "-in", os.path.abspath(deck), "-var", "root", ROOT, "-var", "vtk", "0"]
+    cmd += [os.path.abspath(liggghts), "-in", os.path.abspath(deck), "-var", "root", ROOT, "-var", "t_vtk", "0"]
     for name, value in variables:
         cmd += ["-var", name, str(value)]
     start = time.perf_counter()

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Benchmark: the paper's Table 1 column (input_scripts/in.column at its defaults: 915
-grains in 7 particle layers, 7 double loops of R = 10, Δt_SP = 1e-4, Δt_NSCD = 1e-3) with
+grains in 7 particle layers, 7 double loops of R = 10, Δt_SP = Δt_NSCD = 1e-3) with
 `mpirun -np 2`: wall time per step of each phase, its breakdown by part, and the wall time
 of the paper's full procedure (t_layer = 10, t = 300 and 600) extrapolated from them.
 
@@ -21,6 +21,7 @@ steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
   communication, output        Comm, Outpt
   other                        the rest (gravity, computes, the loop itself)
 With --var dt_SP the extrapolation counts the steps of that dt_SP (in.column's dt_SP,
+default dt_NSCD; --var dt_SP 1e-4 is the paper's N = 10;
 dt_NSCD and skin set the wire's sub-step, the grains' step and fix wire/grain's pair
 cache). Extrapolation: each layer's deposition at the measured cost per step of that layer's run
 × the paper's 10^5 steps per layer, plus (600 − 140)/Δt_SP steps at the complete column's
@@ -42,7 +43,7 @@ REPOSITORY = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from wire_grain_contacts import timers  # noqa: E402  (LIGGGHTS' timer lines of one run)
 
-PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END, DT = 10.0, 300.0, 600.0, 1e-4
+PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END, DT_NSCD = 10.0, 300.0, 600.0, 1e-3
 NLAYERS = 7  # in.column's default
 
 
@@ -88,7 +89,8 @@ def main():
     args = parser.parse_args()
     given = dict(args.var)
     nlayers = int(given.get("nlayers", NLAYERS))
-    dt = float(given.get("dt_SP", DT))  # the LIGGGHTS step of the run (in.column's dt_SP)
+    # the LIGGGHTS step of the run (in.column's dt_SP; its default 0 is dt_NSCD)
+    dt = float(given.get("dt_SP", 0)) or float(given.get("dt_NSCD", DT_NSCD))
 
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
     t_relax = 2 * nlayers * args.t_layer + args.t_after
@@ -103,7 +105,7 @@ run {args.sample}
     with open(os.path.join(work, "in.bench"), "w") as f:
         f.write(deck)
     cmd = [args.liggghts, "-in", "in.bench", "-log", "log.liggghts", "-var", "t_layer", str(args.t_layer),
-           "-var", "t_relax", str(t_relax), "-var", "t_end", str(t_relax + args.t_after), "-var", "every_obs", "1000"]
+           "-var", "t_relax", str(t_relax), "-var", "t_end", str(t_relax + args.t_after), "-var", "t_obs", "0.1"]
     for name, value in args.var:
         cmd += ["-var", name, value]
     if args.np > 1:

@@ -16,7 +16,7 @@ import numpy as np
 from liggghts_run import SOURCE, DeckTestCase, deck, main, run
 
 COLUMN = deck("input_scripts/in.column")
-TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "every_obs": 1000}
+TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1}
 NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc")
 
 
@@ -80,8 +80,9 @@ def assert_vtk_observables_match(test, result, h_n_delta=1e-14):
     test.assertEqual(obs["phi_p"], final["phi_p"])
     # L here is the polylines' length at the written (corrected) bead positions; fix
     # wire/elastic's segment lengths, like its energies, are those of its last force
-    # evaluation, at the Gear-predicted positions of the step: measured 1.6e-10 apart
-    test.assertAlmostEqual(obs["U_s/L"] / final["U_s/L"], 1.0, delta=5e-10)
+    # evaluation, at the Gear-predicted positions of the step: measured 1.6e-10 apart at
+    # dt_SP = 1e-4, 1.1e-7 at the default dt_SP = 1e-3 (the corrector's step grows with dt)
+    test.assertAlmostEqual(obs["U_s/L"] / final["U_s/L"], 1.0, delta=3e-7)
     test.assertAlmostEqual(obs["z_wpc"], final["z_wpc"], delta=1e-14)
 
 
@@ -129,7 +130,7 @@ class Column(DeckTestCase):
         print(f"\n1 rank {a}\n2 ranks {b}")
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], b[name], name)
-        # the wire's energy after 35 000 steps: the forces on a bead are summed in another
+        # the wire's energy after 3500 steps (N = 1): the forces on a bead are summed in another
         # order on 2 ranks and the round-off grows in the wire's frictional contacts by an
         # amount that depends on the trajectory (measured 1.2e-9 and 5e-7 relative in two
         # versions of the release heights, 1.2e-5 after the NSCD convergence check was
@@ -248,6 +249,22 @@ class Column(DeckTestCase):
             worst = max(worst, np.abs(f - 1.0).max())
         self.assertLess(worst, 1e-9)  # measured 4.7e-11: the rotation's 11 digits
 
+    def test_default_wire_step_within_the_gear5_limit(self):
+        # dt_SP 0 (the default): dt_NSCD itself for Table 1's wire (N = 1), and for a
+        # stiffer wire dt_NSCD / N with dt_SP at most half the Gear-5 limit that fix
+        # wire/elastic computes from the springs and prints; N = 5 at m_elo E_w = 2000
+        # (the limit ∝ (m_elo E_w)^-1/2: 0.00219 √(100/2000) = 4.9e-4, half of it 2.4e-4)
+        short = dict(TINY, t_layer=0.1, t_relax=0.4, t_end=0.45)
+        for extra, expected_dt in (({}, 1e-3), ({"E_w": 1000, "m_elo": 2}, 2e-4)):
+            result = run(COLUMN, variables=dict(short, **extra))
+            self.assertRanCleanly(result)
+            m = re.search(r"gear5 limit (\S+); timestep (\S+) = (\S+) of it", result.output)
+            limit, dt = float(m.group(1)), float(m.group(2))
+            print(f"\n{extra}: dt_SP {dt}, Gear-5 limit {limit}")
+            self.assertAlmostEqual(dt, expected_dt, delta=1e-15)
+            self.assertLessEqual(dt, 0.5 * limit)
+            self.assertIn(f"in.column: dt_SP {dt:g}, dt_NSCD 1e-3", result.output)
+
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
@@ -261,9 +278,16 @@ class Column(DeckTestCase):
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (4 R = 4)"),
                                    ({"E_w": -5}, "pair wire/contact (id -): youngsModulus of atom type 2 must be "
                                                  "a finite number > 0, got -5"),
-                                   ({"dt_NSCD": 2.5e-4}, "in.column: dt_NSCD (0.00025) must be a multiple of dt_SP (1e-4)"),
-                                   ({"dt_NSCD": 5e-5}, "in.column: dt_NSCD (5e-05) must be a multiple of dt_SP (1e-4)"),
-                                   ({"dt_SP": 0}, "in.column: dt_SP must be > 0, got 0"),
+                                   ({"dt_NSCD": 2.5e-4, "dt_SP": "1e-4"},
+                                    "in.column: dt_NSCD (0.00025) must be a multiple of dt_SP (1e-4)"),
+                                   ({"dt_NSCD": 5e-5, "dt_SP": "1e-4"},
+                                    "in.column: dt_NSCD (5e-05) must be a multiple of dt_SP (1e-4)"),
+                                   ({"dt_SP": "-1e-3"}, "in.column: dt_SP must be > 0 (0: dt_NSCD for nscd grains, "
+                                                      "1e-4 for the stock models), got -1e-3"),
+                                   ({"t_obs": 0}, "in.column: t_obs must be > 0, got 0"),
+                                   ({"t_obs": "1e-4"}, "in.column: t_obs (1e-4) must be at least dt_SP (0.001)"),
+                                   ({"t_vtk": "1e-4"}, "in.column: t_vtk (1e-4) must be 0 or at least dt_SP (0.001)"),
+                                   ({"t_vtk": -1}, "in.column: t_vtk must be >= 0 (0: no VTK), got -1"),
                                    ({"box_height": -5}, "in.column: box_height must be >= 0 (0: 4 R + 10), got -5"),
                                    ({"ke_stop": -1}, "in.column: ke_stop must be >= 0 (0: off), got -1"),
                                    ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},

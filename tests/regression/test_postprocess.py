@@ -16,7 +16,7 @@ from liggghts_run import LIGGGHTS, DeckTestCase, main
 SOURCE = os.environ["WIREGRAIN_SOURCE"]
 POST = os.path.join(SOURCE, "postprocess")
 TINY = ["--var", "R", "3", "--var", "nlayers", "1", "--var", "Np", "13", "--var", "t_layer", "0.5",
-        "--var", "t_relax", "1", "--var", "t_end", "1.5", "--var", "every_obs", "1000"]
+        "--var", "t_relax", "1", "--var", "t_end", "1.5", "--var", "t_obs", "0.1"]
 
 
 def script(name, *args, cwd):
