@@ -6,12 +6,13 @@ import csv
 import glob
 import json
 import os
+import re
 import subprocess
 import tempfile
 
 import numpy as np
 
-from liggghts_run import LIGGGHTS, DeckTestCase, main
+from liggghts_run import LIGGGHTS, DeckTestCase, deck, main, run
 
 SOURCE = os.environ["WIREGRAIN_SOURCE"]
 POST = os.path.join(SOURCE, "postprocess")
@@ -109,6 +110,45 @@ class Sweep(DeckTestCase):
         obs = json.loads(text.splitlines()[-1])
         self.assertAlmostEqual(obs["H_n"], final["H_n"], delta=1e-14)
         self.assertEqual(obs["phi_p"], final["phi_p"])
+
+
+class EarlyEnd(DeckTestCase):
+    """postprocess/early_end.py reads a run made with ke_stop far below any kinetic energy
+    and says when each phase would have ended with a given ke_stop; the deck run with that
+    ke_stop is the independent answer (its own loop of chunks): the same end times and,
+    for the wall phase continued from the same relaxed column, the same observables."""
+    TINY_COLUMN = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1,
+                   "t_check": 0.1, "t_quiet": 0.2, "free_dist": 0.01}
+
+    def test_predicts_the_decks_early_end(self):
+        column = deck("input_scripts/in.column")
+        straight = run(column, variables=dict(self.TINY_COLUMN, ke_stop=1e-30))
+        self.assertRanCleanly(straight)
+        status, text = script("early_end.py", straight.path("log.liggghts"), "--ke-stop", "1e9", "0.8", "1e-30",
+                              "--t-quiet", "0.2", "--free-dist", "0.01", "--json", cwd=straight.workdir)
+        self.assertEqual(status, 0, text[-2000:])
+        print(text)
+        phases = json.loads(text.splitlines()[-1])["phases"]
+        # 1e-30 never ends a phase; 1e9 ends the relaxation after t_quiet (t_dep + 0.2 = 2.2)
+        # and the wall phase after max(t_quiet, free_dist / v_wall) = 0.5 (2.5 + 0.5)
+        relax, walls = phases["relax"]["candidates"], phases["walls"]["candidates"]
+        self.assertEqual([c["stops"] for c in relax][::2], [True, False])
+        self.assertAlmostEqual(relax[0]["t"], 2.2, delta=1e-12)
+        self.assertAlmostEqual(walls[0]["t"], 3.0, delta=1e-12)
+        for k, ke_stop in enumerate((1e9, 0.8)):
+            early = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop))
+            self.assertRanCleanly(early)
+            t = float(re.search(r"^in\.column relaxed at t = (\S+) ", early.output, re.M).group(1))
+            self.assertAlmostEqual(t, relax[k]["t"], delta=1e-12)
+            resumed = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop, resume=1),
+                          workdir=straight.workdir)
+            self.assertRanCleanly(resumed)
+            line = next(l for l in resumed.output.splitlines() if l.startswith("in.column final:"))
+            self.assertAlmostEqual(float(re.search(r" at t = (\S+) ", line).group(1)), walls[k]["t"], delta=1e-12)
+            for name, value in walls[k]["at_stop"].items():
+                # the thermo row holds 8 significant digits
+                got = float(re.search(re.escape(name) + r" = (\S+)", line).group(1))
+                self.assertAlmostEqual(got, value, delta=1e-7 * max(abs(got), 1e-12), msg=name)
 
 
 if __name__ == "__main__":
