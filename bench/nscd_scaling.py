@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Benchmark: time per NSCD step (fix nscd/polyhedra) for N grains resting on the floor
 of a box, split into gathering + contact detection and the Gauss-Seidel solve, for
-several N in one invocation; prints the time per grain to show how it scales.
+several N in one invocation; prints the time per grain and the exponent b of time ∝ N^b
+between consecutive N (1: linear), for the detection, the solve and both.
 
     bench/nscd_scaling.py [--liggghts build/liggghts] [--grains 100 1000 10000] [--steps 50]
 
@@ -46,6 +47,7 @@ def main():
     args = parser.parse_args()
     print(f"{'grains':>8} {'contacts':>9} {'sweeps':>7} {'detect ms':>10} {'solve ms':>9} "
           f"{'detect us/grain':>16} {'solve us/grain':>15}")
+    measured = []
     for n in args.grains:
         # a square layer: two staggered lattices of spacing 2 give n sites in a side of 2*sqrt(n/2)
         half = math.ceil(math.sqrt(n / 2.0)) + 1
@@ -61,7 +63,12 @@ def main():
         detect = sum(r[2] for r in rows) / len(rows)
         solve = sum(r[3] for r in rows) / len(rows)
         print(f"{n:8d} {contacts:9.0f} {sweeps:7.1f} {detect * 1e3:10.3f} {solve * 1e3:9.3f} "
-              f"{detect / n * 1e6:16.2f} {solve / n * 1e6:15.2f}")
+              f"{detect / n * 1e6:16.2f} {solve / n * 1e6:15.2f}", flush=True)
+        measured.append((n, detect, solve))
+    print("\nexponent b of time per step ∝ N^b between consecutive sizes (1: linear)")
+    for (n1, d1, s1), (n2, d2, s2) in zip(measured, measured[1:]):
+        b = [math.log(y / x) / math.log(n2 / n1) for x, y in ((d1, d2), (s1, s2), (d1 + s1, d2 + s2))]
+        print(f"  {n1} -> {n2} grains: detection {b[0]:.2f}, solve {b[1]:.2f}, step {b[2]:.2f}")
 
 
 if __name__ == "__main__":
