@@ -96,10 +96,11 @@ namespace {
 enum class StickSolveOutcome { kept, harmless, harmful };
 
 // One subspace correction (header): solve the closed contacts together, keep the result
-// if it halves the Siconos error `error_before`.
+// if it halves the Siconos error `error_before`; error_after: the Siconos error of the
+// impulses it leaves when kept.
 StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
                                       const std::vector<ContactState>& states, double regularization,
-                                      double error_before) {
+                                      double error_before, double& error_after) {
   const int n = op.contact_count();
   // Unknowns: the three components of each closed contact, only the normal one of a
   // frictionless contact (its tangential impulse is 0 and stays so).
@@ -182,7 +183,7 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
     op.add_impulse(c, delta.back());
     impulses[c] = updated;
   }
-  const double error_after = siconos_error(op, impulses);
+  error_after = siconos_error(op, impulses);
   if (error_after < 0.5 * error_before) return StickSolveOutcome::kept;
   for (int i = 0; i < static_cast<int>(solved.size()); ++i) {
     op.add_impulse(solved[i], -delta[i]);
@@ -232,12 +233,25 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     stick_solves = false;
   }
   bool stick_solve_harmed = false;
+  // The Siconos error of the current impulses, computed once: a sweep that changes an
+  // impulse and a stick solve that is not kept forget it (a dropped solve subtracts its
+  // increments again, which need not restore the impulses to the last bit).
+  double known_error = 0.0;
+  bool error_known = false;
+  const auto error_now = [&]() {
+    if (!error_known) known_error = siconos_error(op, result.impulses);
+    error_known = true;
+    return known_error;
+  };
   // one stick solve (header), counted in the report; returns the error before it
   const auto try_stick_solve = [&](StickSolveOutcome& outcome) {
-    const double error_before = siconos_error(op, result.impulses);
+    const double error_before = error_now();
     ++report.subspace_solves;
+    double error_after = 0.0;
     outcome = subspace_correction(op, result.impulses, result.states, options.subspace_regularization,
-                                  error_before);
+                                  error_before, error_after);
+    error_known = outcome == StickSolveOutcome::kept;
+    known_error = error_after;
     stick_solve_harmed |= outcome == StickSolveOutcome::harmful;
     if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
     return error_before;
@@ -277,6 +291,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         op.add_impulse(c, delta);
         r = updated;
         increment_squared += delta.squaredNorm();
+        error_known = false;
       }
       if (!frozen_until.empty() && delta.squaredNorm() <= options.tolerance * options.tolerance * r.squaredNorm())
         frozen_until[c] = iteration + 1 + options.freeze;
@@ -304,7 +319,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         // The error pass costs half a sweep; it is made after sweeps 1, 2, …, 20 and then
         // at intervals of at most a twentieth of the sweeps done (header).
         if (iteration >= next_error_check) {
-          report.residual = siconos_error(op, result.impulses);
+          report.residual = error_now();
           converged = report.residual <= options.tolerance;
           if (!converged) {
             check_interval = std::min(2 * check_interval, 1 + iteration / 20);
@@ -322,7 +337,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         // increment relates to the error.)
         report.residual = report.increment;
         if (report.increment <= options.tolerance && iteration >= next_error_check) {
-          const double error = siconos_error(op, result.impulses);
+          const double error = error_now();
           report.residual = error;
           if (error <= options.tolerance) {
             converged = true;
@@ -338,14 +353,14 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
     if (converged && stick_solves && report.subspace_accepted == 0) {
       StickSolveOutcome outcome;
       try_stick_solve(outcome);
-      if (outcome == StickSolveOutcome::kept) report.residual = siconos_error(op, result.impulses);
+      if (outcome == StickSolveOutcome::kept) report.residual = error_now();
     }
     if (converged) break;
     if (stick_solves && iteration >= next_subspace && iteration < options.max_iterations) {
       StickSolveOutcome outcome;
       const double error_before = try_stick_solve(outcome);
       if (outcome == StickSolveOutcome::kept) {
-        const double error = siconos_error(op, result.impulses);
+        const double error = error_now();
         if (options.measure != ConvergenceMeasure::increment && error <= options.tolerance) {
           report.residual = error;
           break;
@@ -370,7 +385,7 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
       backoff->skip = backoff->wait;
     }
   }
-  report.siconos_error = siconos_error(op, result.impulses);
+  report.siconos_error = error_now();
   return result;
 }
 
