@@ -497,6 +497,8 @@ std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandida
         p.normal.y() = next();
         p.normal.z() = next();
         p.gap = next();
+        // (the step uses position, normal and gap only: the surface points are not sent)
+        p.point_a = p.point_b = p.position;
         r.points.push_back(p);
       }
       if (w != me) found[i] = std::move(r);
