@@ -20,8 +20,8 @@ steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
                                (gather + detection) and f_nscd[23] (solve)
   communication, output        Comm, Outpt
   other                        the rest (gravity, computes, the loop itself)
-With --var dt_SP the extrapolation counts the steps of that dt_SP (in.column's dt_SP,
-default dt_NSCD; --var dt_SP 1e-4 is the paper's N = 10;
+The extrapolation counts the steps of the run's own Δt_SP (the deck prints it: by
+default Δt_NSCD, N = 1; --var dt_SP 1e-4 is the paper's N = 10; in.column's dt_SP,
 dt_NSCD and skin set the wire's sub-step, the grains' step and fix wire/grain's pair
 cache). Extrapolation: each layer's deposition at the measured cost per step of that layer's run
 × the paper's 10^5 steps per layer, plus (600 − 140)/Δt_SP steps at the complete column's
@@ -43,7 +43,7 @@ REPOSITORY = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 from wire_grain_contacts import timers  # noqa: E402  (LIGGGHTS' timer lines of one run)
 
-PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END, DT_NSCD = 10.0, 300.0, 600.0, 1e-3
+PAPER_T_LAYER, PAPER_T_RELAX, PAPER_T_END = 10.0, 300.0, 600.0
 NLAYERS = 7  # in.column's default
 
 
@@ -89,8 +89,6 @@ def main():
     args = parser.parse_args()
     given = dict(args.var)
     nlayers = int(given.get("nlayers", NLAYERS))
-    # the LIGGGHTS step of the run (in.column's dt_SP; its default 0 is dt_NSCD)
-    dt = float(given.get("dt_SP", 0)) or float(given.get("dt_NSCD", DT_NSCD))
 
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
     t_relax = 2 * nlayers * args.t_layer + args.t_after
@@ -117,6 +115,7 @@ run {args.sample}
     found = runs(out)
     if "ERROR" in out or len(found) < 2 * nlayers + 3:
         sys.exit(f"the column failed in {work} after {len(found)} runs:\n" + out[-3000:])
+    dt = float(re.search(r"^in\.column: dt_SP (\S+),", out, re.M).group(1))  # the run's LIGGGHTS step
 
     # the NSCD split from the sample run's thermo: f_nscd[22], f_nscd[23] in seconds
     last_rows = re.findall(r"^\s*\d+\s+\d+\s+\S+\s+\S+\s+([0-9.eE+-]+)\s+([0-9.eE+-]+)\s*$",
