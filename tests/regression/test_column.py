@@ -289,6 +289,7 @@ class Column(DeckTestCase):
                                     "in.column: t_relax (10) must be at least the deposition time"),
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
+                                   ({"resume": 3}, "in.column: resume must be 0, 1 or 2, got 3"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (4 R = 4)"),
                                    ({"E_w": -5}, "pair wire/contact (id -): youngsModulus of atom type 2 must be "
