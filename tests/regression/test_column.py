@@ -280,6 +280,15 @@ class Column(DeckTestCase):
             self.assertLessEqual(dt, 0.5 * limit)
             self.assertIn(f"in.column: dt_SP {dt:g}, dt_NSCD 1e-3", result.output)
 
+    def test_a_grain_leaving_the_box_stops_the_run(self):
+        # the box 5 wide on each side of the axis (box_half; the walls at 4.5), the walls
+        # moved away at 1 until t = 8: the tiny column spreads past the box's side and the
+        # run stops (each phase's thermo_style keeps `thermo_modify lost error`; before,
+        # a new thermo_style reset it and grains left the tall columns unnoticed)
+        lost = run(COLUMN, variables=dict(TINY, box_half=5, v_wall=1, t_end=8))
+        self.assertIn("grain(s) of the group lost", lost.output)
+        self.assertStopsWith(lost, "Lost atoms")
+
     def test_bad_variables(self):
         for variables, message in (({"R": 0}, "in.column: R must be > 0, got 0"),
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
@@ -291,7 +300,9 @@ class Column(DeckTestCase):
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
                                    ({"resume": 3}, "in.column: resume must be 0, 1 or 2, got 3"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
-                                   ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (4 R = 4)"),
+                                   ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (half-width 4)"),
+                                   ({"box_half": 4}, "in.column: margin (1.5) puts the side walls outside the box (half-width 4)"),
+                                   ({"box_half": -1}, "in.column: box_half must be >= 0 (0: 4 R), got -1"),
                                    ({"E_w": -5}, "pair wire/contact (id -): youngsModulus of atom type 2 must be "
                                                  "a finite number > 0, got -5"),
                                    ({"dt_NSCD": 2.5e-4, "dt_SP": "1e-4"},
