@@ -5,12 +5,14 @@ both phases ran in chunks of t_check and the thermo output has the kinetic energ
 at the end of every chunk.
 
     mpirun -np 2 build/liggghts -in input_scripts/in.column -var ke_stop 1e-30 -var t_check 0.5 > out.txt
-    postprocess/early_end.py out.txt --ke-stop 1e-4 1e-5 1e-6 [--t-quiet 5] [--free-dist 2]
-        [--v-wall 0.02] [--a-max 1] [--json]
+    postprocess/early_end.py out.txt --ke-stop 1e-4 1e-5 1e-6 [--ke-of grains|all] [--t-quiet 5]
+        [--free-dist 2] [--v-wall 0.02] [--a-max 1] [--json]
 
-For each ke_stop, the deck's rule applied to the recorded chunks (after every chunk: quiet +=
-t_check if KE per grain < ke_stop, else quiet = 0; the phase ends once quiet >= t_quiet, the
-wall phase not before the walls have moved free_dist a_max):
+For each ke_stop, the deck's rule (input_scripts/in.run_until_quiet) applied to the recorded
+chunks (after every chunk: quiet += t_check if KE per grain < ke_stop, else quiet = 0; the
+phase ends once quiet >= t_quiet, the wall phase not before the walls have moved free_dist
+a_max), with the kinetic energy of the grains (thermo column ke_grain, the deck's default
+ke_of) or of grains and wire (ke_all; the column ke_rel of outputs from before ke_of):
   relaxation  the time it would have ended at and the share of its steps skipped; what the
               column does after an earlier start of the walls is another trajectory, so no
               observables are given for it (run the deck with that ke_stop);
@@ -29,19 +31,24 @@ import re
 OBSERVABLES = (("Hn", "H_n"), ("phi[1]", "phi_p"), ("Us", "U_s/L"), ("zwpc", "z_wpc"))
 
 
-def chunks(text):
-    """The chunks of both phases: [(phase, end step, ke_rel, {column: value}, loop seconds)],
-    phase 'relax' (a run whose thermo has ke_rel but no Hn) or 'walls' (both): each run's
-    last thermo row before its "Loop time" line (warnings between the rows are skipped)."""
+def chunks(text, ke_of="grains"):
+    """The chunks of both phases: [(phase, end step, KE per grain, {column: value}, loop seconds)],
+    phase 'relax' (a run whose thermo has the KE but no Hn) or 'walls' (both): each run's
+    last thermo row before its "Loop time" line (warnings between the rows are skipped).
+    The KE is the column ke_grain or ke_all (ke_of), or ke_rel (grains and wire) in the
+    output of a deck from before ke_of."""
+    # (LIGGGHTS cuts thermo column names to 8 characters: v_ke_grains is "ke_grain")
+    wanted = tuple(name[:8] for name in (("ke_" + ke_of, "ke_rel") if ke_of == "all" else ("ke_" + ke_of,)))
     found, header, last = [], None, None
     for line in text.splitlines():
         words = line.split()
         if words[:1] == ["Step"]:
             header, last = words, None
         elif words[:2] == ["Loop", "time"]:
-            if header is not None and last is not None and "ke_rel" in header:
+            column = next((c for c in wanted if header is not None and c in header), None)
+            if column is not None and last is not None:
                 row = dict(zip(header, last))
-                found.append(("walls" if "Hn" in header else "relax", int(row["Step"]), row["ke_rel"], row,
+                found.append(("walls" if "Hn" in header else "relax", int(row["Step"]), row[column], row,
                               float(words[3])))
             header, last = None, None
         elif header is not None and len(words) == len(header) and re.fullmatch(r"-?\d+", words[0]):
@@ -62,18 +69,18 @@ def stop_index(series, ke_stop, t_check, t_quiet, first_allowed=0):
     return None
 
 
-def analyse(text, ke_stops, t_quiet, free_dist, v_wall, a_max):
+def analyse(text, ke_stops, t_quiet, free_dist, v_wall, a_max, ke_of="grains"):
     m = re.search(r"^in\.column: dt_SP (\S+), dt_NSCD", text, re.M)
     if not m:
         raise SystemExit("early_end.py: no 'in.column: dt_SP ...' line: not an in.column output")
     dt = float(m.group(1))
-    found = chunks(text)
+    found = chunks(text, ke_of)
     result = {"dt": dt, "phases": {}}
     for phase in ("relax", "walls"):
         part = [c for c in found if c[0] == phase]
         if len(part) < 2:
-            raise SystemExit(f"early_end.py: the {phase} phase has {len(part)} chunks: run the deck with "
-                             "ke_stop far below any kinetic energy (e.g. -var ke_stop 1e-30)")
+            raise SystemExit(f"early_end.py: the {phase} phase has {len(part)} chunks with a ke_{ke_of} column: run "
+                             "the deck with ke_stop far below any kinetic energy (e.g. -var ke_stop 1e-30)")
         steps = [c[1] for c in part]
         chunk_steps = steps[1] - steps[0]
         t_check = chunk_steps * dt
@@ -106,6 +113,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("output", help="the screen output or log.liggghts of the run")
     parser.add_argument("--ke-stop", type=float, nargs="+", required=True)
+    parser.add_argument("--ke-of", choices=("grains", "all"), default="grains",
+                        help="whose kinetic energy: the grains' (default, as the deck) or everything's")
     parser.add_argument("--t-quiet", type=float, default=5.0)
     parser.add_argument("--free-dist", type=float, default=2.0)
     parser.add_argument("--v-wall", type=float, default=0.02)
@@ -114,7 +123,7 @@ def main():
     args = parser.parse_args()
     with open(args.output, errors="replace") as f:
         text = f.read()
-    result = analyse(text, args.ke_stop, args.t_quiet, args.free_dist, args.v_wall, args.a_max)
+    result = analyse(text, args.ke_stop, args.t_quiet, args.free_dist, args.v_wall, args.a_max, args.ke_of)
     for phase, info in result["phases"].items():
         kes = [ke for _, ke in info["ke_rel"]]
         print(f"{phase}: t {info['t_start']:g} to {info['t_end']:g}, {info['chunks']} chunks of {info['t_check']:g}, "

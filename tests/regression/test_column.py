@@ -16,7 +16,7 @@ import numpy as np
 from liggghts_run import SOURCE, DeckTestCase, deck, main, run
 
 COLUMN = deck("input_scripts/in.column")
-TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1}
+TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1, "root": SOURCE}
 NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc")
 
 
@@ -321,6 +321,7 @@ class Column(DeckTestCase):
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
                                    ({"grains": "cubes"}, "Label wasn't found in input script"),
+                                   ({"ke_of": "wire"}, "Label wasn't found in input script"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)

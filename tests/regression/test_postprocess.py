@@ -12,7 +12,7 @@ import tempfile
 
 import numpy as np
 
-from liggghts_run import LIGGGHTS, DeckTestCase, deck, main, run
+from liggghts_run import LIGGGHTS, SOURCE, DeckTestCase, deck, main, run
 
 SOURCE = os.environ["WIREGRAIN_SOURCE"]
 POST = os.path.join(SOURCE, "postprocess")
@@ -118,29 +118,37 @@ class EarlyEnd(DeckTestCase):
     ke_stop is the independent answer (its own loop of chunks): the same end times and,
     for the wall phase continued from the same relaxed column, the same observables."""
     TINY_COLUMN = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1,
-                   "t_check": 0.1, "t_quiet": 0.2, "free_dist": 0.01}
+                   "t_check": 0.1, "t_quiet": 0.2, "free_dist": 0.01, "root": SOURCE}
 
     def test_predicts_the_decks_early_end(self):
         column = deck("input_scripts/in.column")
         straight = run(column, variables=dict(self.TINY_COLUMN, ke_stop=1e-30))
         self.assertRanCleanly(straight)
-        status, text = script("early_end.py", straight.path("log.liggghts"), "--ke-stop", "1e9", "0.8", "1e-30",
-                              "--t-quiet", "0.2", "--free-dist", "0.01", "--json", cwd=straight.workdir)
-        self.assertEqual(status, 0, text[-2000:])
-        print(text)
-        phases = json.loads(text.splitlines()[-1])["phases"]
+        phases = {}
+        for ke_of in ("grains", "all"):
+            status, text = script("early_end.py", straight.path("log.liggghts"), "--ke-stop", "1e9", "0.45", "1e-30",
+                                  "--ke-of", ke_of, "--t-quiet", "0.2", "--free-dist", "0.01", "--json",
+                                  cwd=straight.workdir)
+            self.assertEqual(status, 0, text[-2000:])
+            print(text)
+            phases[ke_of] = json.loads(text.splitlines()[-1])["phases"]
         # 1e-30 never ends a phase; 1e9 ends the relaxation after t_quiet (t_dep + 0.2 = 2.2)
         # and the wall phase after max(t_quiet, free_dist / v_wall) = 0.5 (2.5 + 0.5)
-        relax, walls = phases["relax"]["candidates"], phases["walls"]["candidates"]
+        relax, walls = phases["grains"]["relax"]["candidates"], phases["grains"]["walls"]["candidates"]
         self.assertEqual([c["stops"] for c in relax][::2], [True, False])
         self.assertAlmostEqual(relax[0]["t"], 2.2, delta=1e-12)
         self.assertAlmostEqual(walls[0]["t"], 3.0, delta=1e-12)
-        for k, ke_stop in enumerate((1e9, 0.8)):
-            early = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop))
+        # the grains' kinetic energy is part of everything's
+        for phase in ("relax", "walls"):
+            for (t, grains), (_, everything) in zip(phases["grains"][phase]["ke_rel"], phases["all"][phase]["ke_rel"]):
+                self.assertLessEqual(grains, everything, f"{phase} t = {t}")
+        for ke_of, k, ke_stop in (("grains", 0, 1e9), ("grains", 1, 0.45), ("all", 1, 0.45)):
+            relax, walls = phases[ke_of]["relax"]["candidates"], phases[ke_of]["walls"]["candidates"]
+            early = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop, ke_of=ke_of))
             self.assertRanCleanly(early)
             t = float(re.search(r"^in\.column relaxed at t = (\S+) ", early.output, re.M).group(1))
             self.assertAlmostEqual(t, relax[k]["t"], delta=1e-12)
-            resumed = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop, resume=1),
+            resumed = run(column, variables=dict(self.TINY_COLUMN, ke_stop=ke_stop, ke_of=ke_of, resume=1),
                           workdir=straight.workdir)
             self.assertRanCleanly(resumed)
             line = next(l for l in resumed.output.splitlines() if l.startswith("in.column final:"))
@@ -149,7 +157,6 @@ class EarlyEnd(DeckTestCase):
                 # the thermo row holds 8 significant digits
                 got = float(re.search(re.escape(name) + r" = (\S+)", line).group(1))
                 self.assertAlmostEqual(got, value, delta=1e-7 * max(abs(got), 1e-12), msg=name)
-
 
 if __name__ == "__main__":
     main()

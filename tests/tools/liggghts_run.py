@@ -91,6 +91,35 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
     return Run(proc.returncode, proc.stdout.decode(errors="replace"), workdir)
 
 
+def grains_data(shape, poses, density=1.0, sweep=0.0, box=(-30, 30, -30, 30, -1, 60)):
+    """Run create_grains for len(poses) grains of one fixed shape (e.g. "cube 1") and
+    rewrite the data file with the given poses [(x, y, z, qw, qi, qj, qk), ...].
+    Returns the run (its workdir holds grains.data and grains.shapes)."""
+    made = run(f"""
+units lj
+atom_style polyhedron
+atom_modify map array sort 0 0.0
+boundary f f f
+region box block {' '.join(map(str, box))}
+create_box 1 box
+create_grains 1 {len(poses)} random box seed 7 shape {shape} sweep {sweep} density {density}
+write_data grains.data
+grain_shapes write grains.shapes
+""")
+    with open(made.path("grains.data")) as f:
+        lines = f.read().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Atoms")) + 2
+    for n, pose in enumerate(poses):
+        words = lines[k + n].split()
+        x, y, z, qw, qi, qj, qk = pose
+        words[4:8] = [repr(qw), repr(qi), repr(qj), repr(qk)]
+        words[8:11] = [repr(x), repr(y), repr(z)]
+        lines[k + n] = " ".join(words)
+    with open(made.path("grains.data"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return made
+
+
 def warning_lines(output, text=""):
     """The WARNING lines containing `text`, without 'WARNING: ' and the source location."""
     return [re.sub(r" \([^()]*:\d+\)$", "", line[len("WARNING: "):]) for line in output.splitlines()
