@@ -4,14 +4,19 @@ deviation over the seeds (the paper's Figs. 8–11).
 
     postprocess/plot_sweep.py sweeps/mu_w/summary.csv [more summary.csv ...] -o mu_w.png
         [--label "μ_w"] [--legend "with wire" ...] [--table]
-        [--baseline sweeps/wire/summary.csv --baseline-label "no wire"]
+        [--baseline sweeps/wire/summary.csv --baseline-label "no wire" [--paired]]
 
 Input: the summary.csv of postprocess/sweep.py (one row per run). Output: one PNG with four
 panels, H_n, φ_p, U_s/L (wire elastic energy per wire length, in ρ₁ g a_max³ where ρ₁ is
 the density unit of Table 1, ρ_p = 1.5 ρ₁, and lengths are in a_max, g = 1) and z_wpc,
 each against the parameter; one line per summary file. --table prints the means, standard deviations and seed counts. --baseline:
 the runs of another summary (e.g. the same column without wire) as a horizontal line at
-their mean with a band of ± one standard deviation.
+their mean with a band of ± one standard deviation. --paired (with --baseline): prints, for
+every value, the seed-by-seed differences from the baseline run of the same seed (the same
+seed deposits the same grain layers, so these pairs compare best) for H_n, the final
+height H and the four observables: the mean difference ± its standard error (std ddof 1
+over √n), n the seeds both have, and their ratio (|ratio| > 2: a difference beyond the
+seeds' noise at about 95 %).
 Uses Debian's python3-matplotlib and numpy."""
 
 import argparse
@@ -43,6 +48,31 @@ def read_summary(path):
     return param, dict(sorted(groups.items()))
 
 
+def read_rows(path):
+    """{(value, seed): row} of a summary.csv, numbers as floats."""
+    with open(path, newline="") as f:
+        return {(float(r["value"]), int(r["seed"])): {k: float(v) for k, v in r.items() if k not in ("param", "value", "seed")}
+                for r in csv.DictReader(f)}
+
+
+def paired_differences(rows, baseline_rows, name):
+    """{value: (mean, standard error, n)} of rows[value, seed][name] − baseline[seed][name]
+    over the seeds both have (the baseline's runs by seed, whatever its value); a value with
+    fewer than two common seeds has no standard error (nan)."""
+    base = {}
+    for (_, seed), row in baseline_rows.items():
+        if seed in base:
+            sys.exit(f"plot_sweep.py: the baseline has two runs of seed {seed}")
+        base[seed] = row[name]
+    out = {}
+    for value in sorted({v for v, _ in rows}):
+        d = np.array([row[name] - base[seed] for (v, seed), row in sorted(rows.items()) if v == value and seed in base])
+        if len(d):
+            se = d.std(ddof=1) / np.sqrt(len(d)) if len(d) > 1 else float("nan")
+            out[value] = (d.mean(), se, len(d))
+    return out
+
+
 def statistics(groups, name):
     """values, means, standard deviations (ddof 1; 0 for one seed), seed counts."""
     values = np.array(list(groups))
@@ -61,7 +91,11 @@ def main():
     parser.add_argument("--table", action="store_true")
     parser.add_argument("--baseline", default=None, help="a summary.csv drawn as mean ± std across every panel")
     parser.add_argument("--baseline-label", default="baseline")
+    parser.add_argument("--paired", action="store_true",
+                        help="print each value's seed-by-seed differences from the baseline (mean ± standard error)")
     args = parser.parse_args()
+    if args.paired and not args.baseline:
+        parser.error("--paired needs --baseline")
     if args.legend and len(args.legend) != len(args.summaries):
         parser.error(f"--legend needs one label per summary file ({len(args.summaries)})")
 
@@ -88,6 +122,15 @@ def main():
             ax.axhspan(mean - std, mean + std, color="k", alpha=0.1)
             if args.table:
                 print(f"{args.baseline_label}\t{name} = {mean:.4g} ± {std:.2g} ({len(samples)} runs)")
+    if args.paired:
+        baseline_rows = read_rows(args.baseline)
+        for k, path in enumerate(args.summaries):
+            legend = args.legend[k] if args.legend else path
+            rows = read_rows(path)
+            for name in ("H_n", "H", "phi_p", "U_s/L", "z_wpc"):
+                for value, (mean, se, n) in paired_differences(rows, baseline_rows, name).items():
+                    ratio = f"; {mean / se:+.2f} standard errors" if se > 0 else ""
+                    print(f"{legend} − {args.baseline_label}\t{value:g}\t{name}: {mean:+.4g} ± {se:.2g} ({n} seeds{ratio})")
     for ax in axes.flat:
         ax.grid(alpha=0.3)
     axes.flat[0].legend(fontsize=8)

@@ -88,6 +88,29 @@ class Sweep(DeckTestCase):
             with open(os.path.join(self.work, png), "rb") as f:
                 self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", png)
 
+    def test_paired_differences(self):
+        # hand-made tables: the differences from the baseline of the same seed are
+        # (0.125, 0.25, 0) at value 0.6 (mean 0.125, std 0.125, standard error 0.125/√3)
+        # and (−0.125, +0.125) at 0.1, whose seed 4 has no baseline run (mean 0, standard
+        # error 0.125)
+        work = tempfile.mkdtemp(prefix="wiregrain-paired-")
+        header = "param,value,seed,H_n,phi_p,U_s/L,z_wpc,H0,H,wall_s\n"
+        with open(os.path.join(work, "base.csv"), "w") as f:
+            f.write(header + "".join(f"wire,0,{s},{h},0.5,0,0,8,{8 * h},1\n" for s, h in ((1, 0.5), (2, 0.25), (3, 0.75))))
+        with open(os.path.join(work, "wire.csv"), "w") as f:
+            f.write(header + "".join(f"mu_w,{v},{s},{h},0.5,0.01,0.5,8,{8 * h},1\n" for v, s, h in
+                                     ((0.6, 1, 0.625), (0.6, 2, 0.5), (0.6, 3, 0.75), (0.1, 1, 0.375), (0.1, 2, 0.375), (0.1, 4, 0.9))))
+        status, text = script("plot_sweep.py", "wire.csv", "-o", "p.png", "--baseline", "base.csv",
+                              "--baseline-label", "none", "--legend", "wire", "--paired", cwd=work)
+        self.assertEqual(status, 0, text)
+        self.assertIn(f"wire − none\t0.6\tH_n: +0.125 ± {0.125 / 3 ** 0.5:.2g} (3 seeds; +{3 ** 0.5:.2f} standard errors)", text)
+        self.assertIn("wire − none\t0.1\tH_n: +0 ± 0.12 (2 seeds; +0.00 standard errors)", text)
+        # the final height H = 8 H_n here: its differences are 8 times those of H_n
+        self.assertIn(f"wire − none\t0.6\tH: +1 ± {1 / 3 ** 0.5:.2g} (3 seeds; +{3 ** 0.5:.2f} standard errors)", text)
+        status, text = script("plot_sweep.py", "wire.csv", "-o", "p.png", "--paired", cwd=work)
+        self.assertEqual(status, 2)
+        self.assertIn("--paired needs --baseline", text)
+
     def test_sphere_column(self):
         # a column of stock spheres (-var grains spheres, with rolling friction):
         # plot_columns.py draws its legacy VTK, observables.py reads its dumps without a
