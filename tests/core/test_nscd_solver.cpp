@@ -9,6 +9,7 @@
 
 #include "core/common/errors.h"
 #include "core/nscd/nscd_solver.h"
+#include "cube_lattice.h"
 
 using namespace wiregrain;
 using Eigen::Matrix3d;
@@ -689,4 +690,63 @@ TEST(NscdOptions, BadInput) {
     p.mu = {0.3};
     solve_reduced(p, options);
   });
+}
+
+namespace {
+
+// The body operator with the interface's own normal_velocity (velocity(c)[0], the whole u).
+class WholeVelocityOperator final : public ContactOperator {
+ public:
+  explicit WholeVelocityOperator(ContactOperator& inner) : inner_(inner) {}
+  int contact_count() const override { return inner_.contact_count(); }
+  const LocalDelassus& delassus_block(int c) const override { return inner_.delassus_block(c); }
+  double friction_coefficient(int c) const override { return inner_.friction_coefficient(c); }
+  Vector3d velocity(int c) const override { return inner_.velocity(c); }
+  void add_impulse(int c, const Vector3d& delta) override { inner_.add_impulse(c, delta); }
+  double free_velocity_norm() const override { return inner_.free_velocity_norm(); }
+  const BlockSparseMatrix3& delassus_matrix() override { return inner_.delassus_matrix(); }
+
+ private:
+  ContactOperator& inner_;
+};
+
+}  // namespace
+
+// The sweep passes over a contact without impulse whose u_n ≥ 0 after reading u_n alone
+// (ContactOperator::normal_velocity). On the body operator that u_n must be velocity(c)[0]
+// to the bit whatever the impulses, and a solve must give, to the bit, the impulses of a
+// solve on the same operator that reads the whole u instead. The pile: 4×4×3 cubes with
+// jittered velocities and gaps (bench/cube_lattice.h), its contacts open, sticking and
+// sliding.
+TEST(NscdOperators, OpenContactTestReadsTheNormalVelocityToTheBit) {
+  const NscdStep step = wiregrain_bench::cube_lattice(4, 4, 3, 7, 0.5, true);
+  NscdOptions options;
+  options.tolerance = 0.0;  // exactly max_iterations sweeps
+  options.max_iterations = 60;
+  const std::unique_ptr<ContactOperator> op = body_contact_operator(step, options);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> impulse(-1e-3, 1e-3);
+  for (int round = 0; round < 3; ++round) {
+    for (int c = 0; c < op->contact_count(); ++c) {
+      ASSERT_EQ(op->normal_velocity(c), op->velocity(c)[0]) << "round " << round << ", contact " << c;
+    }
+    for (int c = round; c < op->contact_count(); c += 3) {
+      op->add_impulse(c, Vector3d(impulse(rng), impulse(rng), impulse(rng)));
+    }
+  }
+
+  const std::unique_ptr<ContactOperator> fast = body_contact_operator(step, options);
+  const std::unique_ptr<ContactOperator> plain = body_contact_operator(step, options);
+  WholeVelocityOperator whole(*plain);
+  const ContactSolution a = solve_frictional_contact(*fast, options);
+  const ContactSolution b = solve_frictional_contact(whole, options);
+  EXPECT_GT(a.report.open, 0);
+  EXPECT_GT(a.report.stick + a.report.slide, 0);
+  ASSERT_EQ(a.impulses.size(), b.impulses.size());
+  for (std::size_t c = 0; c < a.impulses.size(); ++c) {
+    EXPECT_EQ(a.impulses[c], b.impulses[c]) << "contact " << c;
+    EXPECT_EQ(a.states[c], b.states[c]) << "contact " << c;
+  }
+  EXPECT_EQ(a.report.iterations, b.report.iterations);
+  EXPECT_EQ(a.report.siconos_error, b.report.siconos_error);
 }

@@ -276,8 +276,17 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         ++counts[static_cast<int>(result.states[c])];
         continue;
       }
-      const LocalDelassus& W = op.delassus_block(c);
       Eigen::Vector3d& r = result.impulses[c];
+      // A contact without impulse whose u_n ≥ 0 stays open: its local solution is r = 0
+      // (solve_coulomb_local's first case, q_n = u_n − (W 0)_n = u_n), nothing changes; u_n
+      // alone costs a third of u (on a settled pile most detected contacts are open).
+      if (r.isZero(0.0) && op.normal_velocity(c) >= 0.0) {
+        if (!frozen_until.empty()) frozen_until[c] = iteration + 1 + options.freeze;
+        result.states[c] = ContactState::open;
+        ++counts[static_cast<int>(ContactState::open)];
+        continue;
+      }
+      const LocalDelassus& W = op.delassus_block(c);
       const Eigen::Vector3d q_local = op.velocity(c) - W.matrix() * r;
       const LocalSolution local = solve_coulomb_local(W, q_local, op.friction_coefficient(c), r);
       report.newton_iterations += local.newton_iterations;
@@ -503,6 +512,15 @@ class BodyContactOperator final : public ContactOperator {
     if (link.body_b >= 0) side_b = side_velocity(link.jacobian_b, velocities_[link.body_b]);
     return link.constant + (side_a + side_b);
   }
+  // The first row of velocity(c), summed in the same order (the same bits: checked against
+  // velocity(c)[0] by the core test SolverOperators.NormalVelocityIsTheFirstRowToTheBit).
+  double normal_velocity(int c) const override {
+    const Link& link = links_[c];
+    double side_a = 0.0, side_b = 0.0;
+    if (link.body_a >= 0) side_a = side_normal_velocity(link.jacobian_a, velocities_[link.body_a]);
+    if (link.body_b >= 0) side_b = side_normal_velocity(link.jacobian_b, velocities_[link.body_b]);
+    return link.constant[0] + (side_a + side_b);
+  }
   void add_impulse(int c, const Eigen::Vector3d& delta) override {
     const Link& link = links_[c];
     if (link.body_a >= 0) velocities_[link.body_a].noalias() += link.response_a * delta;
@@ -537,7 +555,7 @@ class BodyContactOperator final : public ContactOperator {
   const std::vector<Vector6d>& body_velocities() const { return velocities_; }
   double start_normal_velocity(int c) const { return start_normal_velocity_[c]; }
   // Normal velocity without the shift s_c.
-  double normal_velocity(int c, const NscdStep& step) const {
+  double unshifted_normal_velocity(int c, const NscdStep& step) const {
     return velocity(c)[0] - links_[c].constant[0] + step.contacts[c].velocity_offset[0];
   }
 
@@ -556,6 +574,12 @@ class BodyContactOperator final : public ContactOperator {
     const Eigen::Vector3d angular = H.rightCols<3>() * V.tail<3>();
     return linear + angular;
   }
+  // its first row: Eigen sums a row of a 3×3 product left to right
+  static double side_normal_velocity(const ContactJacobian& H, const Vector6d& V) {
+    const double linear = H(0, 0) * V[0] + H(0, 1) * V[1] + H(0, 2) * V[2];
+    const double angular = H(0, 3) * V[3] + H(0, 4) * V[4] + H(0, 5) * V[5];
+    return linear + angular;
+  }
 
   std::vector<Link> links_;
   std::vector<Vector6d> velocities_;
@@ -566,6 +590,11 @@ class BodyContactOperator final : public ContactOperator {
 };
 
 }  // namespace
+
+std::unique_ptr<ContactOperator> body_contact_operator(const NscdStep& step, const NscdOptions& options) {
+  options.validate();
+  return std::make_unique<BodyContactOperator>(step, options);
+}
 
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
                                const std::vector<Eigen::Vector3d>& warm_start,
@@ -586,7 +615,7 @@ NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
     const double g = step.contacts[c].gap;
     result.max_overlap = std::max(result.max_overlap, -g);
     const double predicted =
-        g + h * ((1.0 - theta) * op.start_normal_velocity(c) + theta * op.normal_velocity(c, step));
+        g + h * ((1.0 - theta) * op.start_normal_velocity(c) + theta * op.unshifted_normal_velocity(c, step));
     result.max_predicted_penetration = std::max(result.max_predicted_penetration, -predicted);
   }
   return result;

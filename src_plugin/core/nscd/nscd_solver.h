@@ -102,6 +102,7 @@
 
 #include <Eigen/Dense>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/nscd/coulomb_local.h"
@@ -208,6 +209,9 @@ class ContactOperator {
   virtual double friction_coefficient(int contact) const = 0;
   // u_c = (W r + q)_c for the impulses added so far.
   virtual Eigen::Vector3d velocity(int contact) const = 0;
+  // Its normal component alone, equal to velocity(contact)[0] to the bit: the sweep's test
+  // of a contact without impulse that stays open (u_n ≥ 0: r = 0 is its local solution).
+  virtual double normal_velocity(int contact) const { return velocity(contact)[0]; }
   // r_c += delta; updates what velocity() depends on.
   virtual void add_impulse(int contact, const Eigen::Vector3d& delta) = 0;
   // ‖q‖ (all contacts), the Siconos error's normalisation.
@@ -287,6 +291,11 @@ struct NscdStepResult {
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
                                const std::vector<Eigen::Vector3d>& warm_start = {},
                                StickSolveBackoff* backoff = nullptr);
+
+// The operator solve_nscd_step sweeps on (u_c = H_c V + s_c e_n from the bodies'
+// velocities V, W never formed), for tests and benchmarks of the sweep itself; the same
+// InvalidArgument as solve_nscd_step on bad input.
+std::unique_ptr<ContactOperator> body_contact_operator(const NscdStep& step, const NscdOptions& options);
 
 // Local frame from a unit normal n (normalised here): columns (n, t1, t2), right-handed,
 // t1 ⟂ n chosen from the coordinate axis least aligned with n.
