@@ -161,15 +161,11 @@ void PairWireContact::init_style() {
   // the damping needs the velocities of ghost beads
   comm->ghost_velocity = 1;
 
-  double local[2] = {0.0, 0.0}, global[2];
-  for (int i = 0; i < atom->nlocal; i++) {
-    local[0] = std::max(local[0], wire_->wire_rest[i]);
-    local[1] = std::max(local[1], atom->radius[i]);
-  }
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
-  reach_ = 2.0 * global[1] + 2.0 * kStretchAllowance * global[0];
+  extent_ = gather_wire_extent();
+  const double thickest = *std::max_element(extent_.radius.begin(), extent_.radius.end());
+  reach_ = 2.0 * thickest + 2.0 * kStretchAllowance * extent_.rest;
   // the next bead of a ghost segment must be a ghost too
-  wiregrain_lmp::ensure_ghost_reach(lmp, reach_ + kStretchAllowance * global[0] + neighbor->skin);
+  wiregrain_lmp::ensure_ghost_reach(lmp, reach_ + kStretchAllowance * extent_.rest + neighbor->skin);
 
   const int ifix = modify->find_fix(kHistoryId);
   if (ifix < 0) {
@@ -194,7 +190,32 @@ double PairWireContact::init_one(int i, int j) {
   const wiregrain::ElasticMaterial side_j = wiregrain_lmp::wire_material_of_type(lmp, j, c.material, "pair", "wire/contact", "-");
   effective_modulus_[i][j] = effective_modulus_[j][i] = wiregrain::wire_wire_modulus(side_i, side_j);
   friction_[i][j] = friction_[j][i] = c.friction;
-  return reach_;
+  // (a grain type's pairs, 0: LIGGGHTS then lists none of them; before, every pair within
+  // twice the largest radius of any atom was listed, grains' too: 323 neighbours per atom
+  // in a tall column where the beads need about 30)
+  if (extent_.radius[i] == 0.0 || extent_.radius[j] == 0.0) return 0.0;
+  return extent_.radius[i] + extent_.radius[j] + 2.0 * kStretchAllowance * extent_.rest;
+}
+
+PairWireContact::WireExtent PairWireContact::gather_wire_extent() const {
+  const int ntypes = atom->ntypes, *type = atom->type;
+  const int *next = wire_->wire_next, *prev = wire_->wire_prev;
+  // per type the largest radius; then the longest rest length, −the lightest mass
+  std::vector<double> local(ntypes + 3, 0.0), global(ntypes + 3);
+  local[ntypes + 2] = -INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!next[i] && !prev[i]) continue;  // a lone bead is no segment
+    local[type[i]] = std::max(local[type[i]], atom->radius[i]);
+    if (next[i]) local[ntypes + 1] = std::max(local[ntypes + 1], wire_->wire_rest[i]);
+    local[ntypes + 2] = std::max(local[ntypes + 2], -atom->rmass[i]);
+  }
+  MPI_Allreduce(local.data(), global.data(), ntypes + 3, MPI_DOUBLE, MPI_MAX, world);
+  WireExtent extent;
+  extent.radius.assign(global.begin(), global.begin() + ntypes + 1);
+  extent.radius[0] = 0.0;
+  extent.rest = global[ntypes + 1];
+  extent.lightest_mass = -global[ntypes + 2];
+  return extent;
 }
 
 // Each segment pair is computed once, by the rank that owns the first bead of the segment
@@ -357,30 +378,20 @@ void PairWireContact::compute(int eflag, int vflag) {
 // wire types present, the longest segment and the thickest bead, on the reduced mass of
 // two of the lightest beads (the contact point at a segment end moves with its bead).
 void PairWireContact::check_time_step() {
-  const int ntypes = atom->ntypes, *type = atom->type;
-  const int *next = wire_->wire_next, *prev = wire_->wire_prev;
-  // per type: present; then the longest rest length, the largest radius, −the lightest mass
-  std::vector<double> local(ntypes + 4, 0.0), global(ntypes + 4);
-  local[ntypes + 3] = -INFINITY;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!next[i] && !prev[i]) continue;  // a lone bead is no segment
-    local[type[i]] = 1.0;
-    if (next[i]) local[ntypes + 1] = std::max(local[ntypes + 1], wire_->wire_rest[i]);
-    local[ntypes + 2] = std::max(local[ntypes + 2], atom->radius[i]);
-    local[ntypes + 3] = std::max(local[ntypes + 3], -atom->rmass[i]);
-  }
-  MPI_Allreduce(local.data(), global.data(), ntypes + 4, MPI_DOUBLE, MPI_MAX, world);
+  const WireExtent extent = gather_wire_extent();
+  const int ntypes = atom->ntypes;
+  const double thickest = *std::max_element(extent.radius.begin(), extent.radius.end());
   std::vector<wiregrain_lmp::ContactSpring> springs;
-  if (global[ntypes + 1] > 0.0 && std::isfinite(global[ntypes + 3]))
+  if (extent.rest > 0.0 && std::isfinite(extent.lightest_mass))
     for (int i = 1; i <= ntypes; i++)
       for (int j = i; j <= ntypes; j++) {
-        if (global[i] == 0.0 || global[j] == 0.0) continue;
+        if (extent.radius[i] == 0.0 || extent.radius[j] == 0.0) continue;
         wiregrain_lmp::ContactSpring s;
         s.effective_modulus = effective_modulus_[i][j];
-        s.segment_length = global[ntypes + 1];
-        s.radius = global[ntypes + 2];
+        s.segment_length = extent.rest;
+        s.radius = thickest;
         s.friction = friction_[i][j];
-        s.mass = wiregrain::reduced_mass(-global[ntypes + 3], -global[ntypes + 3]);
+        s.mass = wiregrain::reduced_mass(extent.lightest_mass, extent.lightest_mass);
         s.mass_name = "the reduced mass of two of the lightest beads";
         springs.push_back(s);
       }

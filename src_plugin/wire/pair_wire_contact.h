@@ -83,7 +83,18 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
   wiregrain::ContactList *contacts_;
   class AtomVecWire *wire_;
   class FixWireContactHistory *history_;
-  double reach_;                     // largest segment extent + 2 radii: the pair cutoff
+  // The beads of segments (a lone bead is none), from init_style: per atom type the
+  // thickest one's radius (0: the type has none), the longest rest length and the
+  // lightest mass of all. A type pair's cutoff (init_one) reaches the far ends of two of
+  // its segments, 0 for a type without beads (the grains of a hybrid: their pairs are not
+  // listed); reach_ is the largest.
+  struct WireExtent {
+    std::vector<double> radius;  // index 1..ntypes
+    double rest = 0.0, lightest_mass = 0.0;
+  };
+  WireExtent extent_;
+  double reach_;
+  WireExtent gather_wire_extent() const;
   // per bead (owned and ghost), rebuilt every step: index of the next bead (−1: none,
   // −2: not in the ghost shell) and the position of its image nearest to the bead
   int *segment_next_;
