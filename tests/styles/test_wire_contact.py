@@ -125,6 +125,38 @@ neighbor        0.1 bin
             self.assertLess(k_t * delta, 0.5 * k_n * xi)  # below the slip limit
             self.assertAlmostEqual(tangential / (k_t * delta), 1.0, delta=2e-14)
 
+    def test_wire_wire_beside_a_grain(self):
+        # The same crossed wires (two wire types) in atom_style hybrid polyhedron wire with a
+        # grain 2 a_max above them: the same k_n ξ, and the neighbour list holds the 6 pairs
+        # of the 4 beads only. A type without wire segments gets the cutoff 0: before, every
+        # type pair had twice the largest radius of any atom (the grain's) and the list held
+        # the grain's 4 pairs with the beads as well.
+        r_w, l_w, xi = 0.1, 0.2, 1e-3
+        deck = f"""
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+newton          off
+region          box block -5 5 -5 5 -5 5
+create_box      3 box
+fix             mE all property/global youngsModulus peratomtype 1000 100 100
+fix             mNu all property/global poissonsRatio peratomtype 0.3 0 0
+region          spot block -0.01 0.01 -0.01 0.01 1.99 2.01
+create_grains   1 1 random spot seed 5
+create_wire     2 line -0.1 0 {r_w - xi / 2} 0.1 0 {r_w - xi / 2}
+create_wire     3 line 0 -0.1 -{r_w - xi / 2} 0 0.1 -{r_w - xi / 2}
+group           upper type 2
+pair_style      wire/contact mu_s 0.5 mu_d 0.5
+pair_coeff      * *
+neighbor        0.1 bin
+""" + static_contact_measurement("upper", 4e-4, 10)
+        r = run(deck)
+        self.assertRanCleanly(r)
+        k_n = 50.0 * l_w * math.pi / 4  # E* = E_w / 2 for one material
+        self.assertAlmostEqual(r.thermo()["f[3]"][0] / (k_n * xi), 1.0, delta=2e-14)
+        self.assertEqual(re.findall(r"Total # of neighbors = (\d+)", r.output)[-1], "6")
+
     def test_wall(self):
         r_w, l_w, xi, delta, steps, E, nu = 0.1, 0.2, 1e-3, 4e-4, 100, 100.0, 0.3
         r = run(HEADER + f"""
