@@ -34,3 +34,16 @@ G=$R/grains
 /usr/bin/python3 $P/plot_columns.py "$G/grains=nscd/seed=1001" "$G/grains=spheres/seed=1001" \
     "$G/grains=superquadrics/seed=1001" \
     -o docs/column/final_columns_grain_models.png --legend "NSCD polyhedra" "stock spheres" "stock superquadrics"
+# the tall column from rest to rest (session 17, input_scripts/in.column_tall): no wire
+# against μ_w = 0.1, 0.3, 0.6 (the μ_w = 0.6 runs are the wire=1 runs of `sweep.py wire 0 1
+# --var mu_w 0.6`, relabelled); H_n and the wire energy against time, the final columns
+T=$R/tall_rest
+/usr/bin/python3 $P/plot_sweep.py $T/mu_w/summary.csv -o docs/column/tall_mu_w.png --label "μ_w" \
+    --legend "with wire" --baseline $T/wire/summary.csv --baseline-label "no wire" --table --paired
+/usr/bin/python3 $P/plot_column.py "$T/wire/wire=0/seed=1001" "$T/wire/wire=0/seed=2002" "$T/wire/wire=0/seed=3003" \
+    "$T/mu_w/mu_w=0.6/seed=1001" "$T/mu_w/mu_w=0.6/seed=2002" "$T/mu_w/mu_w=0.6/seed=3003" \
+    -o docs/column/tall_wall_removal.png --legend "no wire 1001" "no wire 2002" "no wire 3003" \
+    "μ_w 0.6 1001" "μ_w 0.6 2002" "μ_w 0.6 3003" --colors C0 C0 C0 C1 C1 C1
+/usr/bin/python3 $P/plot_columns.py "$T/wire/wire=0/seed=1001" "$T/mu_w/mu_w=0.1/seed=1001" \
+    "$T/mu_w/mu_w=0.3/seed=1001" "$T/mu_w/mu_w=0.6/seed=1001" -o docs/column/tall_final_columns.png \
+    --legend "no wire" "μ_w = 0.1" "μ_w = 0.3" "μ_w = 0.6"
