@@ -5,7 +5,7 @@ normalised by its maximum, against the time since the walls started to move.
     postprocess/plot_column.py RUN [RUN ...] -o column.png [--legend A B ...] [--colors C ...] [--no-energy]
 
 RUN: a column.obs written by input_scripts/in.column, or a directory holding one (a run
-directory of postprocess/sweep.py). column.obs starts at t_relax, when the walls start to
+directory of postprocess/sweep.py). column.obs starts when the walls start to
 move; its columns are t, H, H_n, φ_p, U_s/L, z_wpc. The energy curve is U_s/L divided by
 its largest value over the run (U_s/L is proportional to the total energy U_s, the wire's
 length being fixed), as in the paper. Left axis H_n, right axis the energy; time in
@@ -58,8 +58,9 @@ def main():
         if peak > 0.0 and not args.no_energy:
             energy_axis.plot(since, obs["U_s/L"] / peak, ls="--", color=line.get_color(),
                              label=f"U_s / max U_s {label}")
-    height_axis.set_xlabel("t − t_relax  [√(a_max / g)]")
-    height_axis.set_ylabel("H_n = H / H(t_relax)  (solid)")
+    # (the walls start at t_relax, or earlier when in.column's ke_stop ends the relaxation)
+    height_axis.set_xlabel("time since the walls started  [√(a_max / g)]")
+    height_axis.set_ylabel("H_n = H / H0, H0 as the walls start  (solid)")
     energy_axis.set_ylabel("U_s / max U_s  (dashed)")
     if args.no_energy:
         energy_axis.set_axis_off()
