@@ -299,6 +299,14 @@ void PairWireContact::compute(int eflag, int vflag) {
         candidates_.emplace_back(a, b);
       }
     }
+    // by the segments' tags (then the ghost's index: periodic images of one segment), not
+    // the list's bin order: the forces are then summed in the same order whenever the list
+    // was built (a run split into chunks rebuilds it at each start) and however fine the bins
+    std::sort(candidates_.begin(), candidates_.end(), [tag](const std::pair<int, int> &p, const std::pair<int, int> &q) {
+      if (tag[p.first] != tag[q.first]) return tag[p.first] < tag[q.first];
+      if (tag[p.second] != tag[q.second]) return tag[p.second] < tag[q.second];
+      return p.second < q.second;
+    });
   }
   for (const auto &[a, b] : candidates_) {
     // positions as the neighbour list has them (ghosts are the right periodic images)
