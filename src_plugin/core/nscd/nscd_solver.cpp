@@ -513,7 +513,8 @@ class BodyContactOperator final : public ContactOperator {
     return link.constant + (side_a + side_b);
   }
   // The first row of velocity(c), summed in the same order (the same bits: checked against
-  // velocity(c)[0] by the core test SolverOperators.NormalVelocityIsTheFirstRowToTheBit).
+  // velocity(c)[0] by the core test
+  // NscdOperators.OpenContactTestReadsTheNormalVelocityToTheBit).
   double normal_velocity(int c) const override {
     const Link& link = links_[c];
     double side_a = 0.0, side_b = 0.0;
