@@ -2,6 +2,7 @@
 // signed-volumes sub-simplex solver, separating-axis penetration depth, closest-feature
 // contact manifolds. See contact_geometry.h and docs/core_contact.md.
 #include "core/geometry/contact_geometry.h"
+#include "core/geometry/nearest_simplex.h"
 #include "core/geometry/segment_distance.h"
 
 #include <algorithm>
@@ -58,7 +59,6 @@ std::string number(double x) {
 
 bool finite(const Vector3d& v) { return v.allFinite(); }
 
-bool same_sign(double a, double b) { return (a > 0.0 && b > 0.0) || (a < 0.0 && b < 0.0); }
 
 double cross2(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -115,116 +115,7 @@ struct SegmentSet {
 };
 
 // ---------------------------------------------------------------------------------------
-// Signed-volumes sub-simplex solver (Montanari, Petrinic & Barbieri 2017). Given the
-// points s of a simplex (1 to 4 points of the Minkowski difference), find the point v of
-// their convex hull nearest to the origin, the smallest sub-simplex containing it and
-// its barycentric weights. The barycentric coordinates of the origin's projection on the
-// simplex's affine hull are ratios of signed lengths/areas/volumes, computed in the
-// coordinate plane (line) where the simplex's projection is largest; if they all have
-// the sign of the total, the projection is inside. Otherwise every sub-simplex opposite
-// a vertex is solved (not only those Montanari's sign rule selects: a misclassified sign
-// cannot then lose the minimum) and the nearest wins.
-
-struct Reduced {
-  int n = 0;
-  std::array<int, 4> index{};       // into the input points
-  std::array<double, 4> lambda{};   // barycentric weights, sum 1
-  Vector3d v = Vector3d::Zero();
-};
-
-Reduced single(const Vector3d* s, int i) {
-  Reduced r;
-  r.n = 1;
-  r.index[0] = i;
-  r.lambda[0] = 1.0;
-  r.v = s[i];
-  return r;
-}
-
-const Reduced& nearer(const Reduced& a, const Reduced& b) {
-  return b.v.squaredNorm() < a.v.squaredNorm() ? b : a;
-}
-
-Reduced solve_segment(const Vector3d* s, int i0, int i1) {
-  const Vector3d& a = s[i0];
-  const Vector3d& b = s[i1];
-  const Vector3d t = b - a;
-  const double tt = t.squaredNorm();
-  if (tt > 0.0) {
-    // projection of the origin on the line: p0 = a − (a·t / t·t) t
-    const Vector3d p0 = a - (a.dot(t) / tt) * t;
-    int I = 0;
-    t.cwiseAbs().maxCoeff(&I);
-    const double mu = a[I] - b[I];
-    const double c_a = p0[I] - b[I];  // weight of a times mu
-    const double c_b = a[I] - p0[I];  // weight of b times mu
-    if (same_sign(mu, c_a) && same_sign(mu, c_b)) {
-      Reduced r;
-      r.n = 2;
-      r.index = {i0, i1, 0, 0};
-      r.lambda = {c_a / mu, c_b / mu, 0.0, 0.0};
-      r.v = r.lambda[0] * a + r.lambda[1] * b;
-      return r;
-    }
-  }
-  return nearer(single(s, i0), single(s, i1));
-}
-
-Reduced solve_triangle(const Vector3d* s, int i0, int i1, int i2) {
-  const Vector3d& a = s[i0];
-  const Vector3d& b = s[i1];
-  const Vector3d& c = s[i2];
-  const Vector3d n = (b - a).cross(c - a);
-  const double nn = n.squaredNorm();
-  if (nn > 0.0) {
-    const Vector3d p0 = (a.dot(n) / nn) * n;  // origin projected on the plane
-    int J = 0;
-    n.cwiseAbs().maxCoeff(&J);
-    const int k = (J + 1) % 3, l = (J + 2) % 3;  // signed area in (k, l) has the sign of n_J
-    const auto area = [k, l](const Vector3d& p, const Vector3d& q, const Vector3d& r) {
-      return (q[k] - p[k]) * (r[l] - p[l]) - (r[k] - p[k]) * (q[l] - p[l]);
-    };
-    const double mu = area(a, b, c);
-    const std::array<double, 3> C = {area(p0, b, c), area(a, p0, c), area(a, b, p0)};
-    if (same_sign(mu, C[0]) && same_sign(mu, C[1]) && same_sign(mu, C[2])) {
-      Reduced r;
-      r.n = 3;
-      r.index = {i0, i1, i2, 0};
-      r.lambda = {C[0] / mu, C[1] / mu, C[2] / mu, 0.0};
-      r.v = r.lambda[0] * a + r.lambda[1] * b + r.lambda[2] * c;
-      return r;
-    }
-  }
-  Reduced best = solve_segment(s, i1, i2);
-  best = nearer(best, solve_segment(s, i0, i2));
-  best = nearer(best, solve_segment(s, i0, i1));
-  return best;
-}
-
-Reduced solve_tetrahedron(const Vector3d* s) {
-  const Vector3d &a = s[0], &b = s[1], &c = s[2], &d = s[3];
-  // C_j = signed volume of the tetrahedron with vertex j replaced by the origin:
-  // vol(0,b,c,d) = b·(c×d), vol(a,0,c,d) = −a·(c×d), vol(a,b,0,d) = a·(b×d),
-  // vol(a,b,c,0) = −a·(b×c); their sum is vol(a,b,c,d).
-  const Vector3d cxd = c.cross(d);
-  const std::array<double, 4> C = {b.dot(cxd), -a.dot(cxd), a.dot(b.cross(d)),
-                                   -a.dot(b.cross(c))};
-  const double det = C[0] + C[1] + C[2] + C[3];
-  if (same_sign(det, C[0]) && same_sign(det, C[1]) && same_sign(det, C[2]) &&
-      same_sign(det, C[3])) {
-    Reduced r;
-    r.n = 4;
-    r.index = {0, 1, 2, 3};
-    for (int j = 0; j < 4; ++j) r.lambda[j] = C[j] / det;
-    r.v = Vector3d::Zero();  // the origin is inside
-    return r;
-  }
-  Reduced best = solve_triangle(s, 1, 2, 3);
-  best = nearer(best, solve_triangle(s, 0, 2, 3));
-  best = nearer(best, solve_triangle(s, 0, 1, 3));
-  best = nearer(best, solve_triangle(s, 0, 1, 2));
-  return best;
-}
+// The sub-simplex solver: nearest_simplex.h.
 
 // ---------------------------------------------------------------------------------------
 // GJK on the Minkowski difference A − B.
@@ -290,13 +181,13 @@ GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, d
     std::array<Vector3d, 4> trial = w;
     trial[n] = p;
     const int m = n + 1;
-    Reduced r;
+    NearestSimplex r;
     if (m == 2)
-      r = solve_segment(trial.data(), 0, 1);
+      r = nearest_on_segment(trial.data(), 0, 1);
     else if (m == 3)
-      r = solve_triangle(trial.data(), 0, 1, 2);
+      r = nearest_on_triangle(trial.data(), 0, 1, 2);
     else
-      r = solve_tetrahedron(trial.data());
+      r = nearest_on_tetrahedron(trial.data());
     if (r.n == 4) {
       result.touching = true;
       ++iteration;
