@@ -6,6 +6,7 @@ of the paper's full procedure (t_layer = 10, t = 300 and 600) extrapolated from 
 
     bench/column_table1.py [--liggghts build/liggghts] [--np 2] [--t-layer 0.5] [--t-after 0.3]
         [--sample 2000] [--relaxed RESTART] [--var NAME VALUE ...]
+    bench/column_table1.py --log LOG [--var nlayers 7]
 
 The deck is in.column with shorter times only: each layer deposited for --t-layer (the
 paper: 10), relaxation and wall removal for --t-after time units each, then --sample steps of the
@@ -29,6 +30,15 @@ cost per step. The layers deposited faster than in the paper land on each other 
 still moving; the cost per step of a layer's run is what the extrapolation uses, so this
 matters only through the contacts in flight. --var passes other in.column variables (e.g.
 `--var R 3 --var Np 91` for a quick check of the script). About 15 minutes with the defaults.
+
+--log LOG: no run; the wall time and breakdown of a real run of in.column from its screen
+output or log.liggghts (e.g. `mpirun -np 2 build/liggghts -in input_scripts/in.column >
+log.out`): every run's time summed per phase (deposition, relaxation, walls moving; the
+deck's "in.column relaxed" line separates the last two) and per part as below (the
+deck's `timing 1`, its default, turns on the per-fix timers; its "in.column NSCD clocks"
+line splits fix nscd/polyhedra's time into gather + detection, solve, and scatter +
+overlap projection; without them the parts are LIGGGHTS' Pair, Neigh, Comm, Outpt and
+Other only). Measured, not extrapolated.
 
 --relaxed RESTART: the complete column's cost per step measured instead on a relaxed
 column from a real run (its column_relaxed.restart, continued with in.column's resume 1
@@ -68,8 +78,8 @@ def runs(out):
 
 
 def parts(t, nscd_split):
-    """Seconds per part from one run's timers; nscd_split = (gather+detection, solve)
-    fractions of fix nscd's time."""
+    """Seconds per part from one run's timers; nscd_split = (gather+detection, solve) or
+    (gather+detection, solve, scatter+projection) fractions of fix nscd's time."""
     fix = {k[4:]: v for k, v in t.items() if k.startswith("fix ")}
     walls = sum(fix.get(w, 0.0) for w in ("floor", "wxlo", "wxhi", "wylo", "wyhi"))
     nscd = fix.get("nscd", 0.0)
@@ -81,6 +91,7 @@ def parts(t, nscd_split):
         "wire–grain contacts": fix.get("wg", 0.0),
         "grain detection (NSCD)": nscd * nscd_split[0],
         "NSCD solve": nscd * nscd_split[1],
+        "NSCD overlap projection": nscd * (nscd_split[2] if len(nscd_split) > 2 else 0.0),
         "communication": t.get("Comm", 0.0),
         "output": t.get("Outpt", 0.0),
     }
@@ -112,6 +123,62 @@ def relaxed_sample(args, dt):
     return found[-1]
 
 
+def from_log(path, nlayers):
+    """The wall time of a real run and its breakdown, per phase, from its screen output."""
+    with open(path, errors="replace") as f:
+        out = f.read()
+    found = runs(out)
+    if len(found) < 2 * nlayers:
+        sys.exit(f"{path}: {len(found)} runs, fewer than the {2 * nlayers} of the deposition: not a run of in.column?")
+    dt = float(re.search(r"^in\.column: dt_SP (\S+),", out, re.M).group(1))
+    starts = [m.start() for m in re.finditer(r"Loop time of", out)]
+    relaxed = out.find("in.column relaxed at t")
+    phase_of = []
+    for k, pos in enumerate(starts):
+        phase_of.append("deposition" if k < 2 * nlayers else "relaxation" if relaxed < 0 or pos < relaxed else "walls moving")
+    clocks = re.search(r"in\.column NSCD clocks: gather \+ detection (\S+) s, solve (\S+) s, "
+                       r"scatter \+ overlap projection (\S+) s", out)
+    if clocks:
+        c = [float(v) for v in clocks.groups()]
+        split = tuple(v / sum(c) for v in c) if sum(c) > 0 else (1.0, 0.0, 0.0)
+    else:
+        split = (1.0, 0.0, 0.0)  # fix nscd's time all counted as detection
+    timed = any(any(k.startswith("fix ") for k in r[3]) for r in found)
+    total_wall = re.search(r"Total wall time: (\d+):(\d+):(\d+)", out)
+    finals = re.findall(r"^in\.column (relaxed at t = \S+|final: .*)$", out, re.M)
+    print(f"{path}: {len(found)} runs, {sum(r[0] for r in found)} steps of dt_SP = {dt:g}"
+          + (f", total wall time {int(total_wall.group(1))}:{total_wall.group(2)}:{total_wall.group(3)}"
+             if total_wall else "")
+          + ("" if "in.column final:" in out else " (no 'in.column final' line: the run has not ended)"))
+    for line in finals:
+        print(f"  in.column {line}")
+    phases = ["deposition", "relaxation", "walls moving"]
+    print(f"\n{'phase':<16}{'runs':>6}{'time units':>12}{'hours':>8}{'ms/step':>9}{'atoms':>7}")
+    for ph in phases:
+        rs = [r for r, p in zip(found, phase_of) if p == ph]
+        if not rs:
+            continue
+        steps, seconds = sum(r[0] for r in rs), sum(r[1] for r in rs)
+        print(f"{ph:<16}{len(rs):>6}{steps * dt:>12.1f}{seconds / 3600:>8.2f}{1e3 * seconds / max(steps, 1):>9.2f}{rs[-1][2]:>7}")
+    seconds = sum(r[1] for r in found)
+    print(f"{'all':<16}{len(found):>6}{sum(r[0] for r in found) * dt:>12.1f}{seconds / 3600:>8.2f}")
+    if not timed:
+        print("\n(no per-fix timers in this log: run the deck with timing 1, its default, for the breakdown)")
+    label = "NSCD split from the deck's clocks line" if clocks else "no NSCD clocks line: fix nscd's time as detection"
+    unit, scale = ("hours", 3600.0) if seconds > 600 else ("seconds", 1.0)
+    print(f"\nbreakdown, {unit} ({label}: {', '.join(f'{100 * v:.0f} %' for v in split)})")
+    per_phase = {ph: {} for ph in phases}
+    for r, ph in zip(found, phase_of):
+        named, _ = parts(r[3], split)
+        for k, v in named.items():
+            per_phase[ph][k] = per_phase[ph].get(k, 0.0) + v
+    names = sorted({k for d in per_phase.values() for k in d}, key=lambda k: -sum(d.get(k, 0.0) for d in per_phase.values()))
+    print(f"{'part':<30}" + "".join(f"{ph:>14}" for ph in phases) + f"{'all':>10}{'share':>8}")
+    for k in names:
+        row = [per_phase[ph].get(k, 0.0) for ph in phases]
+        print(f"{k:<30}" + "".join(f"{v / scale:>14.3f}" for v in row) + f"{sum(row) / scale:>10.3f}{100 * sum(row) / seconds:>7.1f}%")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--liggghts", default=os.path.join(REPOSITORY, "build", "liggghts"))
@@ -121,9 +188,13 @@ def main():
     parser.add_argument("--sample", type=int, default=2000)
     parser.add_argument("--relaxed", help="column_relaxed.restart of a real run: the complete column measured on it")
     parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
+    parser.add_argument("--log", help="a real run's screen output: its wall time and breakdown, no run")
     args = parser.parse_args()
     given = dict(args.var)
     nlayers = int(given.get("nlayers", NLAYERS))
+    if args.log:
+        from_log(args.log, nlayers)
+        return
 
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-")
     t_relax = 2 * nlayers * args.t_layer + args.t_after

@@ -212,7 +212,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 13;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 16;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -475,8 +475,12 @@ void FixNSCDPolyhedra::solve_step() {
   }
   timings_[0] = detected - start;
   timings_[1] = MPI_Wtime() - detected;
+  const double solved = MPI_Wtime();
   scatter_results(grains, result);
   project_overlaps(grains, problem, result);
+  clocks_[0] += timings_[0];
+  clocks_[1] += timings_[1];
+  clocks_[2] += MPI_Wtime() - solved;
   record_stats(result);
   check_overlap(grains, result.stats.max_overlap, h);
   publish_contacts(result);
@@ -774,6 +778,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
   // sleeping: grains asleep after the last solve, woken in it, frozen contact points,
   // sleepers solved in its equilibrium checks
+  if (k >= 19 + (int)wall_forces_.size()) return clocks_[k - 19 - (int)wall_forces_.size()];
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs
   if (!core_->pairs) return 0.0;
