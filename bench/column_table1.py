@@ -81,6 +81,11 @@ def parts(t, nscd_split):
     """Seconds per part from one run's timers; nscd_split = (gather+detection, solve) or
     (gather+detection, solve, scatter+projection) fractions of fix nscd's time."""
     fix = {k[4:]: v for k, v in t.items() if k.startswith("fix ")}
+    if nscd_split is None:  # no split known: fix nscd/polyhedra as one part
+        named, total = parts(t, (1.0, 0.0, 0.0))
+        named["NSCD step (detection, solve, projection)"] = named.pop("grain detection (NSCD)")
+        del named["NSCD solve"], named["NSCD overlap projection"]
+        return named, total
     walls = sum(fix.get(w, 0.0) for w in ("floor", "wxlo", "wxhi", "wylo", "wyhi"))
     nscd = fix.get("nscd", 0.0)
     total = sum(t.get(k, 0.0) for k in ("Pair", "Neigh", "Comm", "Outpt", "Other"))
@@ -136,13 +141,14 @@ def from_log(path, nlayers):
     phase_of = []
     for k, pos in enumerate(starts):
         phase_of.append("deposition" if k < 2 * nlayers else "relaxation" if relaxed < 0 or pos < relaxed else "walls moving")
-    clocks = re.search(r"in\.column NSCD clocks: gather \+ detection (\S+) s, solve (\S+) s, "
-                       r"scatter \+ overlap projection (\S+) s", out)
+    number = r"([0-9.eE+-]+)"  # (the echoed print command has the $(...) instead)
+    clocks = re.search(rf"in\.column NSCD clocks: gather \+ detection {number} s, solve {number} s, "
+                       rf"scatter \+ overlap projection {number} s", out)
     if clocks:
         c = [float(v) for v in clocks.groups()]
         split = tuple(v / sum(c) for v in c) if sum(c) > 0 else (1.0, 0.0, 0.0)
     else:
-        split = (1.0, 0.0, 0.0)  # fix nscd's time all counted as detection
+        split = None  # fix nscd's time as one part
     timed = any(any(k.startswith("fix ") for k in r[3]) for r in found)
     total_wall = re.search(r"Total wall time: (\d+):(\d+):(\d+)", out)
     finals = re.findall(r"^in\.column (relaxed at t = \S+|final: .*)$", out, re.M)
@@ -153,30 +159,32 @@ def from_log(path, nlayers):
     for line in finals:
         print(f"  in.column {line}")
     phases = ["deposition", "relaxation", "walls moving"]
-    print(f"\n{'phase':<16}{'runs':>6}{'time units':>12}{'hours':>8}{'ms/step':>9}{'atoms':>7}")
+    seconds = sum(r[1] for r in found)
+    unit, scale = ("hours", 3600.0) if seconds > 600 else ("seconds", 1.0)
+    print(f"\n{'phase':<16}{'runs':>6}{'time units':>12}{unit:>9}{'ms/step':>9}{'atoms':>7}")
     for ph in phases:
         rs = [r for r, p in zip(found, phase_of) if p == ph]
         if not rs:
             continue
-        steps, seconds = sum(r[0] for r in rs), sum(r[1] for r in rs)
-        print(f"{ph:<16}{len(rs):>6}{steps * dt:>12.1f}{seconds / 3600:>8.2f}{1e3 * seconds / max(steps, 1):>9.2f}{rs[-1][2]:>7}")
-    seconds = sum(r[1] for r in found)
-    print(f"{'all':<16}{len(found):>6}{sum(r[0] for r in found) * dt:>12.1f}{seconds / 3600:>8.2f}")
+        steps = sum(r[0] for r in rs)
+        spent = sum(r[1] for r in rs)
+        print(f"{ph:<16}{len(rs):>6}{steps * dt:>12.1f}{spent / scale:>9.2f}{1e3 * spent / max(steps, 1):>9.2f}{rs[-1][2]:>7}")
+    print(f"{'all':<16}{len(found):>6}{sum(r[0] for r in found) * dt:>12.1f}{seconds / scale:>9.2f}")
     if not timed:
         print("\n(no per-fix timers in this log: run the deck with timing 1, its default, for the breakdown)")
-    label = "NSCD split from the deck's clocks line" if clocks else "no NSCD clocks line: fix nscd's time as detection"
-    unit, scale = ("hours", 3600.0) if seconds > 600 else ("seconds", 1.0)
-    print(f"\nbreakdown, {unit} ({label}: {', '.join(f'{100 * v:.0f} %' for v in split)})")
+    label = ("NSCD split from the deck's clocks line: " + ", ".join(f"{100 * v:.0f} %" for v in split)
+             if clocks else "no NSCD clocks line: fix nscd/polyhedra's time as one part")
+    print(f"\nbreakdown, {unit} ({label})")
     per_phase = {ph: {} for ph in phases}
     for r, ph in zip(found, phase_of):
         named, _ = parts(r[3], split)
         for k, v in named.items():
             per_phase[ph][k] = per_phase[ph].get(k, 0.0) + v
     names = sorted({k for d in per_phase.values() for k in d}, key=lambda k: -sum(d.get(k, 0.0) for d in per_phase.values()))
-    print(f"{'part':<30}" + "".join(f"{ph:>14}" for ph in phases) + f"{'all':>10}{'share':>8}")
+    print(f"{'part':<42}" + "".join(f"{ph:>14}" for ph in phases) + f"{'all':>10}{'share':>8}")
     for k in names:
         row = [per_phase[ph].get(k, 0.0) for ph in phases]
-        print(f"{k:<30}" + "".join(f"{v / scale:>14.3f}" for v in row) + f"{sum(row) / scale:>10.3f}{100 * sum(row) / seconds:>7.1f}%")
+        print(f"{k:<42}" + "".join(f"{v / scale:>14.3f}" for v in row) + f"{sum(row) / scale:>10.3f}{100 * sum(row) / seconds:>7.1f}%")
 
 
 def main():

@@ -123,6 +123,32 @@ class Column(DeckTestCase):
         np.testing.assert_array_equal(vtk_files.point_array(wire, "grain_force"), force)
         np.testing.assert_array_equal(vtk_files.point_array(wire, "grain_contacts"), dump["f_wg[4]"][rows])
 
+    def test_breakdown_of_the_run(self):
+        # bench/column_table1.py --log on the run's screen output: the simulated time of
+        # each phase is the deck's (2 layers x (t_layer + t_wire) = 2, t_relax − 2 = 0.5,
+        # t_end − t_relax = 1); the deck's per-fix timers are on, and the NSCD clocks
+        # (detection, solve, projection) lie within fix nscd's own timer
+        self.assertRanCleanly(self.straight)
+        log = self.straight.path("screen.out")
+        with open(log, "w") as f:
+            f.write(self.straight.output)
+        out = subprocess.run([sys.executable, os.path.join(SOURCE, "bench", "column_table1.py"), "--log", log,
+                              "--var", "nlayers", "2"], capture_output=True, text=True, check=True).stdout
+        print(out)
+        units = {m.group(1): float(m.group(2))
+                 for m in re.finditer(r"^(deposition|relaxation|walls moving)\s+\d+\s+(\S+)", out, re.M)}
+        self.assertEqual(units, {"deposition": 2.0, "relaxation": 0.5, "walls moving": 1.0})
+        number = r"([0-9.eE+-]+)"
+        clocks = [float(v) for v in re.search(rf"NSCD clocks: gather \+ detection {number} s, solve {number} s, "
+                                              rf"scatter \+ overlap projection {number} s", self.straight.output).groups()]
+        fix_nscd = sum(float(v) for v in re.findall(r"^Fix nscd nscd/polyhedra time \(%\) = (\S+)",
+                                                    self.straight.output, re.M))
+        self.assertTrue(all(c > 0.0 for c in clocks), clocks)
+        self.assertLessEqual(sum(clocks), fix_nscd)
+        self.assertGreater(sum(clocks), 0.5 * fix_nscd)  # the gather and the solve are most of the fix
+        for part in ("wire–grain contacts", "grain detection (NSCD)", "NSCD solve", "wire elastic + integration"):
+            self.assertRegex(out, re.escape(part) + r"\s+[0-9.]+\s+[0-9.]+\s+[0-9.]+")
+
     def test_two_ranks(self):
         two = run(COLUMN, variables=TINY, np_ranks=2)
         self.assertRanCleanly(two)
@@ -297,6 +323,7 @@ class Column(DeckTestCase):
                                     "in.column: t_relax (10) must be at least the deposition time"),
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
+                                   ({"timing": 2}, "in.column: timing must be 0 or 1, got 2"),
                                    ({"resume": 3}, "in.column: resume must be 0, 1 or 2, got 3"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (half-width 4)"),
