@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
+#include <cstdint>
+#include <unordered_map>
 #include <optional>
 #include <utility>
 
@@ -71,12 +72,15 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
   // 2. the pairs of the step's points, once each
   std::vector<ProjectedPair> pairs;
   {
-    std::map<std::pair<int, int>, std::size_t> index_of;  // (a or −(wall + 1), b)
+    // (a or −(wall + 1), b) as one key; the pairs in the order of their first point
+    std::unordered_map<std::uint64_t, std::size_t> index_of;
+    index_of.reserve(problem.points.size());
     for (const GrainContactPoint& p : problem.points) {
       const NscdContact& c = p.constraint;
       const int wall = c.body_a >= 0 ? -1 : static_cast<int>(-p.pair.first - 1);
       const int first = c.body_a >= 0 ? c.body_a : -(wall + 1);
-      const auto [it, added] = index_of.insert({{first, c.body_b}, pairs.size()});
+      const std::uint64_t key = (std::uint64_t(std::uint32_t(first)) << 32) | std::uint32_t(c.body_b);
+      const auto [it, added] = index_of.insert({key, pairs.size()});
       if (added) {
         ProjectedPair pair;
         pair.a = c.body_a;
