@@ -16,7 +16,11 @@ every value, the seed-by-seed differences from the baseline run of the same seed
 seed deposits the same grain layers, so these pairs compare best) for H_n, the final
 height H and the four observables: the mean difference ± its standard error (std ddof 1
 over √n), n the seeds both have, and their ratio (|ratio| > 2: a difference beyond the
-seeds' noise at about 95 %).
+seeds' noise at about 95 %). --work-precision PNG (with --paired): the work–precision
+plot of the sweep (issue 14): for each value, its mean wall time per run (the summary's
+wall_s) against |mean paired difference| / its standard error for H_n, φ_p, U_s/L and
+z_wpc, the line at 2 the criterion; the baseline at 0; and a printed table of the same
+with the speed-up over the baseline's mean wall time.
 Uses Debian's python3-matplotlib and numpy."""
 
 import argparse
@@ -28,6 +32,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import NullFormatter, ScalarFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
 OBSERVABLES = [("H_n", "H_n = H / H(t_relax)"),
@@ -93,9 +98,13 @@ def main():
     parser.add_argument("--baseline-label", default="baseline")
     parser.add_argument("--paired", action="store_true",
                         help="print each value's seed-by-seed differences from the baseline (mean ± standard error)")
+    parser.add_argument("--work-precision", default=None, metavar="PNG",
+                        help="with --paired: wall time per run against the paired shift in standard errors")
     args = parser.parse_args()
     if args.paired and not args.baseline:
         parser.error("--paired needs --baseline")
+    if args.work_precision and not args.paired:
+        parser.error("--work-precision needs --paired")
     if args.legend and len(args.legend) != len(args.summaries):
         parser.error(f"--legend needs one label per summary file ({len(args.summaries)})")
 
@@ -136,6 +145,47 @@ def main():
     axes.flat[0].legend(fontsize=8)
     fig.savefig(args.output, dpi=120)
     print(f"wrote {args.output}")
+    if args.work_precision:
+        work_precision(args)
+
+
+def work_precision(args):
+    """Wall time per run against each observable's paired shift (in standard errors of the
+    paired difference), one point per value of every summary; the table printed."""
+    baseline_rows = read_rows(args.baseline)
+    base_wall = np.mean([r["wall_s"] for r in baseline_rows.values()])
+    fig, axes = plt.subplots(2, 2, figsize=(9, 7), constrained_layout=True)
+    print(f"work–precision: baseline {args.baseline_label}, {base_wall:.0f} s per run")
+    print("summary\tvalue\ts per run\tspeed-up\t" + "\t".join(f"{n} shift/SE" for n, _ in OBSERVABLES))
+    for k, path in enumerate(args.summaries):
+        legend = args.legend[k] if args.legend else path
+        rows = read_rows(path)
+        shifts = {name: paired_differences(rows, baseline_rows, name) for name, _ in OBSERVABLES}
+        values = sorted(shifts[OBSERVABLES[0][0]])
+        wall = {v: np.mean([r["wall_s"] for (val, _), r in rows.items() if val == v]) for v in values}
+        for ax, (name, title) in zip(axes.flat, OBSERVABLES):
+            ratio = [abs(shifts[name][v][0] / shifts[name][v][1]) if shifts[name][v][1] > 0 else np.nan
+                     for v in values]
+            ax.plot([wall[v] for v in values], ratio, marker="o", label=legend)
+            for v, r in zip(values, ratio):
+                ax.annotate(f"{v:g}", (wall[v], r), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        for v in values:
+            cells = [shifts[n][v][0] / shifts[n][v][1] if shifts[n][v][1] > 0 else np.nan for n, _ in OBSERVABLES]
+            print(f"{legend}\t{v:g}\t{wall[v]:.0f}\t{base_wall / wall[v]:.2f}\t" +
+                  "\t".join("n/a" if np.isnan(c) else f"{c:+.2f}" for c in cells))
+    for ax, (name, title) in zip(axes.flat, OBSERVABLES):
+        ax.axhline(2.0, color="r", ls="--", lw=1, label="2 standard errors")
+        ax.plot([base_wall], [0.0], marker="s", color="k", ls="none", label=args.baseline_label)
+        ax.set_xscale("log")
+        ax.xaxis.set_major_formatter(ScalarFormatter())
+        ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.set_xlabel("wall time per run (s)")
+        ax.set_ylabel(f"|shift of {name}| / standard error")
+        ax.set_title(title, fontsize=9)
+        ax.grid(alpha=0.3)
+    axes.flat[0].legend(fontsize=8)
+    fig.savefig(args.work_precision, dpi=120)
+    print(f"wrote {args.work_precision}")
 
 
 if __name__ == "__main__":

@@ -111,6 +111,33 @@ class Sweep(DeckTestCase):
         self.assertEqual(status, 2)
         self.assertIn("--paired needs --baseline", text)
 
+    def test_work_precision(self):
+        # a coarser setting against the baseline, seeds 1–3: H_n differences (0.1, 0.2,
+        # 0.3): mean 0.2, standard error 0.1/√3, shift 2√3 = 3.46 standard errors; φ_p
+        # differences (−0.02, 0, −0.04): −0.02 ± 0.02/√3, −1.73; U_s/L the same (no
+        # standard error: n/a); z_wpc (0.002, 0.001, 0): +1.73; wall time 100 s per baseline
+        # run against 25 s: speed-up 4
+        work = tempfile.mkdtemp(prefix="wiregrain-wp-")
+        header = "param,value,seed,H_n,phi_p,U_s/L,z_wpc,H0,H,wall_s\n"
+        base = ((1, 0.5, 0.3), (2, 0.6, 0.32), (3, 0.7, 0.34))
+        with open(os.path.join(work, "base.csv"), "w") as f:
+            f.write(header + "".join(f"dt,1e-3,{s},{h},{p},0.01,0.5,8,{8 * h},100\n" for s, h, p in base))
+        with open(os.path.join(work, "coarse.csv"), "w") as f:
+            f.write(header + "".join(f"dt,5e-3,{s},{h + dh},{p + dp},0.01,{0.5 + dz},8,{8 * (h + dh)},25\n"
+                                     for (s, h, p), dh, dp, dz in zip(base, (0.1, 0.2, 0.3), (-0.02, 0, -0.04),
+                                                                      (0.002, 0.001, 0))))
+        status, text = script("plot_sweep.py", "coarse.csv", "-o", "p.png", "--baseline", "base.csv",
+                              "--baseline-label", "fine", "--legend", "coarse", "--paired", "--work-precision", "wp.png",
+                              cwd=work)
+        self.assertEqual(status, 0, text)
+        self.assertIn("work–precision: baseline fine, 100 s per run", text)
+        self.assertIn(f"coarse\t0.005\t25\t4.00\t+{2 * 3 ** 0.5:.2f}\t-{3 ** 0.5:.2f}\tn/a\t+{3 ** 0.5:.2f}", text)
+        with open(os.path.join(work, "wp.png"), "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        status, text = script("plot_sweep.py", "coarse.csv", "-o", "p.png", "--work-precision", "wp.png", cwd=work)
+        self.assertEqual(status, 2)
+        self.assertIn("--work-precision needs --paired", text)
+
     def test_sphere_column(self):
         # a column of stock spheres (-var grains spheres, with rolling friction):
         # plot_columns.py draws its legacy VTK, observables.py reads its dumps without a
