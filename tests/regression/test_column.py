@@ -189,6 +189,33 @@ class Column(DeckTestCase):
         # see test_two_ranks)
         self.assert_continues_as_straight(2, 3e-6)
 
+    def test_continue_from_the_wall_phase(self):
+        # t_restart 0.4: the wall phase (steps 2500 to 3500) in chunks of 400 steps,
+        # column_walls.restart after each that passes a multiple of 400: at 2900 and 3300;
+        # -var resume 3 continues the wall phase from the last for the 200 steps left, with
+        # H0 and the walls' start time from column_walls.txt: the same final observables as
+        # the run it came from
+        straight = run(COLUMN, variables=dict(TINY, t_restart=0.4))
+        self.assertRanCleanly(straight)
+        with open(straight.path("column_walls.txt")) as f:
+            record = f.read().split()
+        self.assertEqual(float(record[1]), 2.5)
+        resumed = run(COLUMN, variables=dict(TINY, resume=3), workdir=straight.workdir)
+        self.assertRanCleanly(resumed)
+        self.assertRegex(resumed.output, r"Loop time of \S+ on 1 procs for 200 steps")
+        a, b = final_observables(straight), final_observables(resumed)
+        print(f"\nstraight {a}\nresume 3 {b}")
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
+        self.assertIn("at t = 3.5 (t_end 3.5; walls moving since t = 2.5)", resumed.output)
+        # and those of the run without restarts (the chunks' run boundaries change the
+        # wire's energy by round-off only, as in test_early_end_of_both_phases)
+        c = final_observables(self.straight)
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], c[name], name)
+        self.assertAlmostEqual(a["U_s/L"] / c["U_s/L"], 1.0, delta=1e-12)
+
     def test_without_wire(self):
         # the same grains and procedure without the wire: no wire energy, no contacts;
         # φ_p counted in the cylinder of radius R (compute column/retention radius,
@@ -324,7 +351,8 @@ class Column(DeckTestCase):
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
                                    ({"timing": 2}, "in.column: timing must be 0 or 1, got 2"),
-                                   ({"resume": 3}, "in.column: resume must be 0, 1 or 2, got 3"),
+                                   ({"resume": 4}, "in.column: resume must be 0, 1, 2 or 3, got 4"),
+                                   ({"t_restart": -1}, "in.column: t_restart must be >= 0 (0: none), got -1"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (half-width 4)"),
                                    ({"box_half": 4}, "in.column: margin (1.5) puts the side walls outside the box (half-width 4)"),

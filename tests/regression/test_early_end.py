@@ -36,6 +36,8 @@ variable        quiet_chunk equal {chunk}
 variable        quiet_stop equal {ke_stop}
 variable        quiet_time equal {t_quiet}
 variable        quiet_min equal {min_steps}
+variable        quiet_restart_steps equal 0
+variable        quiet_restart_file string none
 include         {SOURCE}/input_scripts/in.run_until_quiet
 print           "phase over: step $(step) done ${{quiet_done}} ended ${{quiet_ended}}"
 """
