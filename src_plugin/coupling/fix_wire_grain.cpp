@@ -277,8 +277,28 @@ void FixWireGrain::setup_pre_force(int /*vflag*/) {
 }
 
 void FixWireGrain::post_force(int /*vflag*/) {
-  if (stock_grains_ || held_version_ != nscd_->pose_version()) hold_grains();
+  if (stock_grains_ || held_version_ != nscd_->pose_version() || !segments_within_reach()) hold_grains();
   evaluate(false);
+}
+
+// Whether every owned segment (half its length + its radius + the pair cache's skin) is
+// still within the reach the grains were held with, on all ranks. Within an NSCD step of
+// several wire sub-steps a pinched segment can grow beyond the room held_reach() left it
+// (a quarter of its half length); the grains are then held again, wider (the same poses:
+// they move only at the NSCD step's end), instead of the run stopping.
+bool FixWireGrain::segments_within_reach() {
+  const int *mask = atom->mask, *next = wire_->wire_next;
+  const double margin = core_->pairs ? skin_ : 0.0;
+  double local = 0.0, needed = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !next[i]) continue;
+    const int j = wire_->linked_bead(next[i]);
+    if (j < 0) continue;  // reported by evaluate()
+    const wiregrain::WireSegmentState segment = segment_of(i, j);
+    local = std::max(local, 0.5 * (segment.x1 - segment.x0).norm() + segment.radius + margin);
+  }
+  MPI_Allreduce(&local, &needed, 1, MPI_DOUBLE, MPI_MAX, world);
+  return needed <= core_->held->segment_reach();
 }
 
 // At the setup of each run (all ranks): the stiffest contact spring of each pair of a

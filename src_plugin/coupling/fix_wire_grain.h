@@ -142,6 +142,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   void hold_grains();
   void check_time_step();
   double held_reach();
+  bool segments_within_reach();
   void evaluate(bool setup);
   wiregrain::WireSegmentState segment_of(int i, int j) const;
   void record_contact(const wiregrain::WireGrainContact &c, int i, long grain_tag);

@@ -347,6 +347,33 @@ run             12000
         for every in (1, 5, 10):
             self.assertLessEqual(rest[every][2], 1e-12)
 
+    def test_a_segment_stretched_within_a_long_nscd_step_is_followed(self):
+        # N = 50 wire sub-steps per NSCD step, one free Table 1 segment (l 0.2, r_w 0.1)
+        # whose far bead is thrown outwards at 20: it stretches to twice its length (0.40
+        # measured) within the first NSCD step, beyond the room the grains were held with
+        # (a quarter of its half length, + r_w + the skin: 0.35): the fix holds
+        # them again, wider, with its warning once, instead of stopping the run (it stopped
+        # with "a segment reaches ... beyond the allowed ..." before session 18)
+        made = scene([resting_cube(0.0, 0.0)], ["line 1.5 0 1.1 1.7 0 1.1 segment 0.2 radius 0.1"])
+        r = run(deck("""
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             nscd grains nscd/polyhedra every 50 tolerance 1e-8 wall 0 0 0 0 0 1
+fix             wg wire wire/grain grains
+timestep        1e-3
+group           tip id 3
+velocity        tip set 20 0 0
+variable        length equal x[3]-x[2]
+thermo_style    custom step v_length
+thermo          1
+run             100
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        longest = r.thermo()["length"].max()
+        print(f"\nlongest segment within the first NSCD steps: {longest:.4f}")
+        self.assertGreater(0.5 * longest + 0.1 + 0.1, 1.25 * 0.1 + 0.1 + 0.1)  # beyond the first reach (skin 0.1)
+        self.assertEqual(r.output.count("the contact search widens to follow it"), 1)
+
     def test_two_ranks_give_the_state_of_one(self):
         # the subdomain boundary x = 0 cuts the middle cube and the wire
         made = three_cube_scene()
