@@ -59,7 +59,6 @@ std::string number(double x) {
 
 bool finite(const Vector3d& v) { return v.allFinite(); }
 
-
 double cross2(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 void check_options(const ContactOptions& options) {
