@@ -32,7 +32,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.ticker import NullFormatter, ScalarFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
 OBSERVABLES = [("H_n", "H_n = H / H(t_relax)"),
@@ -176,9 +175,8 @@ def work_precision(args):
     for ax, (name, title) in zip(axes.flat, OBSERVABLES):
         ax.axhline(2.0, color="r", ls="--", lw=1, label="2 standard errors")
         ax.plot([base_wall], [0.0], marker="s", color="k", ls="none", label=args.baseline_label)
-        ax.set_xscale("log")
-        ax.xaxis.set_major_formatter(ScalarFormatter())
-        ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.set_xlim(left=0.0)
+        ax.set_ylim(bottom=0.0)
         ax.set_xlabel("wall time per run (s)")
         ax.set_ylabel(f"|shift of {name}| / standard error")
         ax.set_title(title, fontsize=9)
