@@ -154,6 +154,7 @@ def work_precision(args):
     baseline_rows = read_rows(args.baseline)
     base_wall = np.mean([r["wall_s"] for r in baseline_rows.values()])
     fig, axes = plt.subplots(2, 2, figsize=(9, 7), constrained_layout=True)
+    longest = base_wall
     print(f"work–precision: baseline {args.baseline_label}, {base_wall:.0f} s per run")
     print("summary\tvalue\ts per run\tspeed-up\t" + "\t".join(f"{n} shift/SE" for n, _ in OBSERVABLES))
     for k, path in enumerate(args.summaries):
@@ -162,6 +163,7 @@ def work_precision(args):
         shifts = {name: paired_differences(rows, baseline_rows, name) for name, _ in OBSERVABLES}
         values = sorted(shifts[OBSERVABLES[0][0]])
         wall = {v: np.mean([r["wall_s"] for (val, _), r in rows.items() if val == v]) for v in values}
+        longest = max([longest] + list(wall.values()))
         for ax, (name, title) in zip(axes.flat, OBSERVABLES):
             ratio = [abs(shifts[name][v][0] / shifts[name][v][1]) if shifts[name][v][1] > 0 else np.nan
                      for v in values]
@@ -175,7 +177,7 @@ def work_precision(args):
     for ax, (name, title) in zip(axes.flat, OBSERVABLES):
         ax.axhline(2.0, color="r", ls="--", lw=1, label="2 standard errors")
         ax.plot([base_wall], [0.0], marker="s", color="k", ls="none", label=args.baseline_label)
-        ax.set_xlim(left=0.0)
+        ax.set_xlim(0.0, 1.1 * longest)
         ax.set_ylim(bottom=0.0)
         ax.set_xlabel("wall time per run (s)")
         ax.set_ylabel(f"|shift of {name}| / standard error")
