@@ -88,7 +88,8 @@ def parts(t, nscd_split):
         return named, total
     walls = sum(fix.get(w, 0.0) for w in ("floor", "wxlo", "wxhi", "wylo", "wyhi"))
     nscd = fix.get("nscd", 0.0)
-    total = sum(t.get(k, 0.0) for k in ("Pair", "Neigh", "Comm", "Outpt", "Other"))
+    # the loop's time: LIGGGHTS' sections (Modfy, the fixes' sum, with modify_timing on)
+    total = sum(t.get(k, 0.0) for k in ("Pair", "Neigh", "Comm", "Outpt", "Modfy", "Other"))
     named = {
         "wire elastic + integration": fix.get("elastic", 0.0) + fix.get("integr", 0.0),
         "wire–wire contacts": t.get("Pair", 0.0) + t.get("Neigh", 0.0),

@@ -299,9 +299,9 @@ def loop_time(out):
 
 
 def timers(out):
-    """Pair/Neigh time and every fix's time (modify_timing) of the last run."""
+    """Pair, Neigh, Comm, Modfy, Outpt, Other time and every fix's time (modify_timing) of the last run."""
     last = out[out.rfind("Loop time of"):]
-    t = {k: float(v) for k, v in re.findall(r"^(Pair|Neigh|Modfy|Outpt|Other)\s+time \(%\) = ([0-9.eE+-]+)", last, re.M)}
+    t = {k: float(v) for k, v in re.findall(r"^(Pair|Neigh|Comm|Modfy|Outpt|Other)\s+time \(%\) = ([0-9.eE+-]+)", last, re.M)}
     for fix_id, style, v in re.findall(r"^Fix (\S+) (\S+) time \(%\) = ([0-9.eE+-]+)", last, re.M):
         t["fix " + fix_id] = float(v)
     return t
