@@ -282,6 +282,18 @@ TEST(CoulombLocal, ConeProjection) {
     EXPECT_NEAR((r - pr).dot(pr), 0.0, 1e-13);
     EXPECT_LE(std::hypot(pr[1], pr[2]), mu * pr[0] + 1e-14);
   }
+  // Frictionless (μ = 0): K_0 is the ray r_t = 0, r_n ≥ 0; a negative normal impulse
+  // without tangential part projects to 0, not onto itself.
+  EXPECT_EQ(project_on_coulomb_cone(Vector3d(-1.0, 0.0, 0.0), 0.0), Vector3d::Zero());
+  EXPECT_EQ(project_on_coulomb_cone(Vector3d(2.0, 0.0, 0.0), 0.0), Vector3d(2.0, 0.0, 0.0));
+  EXPECT_EQ(project_on_coulomb_cone(Vector3d(2.0, 1.0, 0.0), 0.0), Vector3d(2.0, 0.0, 0.0));
+  // An open contact (r = 0, separating) is a solution of the law for any μ: residual 0,
+  // also frictionless and without tangential velocity.
+  for (double m : {0.0, 0.3}) {
+    EXPECT_EQ(natural_map_residual(Vector3d::Zero(), Vector3d(0.7, 0.0, 0.0), m), Vector3d::Zero()) << m;
+    EXPECT_EQ(natural_map_residual(Vector3d::Zero(), Vector3d(0.0, 0.4, -0.1), m), Vector3d::Zero()) << m;
+    EXPECT_EQ(natural_map_residual(Vector3d::Zero(), Vector3d(0.2, 0.4, -0.1), m), Vector3d::Zero()) << m;
+  }
   // The natural map does not vanish away from a solution.
   EXPECT_GT(natural_map_residual(Vector3d(1.0, 0.0, 0.0), Vector3d(0.5, 0.0, 0.0), mu).norm(), 0.4);
 }

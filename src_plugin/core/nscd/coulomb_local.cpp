@@ -266,7 +266,9 @@ LocalSolution solve_coulomb_local(const Eigen::Matrix3d& W, const Eigen::Vector3
 
 Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu) {
   const double r_t = r.tail<2>().norm();
-  if (r_t <= mu * r[0]) return r;                       // inside K_μ
+  // inside K_μ (r_n ≥ 0 asked explicitly: for μ = 0, r_t = 0 and r_n < 0 the test
+  // r_t ≤ μ r_n reads 0 ≤ −0 and would keep a negative normal impulse)
+  if (r[0] >= 0.0 && r_t <= mu * r[0]) return r;
   if (mu * r_t <= -r[0]) return Eigen::Vector3d::Zero();  // inside the polar cone
   const double r_n = (r[0] + mu * r_t) / (1.0 + mu * mu);
   const double scale = mu * r_n / r_t;
