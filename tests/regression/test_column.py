@@ -247,6 +247,16 @@ class Column(DeckTestCase):
         final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = 2\.5\)",
                           resumed.output, re.M)
         self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
+        # ke_relax alone (ke_stop 0): the relaxation ends as with ke_stop, at 2.2, but the
+        # wall phase is not ended early: the walls move its full t_end − t_relax = 1.0, to 3.2
+        relax_only = run(COLUMN, variables=dict(TINY, ke_relax=1e9, t_quiet=0.2, t_check=0.1))
+        self.assertRanCleanly(relax_only)
+        relaxed = re.search(r"^in\.column relaxed at t = (\S+) ", relax_only.output, re.M)
+        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
+                          relax_only.output, re.M)
+        self.assertAlmostEqual(float(relaxed.group(1)), 2.2, delta=1e-12)
+        self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
+        self.assertAlmostEqual(float(final.group(1)), 2.2 + 1.0, delta=1e-12)
         # ke_stop far below: the phases run in chunks of t_check to t_relax and t_end,
         # the observables those of the straight run (one run per phase); the chunks' run
         # boundaries change the wire's energy by round-off only
@@ -373,6 +383,9 @@ class Column(DeckTestCase):
                                    ({"ke_stop": -1}, "in.column: ke_stop must be >= 0 (0: off), got -1"),
                                    ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
+                                   ({"ke_relax": -1}, "in.column: ke_relax must be >= 0 (0: relax to t_relax), got -1"),
+                                   ({"t_quiet": 0.1, "t_check": 0.5},
+                                    "in.column: with ke_relax, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
                                    ({"grains": "cubes"}, "Label wasn't found in input script"),
