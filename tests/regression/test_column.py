@@ -257,6 +257,18 @@ class Column(DeckTestCase):
         self.assertAlmostEqual(float(relaxed.group(1)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.2 + 1.0, delta=1e-12)
+        # ke_walls alone (ke_stop 0, ke_relax 0): the relaxation runs to t_relax = 2.5, the
+        # wall phase ends after max(t_quiet, free_dist a_max / v_wall) = 0.2, at 2.7; at the
+        # default free_dist (2 a_max, 100 time units at v_wall 0.02) the relax_only run's
+        # walls above moved their full time with the default ke_walls
+        walls_only = run(COLUMN, variables=dict(TINY, ke_relax=0, ke_walls=1e9, t_quiet=0.2, t_check=0.1,
+                                                free_dist=0.002))
+        self.assertRanCleanly(walls_only)
+        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
+                          walls_only.output, re.M)
+        self.assertIn("in.column relaxed at t = 2.5 ", walls_only.output)
+        self.assertAlmostEqual(float(final.group(2)), 2.5, delta=1e-12)
+        self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
         # ke_stop far below: the phases run in chunks of t_check to t_relax and t_end,
         # the observables those of the straight run (one run per phase); the chunks' run
         # boundaries change the wire's energy by round-off only
@@ -386,6 +398,9 @@ class Column(DeckTestCase):
                                    ({"ke_relax": -1}, "in.column: ke_relax must be >= 0 (0: relax to t_relax), got -1"),
                                    ({"t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_relax, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
+                                   ({"ke_walls": -1}, "in.column: ke_walls must be >= 0 (0: the walls move t_end - t_relax), got -1"),
+                                   ({"ke_relax": 0, "t_quiet": 0.1, "t_check": 0.5},
+                                    "in.column: with ke_walls, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
                                    ({"grains": "cubes"}, "Label wasn't found in input script"),
