@@ -194,13 +194,13 @@ class Column(DeckTestCase):
         # column_walls.restart after each that passes a multiple of 400: at 2900 and 3300;
         # -var resume 3 continues the wall phase from the last for the 200 steps left, with
         # H0 and the walls' start time from column_walls.txt: the same final observables as
-        # the run it came from
-        straight = run(COLUMN, variables=dict(TINY, t_restart=0.4))
+        # the run it came from (ke_walls 0: no threshold, the chunks are t_restart's)
+        straight = run(COLUMN, variables=dict(TINY, t_restart=0.4, ke_walls=0))
         self.assertRanCleanly(straight)
         with open(straight.path("column_walls.txt")) as f:
             record = f.read().split()
         self.assertEqual(float(record[1]), 2.5)
-        resumed = run(COLUMN, variables=dict(TINY, resume=3), workdir=straight.workdir)
+        resumed = run(COLUMN, variables=dict(TINY, resume=3, ke_walls=0), workdir=straight.workdir)
         self.assertRanCleanly(resumed)
         self.assertRegex(resumed.output, r"Loop time of \S+ on 1 procs for 200 steps")
         a, b = final_observables(straight), final_observables(resumed)
