@@ -273,8 +273,12 @@ void PairWireContact::compute(int eflag, int vflag) {
 
   // the segment pairs (a, b) of the neighbour list, in its order, this rank computes; with
   // the cache, only those that may touch before the list is built again
-  // (segments_may_touch with the neighbour skin), chosen when the list is built
-  if (!cache_ || neighbor->ncalls != candidates_built_at_) {
+  // (segments_may_touch with the neighbour skin), chosen when the list is built. Always at
+  // a run's setup: LIGGGHTS' Verlet::setup sorts and exchanges the atoms, builds the list
+  // and then resets neighbor->ncalls to 0, so after a run without a rebuild the count is
+  // the same while the local and ghost indices are not (a 10 000-bead coil with the
+  // default atom sorting crashed on the stale pairs; bench/wire_scaling.py)
+  if (!cache_ || setup || neighbor->ncalls != candidates_built_at_) {
     candidates_.clear();
     candidates_built_at_ = neighbor->ncalls;
     const int inum = list->inum;

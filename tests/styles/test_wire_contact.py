@@ -452,6 +452,37 @@ run             20000
                 np.testing.assert_array_equal(with_cache[column], without[column], err_msg=f"skin {skin} {column}")
 
 
+class PairCacheAcrossRuns(DeckTestCase):
+    # The cache is rebuilt at every run's setup: LIGGGHTS' Verlet::setup sorts the atoms
+    # (atom_modify sort, on by default), builds the list and resets neighbor->ncalls to 0,
+    # so a run that builds no list (here `run 0`) leaves the count where the next setup
+    # finds it while the atoms' local indices change. The coil falls for 3000 steps, a
+    # `run 0`, the whole wire lifted by 0.5 (most beads change sort bins), 2000 steps more:
+    # the same trajectory to the bit with cache yes and no. The build before this test kept
+    # the pairs of the old indices (a 10 000-bead coil crashed on them).
+    DECK = COIL.format(top=8, turns=12.5, pair="cache {cache}", skin=0.1) + """thermo_style    custom step c_c[1]
+thermo          1000
+run             3000
+run             0
+displace_atoms  all move 0 0 0.5
+dump            d all custom 2000 {dump} id x y z vx vy vz
+run             2000
+"""
+
+    def test_same_trajectory_with_and_without_the_cache(self):
+        runs = {}
+        for cache in ("yes", "no"):
+            r = run(full_precision(self.DECK.format(cache=cache, dump=f"lifted_{cache}.dump"), "d"))
+            self.assertRanCleanly(r)
+            runs[cache] = r
+        contacts = runs["yes"].thermo()["c[1]"]
+        print(f"wire–wire contacts after the lift: {contacts[-1]:.0f}")
+        self.assertGreater(np.max(contacts), 20)
+        with_cache, without = (read_dump(r.path(f"lifted_{c}.dump")) for r, c in ((runs["yes"], "yes"), (runs["no"], "no")))
+        for column in ("x", "y", "z", "vx", "vy", "vz"):
+            np.testing.assert_array_equal(with_cache[column], without[column], err_msg=column)
+
+
 class Warnings(DeckTestCase):
     # A run stays within the contact model or says why not (bench/stress_matrix.py):
     # the time step against each contact style's stability limit, and overlaps beyond
