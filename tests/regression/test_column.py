@@ -393,7 +393,7 @@ class Column(DeckTestCase):
                                     "in.column: dt_NSCD (0.00025) must be a multiple of dt_SP (1e-4)"),
                                    ({"dt_NSCD": 5e-5, "dt_SP": "1e-4"},
                                     "in.column: dt_NSCD (5e-05) must be a multiple of dt_SP (1e-4)"),
-                                   ({"dt_SP": "-1e-3"}, "in.column: dt_SP must be >= 0 (0: dt_NSCD for nscd grains, "
+                                   ({"dt_SP": "-1e-3"}, "in.column: dt_SP must be >= 0 (0: dt_NSCD / N within the Gear-5 limit of the wire for nscd grains, "
                                                       "1e-4 for the stock models), got -1e-3"),
                                    ({"t_obs": 0}, "in.column: t_obs must be > 0, got 0"),
                                    ({"t_obs": "1e-4"}, "in.column: t_obs (1e-4) must be at least dt_SP (0.001)"),
