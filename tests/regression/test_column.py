@@ -25,6 +25,15 @@ def final_observables(result):
     return {name: float(re.search(re.escape(name) + r" = (\S+)", line).group(1)) for name in NAMES}
 
 
+def final_times(result):
+    """The tiny column's final line: group(1) the time it ended at, group(2) the walls' start."""
+    found = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
+                      result.output, re.M)
+    if found is None:
+        raise AssertionError("no final line:\n" + result.output[-3000:])
+    return found
+
+
 def dump_observables(result, *options):
     """postprocess/observables.py on the run's relaxed and final dumps: the final snapshot's
     observables, H_n relative to the relaxed one."""
@@ -234,8 +243,7 @@ class Column(DeckTestCase):
         early = run(COLUMN, variables=dict(TINY, ke_stop=1e9, t_quiet=0.2, t_check=0.1, free_dist=0.002))
         self.assertRanCleanly(early)
         relaxed = re.search(r"^in\.column relaxed at t = (\S+) ", early.output, re.M)
-        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
-                          early.output, re.M)
+        final = final_times(early)
         self.assertAlmostEqual(float(relaxed.group(1)), 2.0 + 0.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.2 + 0.2, delta=1e-12)
@@ -244,16 +252,15 @@ class Column(DeckTestCase):
         resumed = run(COLUMN, variables=dict(TINY, resume=1, ke_stop=1e9, t_quiet=0.2, t_check=0.1, free_dist=0.002),
                       workdir=self.straight.workdir)
         self.assertRanCleanly(resumed)
-        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = 2\.5\)",
-                          resumed.output, re.M)
+        final = final_times(resumed)
+        self.assertAlmostEqual(float(final.group(2)), 2.5, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
         # ke_relax alone (ke_stop 0): the relaxation ends as with ke_stop, at 2.2, but the
         # wall phase is not ended early: the walls move its full t_end − t_relax = 1.0, to 3.2
         relax_only = run(COLUMN, variables=dict(TINY, ke_relax=1e9, t_quiet=0.2, t_check=0.1))
         self.assertRanCleanly(relax_only)
         relaxed = re.search(r"^in\.column relaxed at t = (\S+) ", relax_only.output, re.M)
-        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
-                          relax_only.output, re.M)
+        final = final_times(relax_only)
         self.assertAlmostEqual(float(relaxed.group(1)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(2)), 2.2, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.2 + 1.0, delta=1e-12)
@@ -264,8 +271,7 @@ class Column(DeckTestCase):
         walls_only = run(COLUMN, variables=dict(TINY, ke_relax=0, ke_walls=1e9, t_quiet=0.2, t_check=0.1,
                                                 free_dist=0.002))
         self.assertRanCleanly(walls_only)
-        final = re.search(r"^in\.column final: .* at t = (\S+) \(t_end 3\.5; walls moving since t = (\S+)\)",
-                          walls_only.output, re.M)
+        final = final_times(walls_only)
         self.assertIn("in.column relaxed at t = 2.5 ", walls_only.output)
         self.assertAlmostEqual(float(final.group(2)), 2.5, delta=1e-12)
         self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
@@ -355,12 +361,15 @@ class Column(DeckTestCase):
             result = run(COLUMN, variables=dict(short, **extra))
             self.assertRanCleanly(result)
             m = re.search(r"gear5 limit (\S+); timestep (\S+) = (\S+) of it", result.output)
-            limit, dt = float(m.group(1)), float(m.group(2))
+            limit, dt_fix = float(m.group(1)), float(m.group(2))
+            # the deck's own line has dt_SP to 15 digits, the fix's to 6
+            deck_line = re.search(r"^in\.column: dt_SP (\S+), dt_NSCD (\S+)$", result.output, re.M)
+            dt = float(deck_line.group(1))
             print(f"\n{extra}: dt_SP {dt}, Gear-5 limit {limit}")
-            self.assertAlmostEqual(dt, expected_dt, delta=2e-6 * expected_dt)  # printed to 6 digits
+            self.assertEqual(deck_line.group(2), "2e-3")
+            self.assertAlmostEqual(dt, expected_dt, delta=1e-15)
+            self.assertEqual(f"{dt:.6g}", f"{dt_fix:.6g}")  # the timestep the fix was given
             self.assertLessEqual(dt, 0.5 * limit)
-            self.assertIn("in.column: dt_SP", result.output)
-            self.assertIn(", dt_NSCD 2e-3", result.output)
 
     def test_a_grain_leaving_the_box_stops_the_run(self):
         # the box 5 wide on each side of the axis (box_half; the walls at 4.5), the walls

@@ -426,6 +426,20 @@ run             60000
         self.assertRegex(found[0], r"^fix wire/wall \(id floor\): at step \d+ bead \d+ and the wall overlap by ")
 
 
+def assert_same_with_and_without_cache(test, deck_template, label, **fields):
+    """Runs the deck with cache yes and no (its dump d written to {dump}); asserts the dumped
+    positions and velocities equal to the bit; returns the contact counts (c_c[1]) with the cache."""
+    runs = {}
+    for cache in ("yes", "no"):
+        r = run(full_precision(deck_template.format(cache=cache, dump=f"cache_{cache}.dump", **fields), "d"))
+        test.assertRanCleanly(r)
+        runs[cache] = r
+    with_cache, without = (read_dump(runs[c].path(f"cache_{c}.dump")) for c in ("yes", "no"))
+    for column in ("x", "y", "z", "vx", "vy", "vz"):
+        np.testing.assert_array_equal(with_cache[column], without[column], err_msg=f"{label} {column}")
+    return runs["yes"].thermo()["c[1]"]
+
+
 class PairCache(DeckTestCase):
     # pair_style wire/contact cache yes (the default) looks only at the neighbour-list
     # pairs that can touch before the list is built again: a 600-segment coil falling into
@@ -439,17 +453,9 @@ run             20000
 
     def test_same_trajectory_with_and_without_the_cache(self):
         for skin in (0.1, 0.4):
-            runs = {}
-            for cache in ("yes", "no"):
-                r = run(full_precision(self.DECK.format(cache=cache, skin=skin, dump=f"pile_{cache}.dump"), "d"))
-                self.assertRanCleanly(r)
-                runs[cache] = r
-            contacts = runs["yes"].thermo()["c[1]"]
+            contacts = assert_same_with_and_without_cache(self, self.DECK, f"skin {skin}", skin=skin)
             print(f"skin {skin}: wire–wire contacts at the end {contacts[-1]:.0f}, most {np.max(contacts):.0f}")
             self.assertGreater(np.max(contacts), 100)  # it piles up
-            with_cache, without = (read_dump(r.path(f"pile_{c}.dump")) for r, c in ((runs["yes"], "yes"), (runs["no"], "no")))
-            for column in ("x", "y", "z", "vx", "vy", "vz"):
-                np.testing.assert_array_equal(with_cache[column], without[column], err_msg=f"skin {skin} {column}")
 
 
 class PairCacheAcrossRuns(DeckTestCase):
@@ -470,17 +476,9 @@ run             2000
 """
 
     def test_same_trajectory_with_and_without_the_cache(self):
-        runs = {}
-        for cache in ("yes", "no"):
-            r = run(full_precision(self.DECK.format(cache=cache, dump=f"lifted_{cache}.dump"), "d"))
-            self.assertRanCleanly(r)
-            runs[cache] = r
-        contacts = runs["yes"].thermo()["c[1]"]
+        contacts = assert_same_with_and_without_cache(self, self.DECK, "lifted")
         print(f"wire–wire contacts after the lift: {contacts[-1]:.0f}")
         self.assertGreater(np.max(contacts), 20)
-        with_cache, without = (read_dump(r.path(f"lifted_{c}.dump")) for r, c in ((runs["yes"], "yes"), (runs["no"], "no")))
-        for column in ("x", "y", "z", "vx", "vy", "vz"):
-            np.testing.assert_array_equal(with_cache[column], without[column], err_msg=column)
 
 
 class Warnings(DeckTestCase):
