@@ -23,7 +23,9 @@
    the first time, and again only when an overlap doubles the largest one named (about
    0.5, 1, 2, 4 r_w ...), so that its size shows without repeating a run that stays near
    the threshold (the reduced column presses beads 0.5 r_w into the floor and grains
-   again and again); kMaxOverlapWarnings per style and rank in all. */
+   again and again); kMaxOverlapWarnings per style and rank in all.
+
+   Per bead, per step (session 21): common/bead_contact_load.h. */
 
 #ifndef WIREGRAIN_CONTACT_CHECKS_H
 #define WIREGRAIN_CONTACT_CHECKS_H
@@ -40,6 +42,7 @@ class LAMMPS;
 namespace wiregrain_lmp {
 
 constexpr double kLargeOverlapFraction = 0.5;  // of r_w
+
 constexpr int kMaxOverlapWarnings = 10;
 
 // true when a fix nve/gear with the gear5 scheme is defined (the wire is then integrated

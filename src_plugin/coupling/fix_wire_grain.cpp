@@ -31,6 +31,7 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/held_grains.h"
 #include "core/contact/wire_grain_pairs.h"
+#include "bead_contact_load.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
@@ -521,6 +522,11 @@ void FixWireGrain::evaluate(bool setup) {
         bead_force_[i][e] += c.force_bead0[e];
         bead_force_[j][e] += c.force_bead1[e];
       }
+      // the beads' time-step check (contact_time_step.h): the weights of the moving
+      // bodies sum to 1 with the grain held during the sub-steps, to 2 with stock grains
+      const double moving = stock_grains_ ? 2.0 : 1.0, t = c.load_parameter;
+      wiregrain_lmp::add_bead_contact_load(wire_->contact_load[i], (1.0 - t) * moving, c.spring_dashpot, c.normal);
+      wiregrain_lmp::add_bead_contact_load(wire_->contact_load[j], t * moving, c.spring_dashpot, c.normal);
       loads.add(grain_tag, c.force_grain, c.torque_grain);
       record_contact(c, i, grain_tag);
       return -c.overlap;

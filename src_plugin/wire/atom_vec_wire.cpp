@@ -13,6 +13,7 @@
 #include "memory.h"
 #include "modify.h"
 
+#include "bead_contact_load.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 
@@ -41,12 +42,14 @@ AtomVecWire::AtomVecWire(LAMMPS *lmp) : PluginAtomVec(lmp) {
   atom->radius_flag = atom->rmass_flag = 1;
   wire_prev = wire_next = NULL;
   wire_rest = NULL;
+  contact_load = NULL;
 }
 
 AtomVecWire::~AtomVecWire() {
   memory->destroy(wire_prev);
   memory->destroy(wire_next);
   memory->destroy(wire_rest);
+  memory->destroy(contact_load);
 }
 
 AtomVecWire *AtomVecWire::of(Atom *atom) {
@@ -93,6 +96,7 @@ void AtomVecWire::grow(int n) {
   memory->grow(wire_prev, nmax, "atom:wire_prev");
   memory->grow(wire_next, nmax, "atom:wire_next");
   memory->grow(wire_rest, nmax, "atom:wire_rest");
+  memory->grow(contact_load, nmax, wiregrain_lmp::kBeadContactLoadSize, "atom:contact_load");
 
   if (atom->nextra_grow)
     for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
@@ -411,5 +415,6 @@ bigint AtomVecWire::memory_usage() {
   bytes += memory->usage(wire_prev, nmax);
   bytes += memory->usage(wire_next, nmax);
   bytes += memory->usage(wire_rest, nmax);
+  bytes += memory->usage(contact_load, nmax, wiregrain_lmp::kBeadContactLoadSize);
   return bytes;
 }

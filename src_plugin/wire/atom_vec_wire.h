@@ -57,6 +57,13 @@ class AtomVecWire : public PluginAtomVec {
   int *wire_next;       // tag of the next bead, 0 at a free end
   double *wire_rest;    // rest length of the segment to the next bead
 
+  // The springs and dashpots the contacts of this step put on each bead, owned and ghost
+  // (common/bead_contact_load.h: kBeadContactLoadSize doubles per bead); not migrated, not in
+  // restarts: fix nve/gear clears them before the forces, sums the ghosts' to their owners
+  // after them and checks each bead's time step. The contact styles add to them where
+  // they add their forces.
+  double **contact_load;
+
   // The wire style of this system (plain or inside atom_style hybrid), or NULL.
   static AtomVecWire *of(class Atom *);
 

@@ -3,18 +3,23 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "update.h"
 
+#include "atom_vec_wire.h"
 #include "core/common/validation.h"
+#include "core/contact/contact_time_step.h"
 #include "core/wire/gear_integrator.h"
+#include "bead_contact_load.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 
@@ -27,7 +32,15 @@ constexpr int kPerAtom = wiregrain::kGearHistorySize + 1;    // values stored pe
 }  // namespace
 
 FixNVEGear::FixNVEGear(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), scheme_(GEAR5), velocity_forces_(false), dt_(0.0), history_(NULL) {
+    : Fix(lmp, narg, arg),
+      scheme_(GEAR5),
+      velocity_forces_(false),
+      dt_(0.0),
+      history_(NULL),
+      wire_(NULL),
+      unstable_steps_(0),
+      largest_ratio_(0.0),
+      load_warnings_(0) {
   wiregrain_lmp::StyleArgs args(error, "fix", "nve/gear", id, narg, arg, 3);
   while (!args.done()) {
     const std::string key = args.next_keyword();
@@ -48,6 +61,11 @@ FixNVEGear::FixNVEGear(LAMMPS *lmp, int narg, char **arg)
 
   time_integrate = 1;
   restart_peratom = 1;
+  vector_flag = 1;
+  size_vector = 2;
+  global_freq = 1;
+  extvector = 0;
+  comm_reverse = wiregrain_lmp::kBeadContactLoadSize;
   create_attribute = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
@@ -64,6 +82,7 @@ FixNVEGear::~FixNVEGear() {
 int FixNVEGear::setmask() {
   int mask = 0;
   mask |= INITIAL_INTEGRATE;
+  mask |= PRE_FORCE;
   mask |= FINAL_INTEGRATE;
   return mask;
 }
@@ -106,6 +125,7 @@ void FixNVEGear::init() {
                                        wiregrain::format_number(atom->mass[t]) + " (must be a finite number > 0)");
   }
   dt_ = update->dt;
+  wire_ = AtomVecWire::of(atom);
 }
 
 void FixNVEGear::reset_dt() { dt_ = update->dt; }
@@ -155,6 +175,7 @@ void FixNVEGear::final_integrate() {
                                                 ? wiregrain::GearCoefficients::velocity_forces()
                                                 : wiregrain::GearCoefficients::position_forces(),
                                             dt_);
+  check_contact_loads();
   int non_finite = -1;  // the first atom with a non-finite force, checked after the loop
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -178,6 +199,78 @@ void FixNVEGear::final_integrate() {
                        " has a non-finite force at step " + std::to_string(update->ntimestep) +
                        " (from a force style or fix acting on it)")
                           .c_str());
+}
+
+// The contact styles add to the beads' loads while they compute their forces (owned and
+// ghost beads), so the loads start from zero before the forces of each step.
+void FixNVEGear::setup_pre_force(int /*vflag*/) { clear_contact_loads(); }
+void FixNVEGear::pre_force(int /*vflag*/) { clear_contact_loads(); }
+
+void FixNVEGear::clear_contact_loads() {
+  if (!wire_) return;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++)
+    for (int e = 0; e < wiregrain_lmp::kBeadContactLoadSize; e++) wire_->contact_load[i][e] = 0.0;
+}
+
+// Each owned bead's limit from its summed contact springs and dashpots against the step
+// (core/contact/contact_time_step.h); the bead furthest beyond it is named by its owner.
+void FixNVEGear::check_contact_loads() {
+  if (!wire_) return;
+  comm->reverse_comm_fix(this);
+  // summed into their owners: cleared, so that another fix nve/gear adds nothing twice
+  for (int i = atom->nlocal; i < atom->nlocal + atom->nghost; i++)
+    for (int e = 0; e < wiregrain_lmp::kBeadContactLoadSize; e++) wire_->contact_load[i][e] = 0.0;
+  const bool gear = scheme_ == GEAR5;
+  struct {
+    double ratio;
+    int rank;
+  } mine = {0.0, comm->me}, worst;
+  double record[4] = {0.0, 0.0, 0.0, 0.0};  // tag, contacts, m, limit
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || wire_->contact_load[i][wiregrain_lmp::kBeadContactLoadSize - 1] == 0.0)
+      continue;  // no contact
+    const wiregrain::BeadContactLoad load = wiregrain_lmp::bead_contact_load(wire_->contact_load[i]);
+    const double limit = wiregrain::bead_contact_time_step(load, mass_of(i)).limit(gear);
+    const double ratio = dt_ / limit;
+    if (ratio > mine.ratio) {
+      mine.ratio = ratio;
+      const double values[4] = {double(atom->tag[i]), double(load.contacts), mass_of(i), limit};
+      std::memcpy(record, values, sizeof(values));
+    }
+  }
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  largest_ratio_ = worst.ratio;
+  if (!(worst.ratio > 1.0)) return;
+  unstable_steps_++;
+  if (load_warnings_ >= 10) return;
+  load_warnings_++;
+  MPI_Bcast(record, 4, MPI_DOUBLE, worst.rank, world);
+  if (comm->me != 0) return;
+  char text[640];
+  std::snprintf(text, sizeof(text),
+                "fix nve/gear (id %s): at step %ld bead %.0f carries %.0f contacts whose summed springs and dashpots "
+                "on its mass %g give a %s limit of %g, below the timestep %g (such a bead rattles at the contact "
+                "frequency instead of coming to rest); use a smaller timestep or less contact damping (restitution "
+                "closer to 1)%s",
+                id, (long)update->ntimestep, record[0], record[1], record[2], gear ? "gear5" : "Verlet", record[3], dt_,
+                load_warnings_ == 10 ? " (the last such warning)" : "");
+  error->warning(FLERR, text);
+}
+
+double FixNVEGear::compute_vector(int k) { return k == 0 ? double(unstable_steps_) : largest_ratio_; }
+
+int FixNVEGear::pack_reverse_comm(int n, int first, double *buf) {
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int e = 0; e < wiregrain_lmp::kBeadContactLoadSize; e++) buf[m++] = wire_->contact_load[i][e];
+  return comm_reverse;
+}
+
+void FixNVEGear::unpack_reverse_comm(int n, int *list, double *buf) {
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int e = 0; e < wiregrain_lmp::kBeadContactLoadSize; e++) wire_->contact_load[list[k]][e] += buf[m++];
 }
 
 double FixNVEGear::memory_usage() { return double(atom->nmax) * kPerAtom * sizeof(double); }

@@ -4,7 +4,13 @@
    fix ID group nve/gear [scheme gear5|verlet] [forces position|velocity]
 
    The Gear history (x'' ... x^(5) per atom) migrates with the atoms and is written to
-   restart files, so a restarted run continues the same trajectory. */
+   restart files, so a restarted run continues the same trajectory.
+
+   Each step it checks every bead's time step against the springs and dashpots the
+   contact styles put on it in that step (atom_style wire's contact_load; the formula in
+   core/contact/contact_time_step.h) and warns the first 10 times one is beyond the
+   limit of the scheme. Vector: steps with such a bead since the fix was defined, the
+   largest timestep / limit of the last step. */
 
 #ifdef FIX_CLASS
 
@@ -27,8 +33,13 @@ class FixNVEGear : public Fix {
   void init();
   void setup(int);
   void initial_integrate(int);
+  void setup_pre_force(int);
+  void pre_force(int);
   void final_integrate();
   void reset_dt();
+  double compute_vector(int);
+  int pack_reverse_comm(int, int, double *);
+  void unpack_reverse_comm(int, int *, double *);
   double memory_usage();
   bool uses_gear() const { return scheme_ == GEAR5; }
 
@@ -51,6 +62,13 @@ class FixNVEGear : public Fix {
   double **history_;
   double mass_of(int i) const;
   void start_history(int i);
+  // the contact loads of the beads (atom_style wire; NULL without it)
+  class AtomVecWire *wire_;
+  void clear_contact_loads();
+  void check_contact_loads();
+  long unstable_steps_;
+  double largest_ratio_;
+  int load_warnings_;
 };
 
 }  // namespace LAMMPS_NS

@@ -20,7 +20,9 @@
 
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_list.h"
+#include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
+#include "bead_contact_load.h"
 #include "plugin_args.h"
 #include "plugin_material.h"
 
@@ -207,6 +209,9 @@ void FixWireWall::post_force(int /*vflag*/) {
     const wiregrain::SoftContactForce fc =
         wiregrain::soft_contact_force(law, -gap, n, u, setup ? 0.0 : update->dt, rmass[i], advanced);
     history_->store(i, 0, setup ? h : advanced);
+    // the bead's time-step check (contact_time_step.h): the wall does not move with it
+    const wiregrain::SpringDashpot sd = wiregrain::contact_spring_dashpot(law, rmass[i]);
+    wiregrain_lmp::add_bead_contact_load(wire_->contact_load[i], 1.0, sd, n);
     for (int d = 0; d < 3; d++) {
       f[i][d] += fc.force[d];
       local_stats_[2 + d] -= fc.force[d];

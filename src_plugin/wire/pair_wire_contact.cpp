@@ -31,6 +31,7 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
+#include "bead_contact_load.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 #include "plugin_material.h"
@@ -361,6 +362,11 @@ void PairWireContact::compute(int eflag, int vflag) {
     add_force(f[b1], cp.t, fc.force);
     add_force(f[a], -(1.0 - cp.s), fc.force);
     add_force(f[a1], -cp.s, fc.force);
+    // the beads' time-step check (contact_time_step.h): four moving beads, weights summing to 2
+    const wiregrain::SpringDashpot sd = wiregrain::contact_spring_dashpot(law, m_a * m_b / (m_a + m_b));
+    const std::pair<int, double> loaded[4] = {{a, 1.0 - cp.s}, {a1, cp.s}, {b, 1.0 - cp.t}, {b1, cp.t}};
+    for (const auto &[bead, weight] : loaded)
+      wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, sd, normal);
     if (eflag)
       eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
                   0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();

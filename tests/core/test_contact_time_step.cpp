@@ -4,12 +4,15 @@
 // with the core's gear5 kernels.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/common/errors.h"
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_time_step.h"
+#include "core/contact/soft_contact.h"
 #include "core/wire/gear_integrator.h"
 
 using namespace wiregrain;
@@ -123,4 +126,155 @@ TEST(ContactTimeStep, ReducedMassAndLimits) {
   EXPECT_THROW(spring_dashpot_time_step(1.0, 0.0, 0.0), InvalidArgument);
   EXPECT_THROW(spring_dashpot_time_step(1.0, 1.0, -0.1), InvalidArgument);
   EXPECT_THROW(spring_dashpot_time_step(1.0, 1.0, std::nan("")), InvalidArgument);
+}
+
+// The springs and dashpots summed on one bead (bead_contact_time_step), against beads
+// integrated step by step with the core's gear5 kernels.
+namespace {
+// 1-D beads of mass m loaded by contacts: contact c has the gap g_c = Σ_j w_cj x_j and pushes
+// bead j by −w_cj (k g_c + γ ġ_c). From x = (1, −0.6, 0.3, …), v = 0; the largest |x_j| of
+// the last tenth of the steps (∞ once it overflows).
+double late_amplitude_of_beads(const std::vector<std::vector<double>> &weights, double k, double gamma, double m,
+                               double dt, long steps) {
+  const std::size_t n = weights.front().size();
+  std::vector<std::array<double, 3>> x(n), v(n), a(n);
+  std::vector<std::array<double, kGearHistorySize>> h(n);
+  for (std::size_t j = 0; j < n; ++j) x[j] = {j == 0 ? 1.0 : (j % 2 ? -0.6 : 0.3), 0.0, 0.0}, v[j] = {0.0, 0.0, 0.0};
+  const auto accelerations = [&]() {
+    for (auto &aj : a) aj = {0.0, 0.0, 0.0};
+    for (const std::vector<double> &w : weights) {
+      double gap = 0.0, rate = 0.0;
+      for (std::size_t j = 0; j < n; ++j) gap += w[j] * x[j][0], rate += w[j] * v[j][0];
+      for (std::size_t j = 0; j < n; ++j) a[j][0] -= w[j] * (k * gap + gamma * rate) / m;
+    }
+  };
+  accelerations();
+  for (std::size_t j = 0; j < n; ++j) gear5_start(h[j].data(), a[j].data());
+  const GearCorrector corrector(GearCoefficients::position_forces(), dt);
+  double largest = 0.0;
+  for (long s = 0; s < steps; ++s) {
+    for (std::size_t j = 0; j < n; ++j) gear5_predict(x[j].data(), v[j].data(), h[j].data(), dt);
+    accelerations();
+    for (std::size_t j = 0; j < n; ++j) gear5_correct(x[j].data(), v[j].data(), h[j].data(), a[j].data(), corrector);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!std::isfinite(x[j][0])) return std::numeric_limits<double>::infinity();
+      if (s >= steps - steps / 10) largest = std::max(largest, std::abs(x[j][0]));
+    }
+  }
+  return largest;
+}
+}  // namespace
+
+// contact_spring_dashpot's γ is the damping soft_contact_force applies: at zero overlap
+// a closing speed u gives f_n = γ u (the normal spring is the stiffer one here).
+TEST(ContactTimeStep, SpringDashpotOfALawIsItsForce) {
+  ContactFriction damped;
+  damped.damping_ratio = damping_ratio_from_restitution(0.5);
+  damped.static_friction = damped.dynamic_friction = 10.0;  // the tangential test sticks
+  const SoftContactLaw wall = wire_wall_contact_law(ElasticMaterial(), 0.2, 0.1, damped);
+  const double m = 0.5 * kPi * 0.01 * 0.2;
+  const SpringDashpot sd = contact_spring_dashpot(wall, m);
+  EXPECT_EQ(sd.normal_stiffness, wall.normal_stiffness);
+  EXPECT_EQ(sd.tangential_stiffness, wall.tangential_stiffness);
+  // the normal dashpot: f_n at zero overlap; the tangential one: the trial f_t of a
+  // sticking contact with a zero spring after a step of dt = 0 (no spring growth)
+  TangentialHistory history;
+  const double u = 0.37;
+  const SoftContactForce f = soft_contact_force(wall, 0.0, Eigen::Vector3d::UnitZ(), Eigen::Vector3d(0, 0, -u), 1e-3, m, history);
+  EXPECT_NEAR(f.normal_force, sd.normal_damping * u, 1e-14);
+  TangentialHistory sticking;
+  const SoftContactForce t = soft_contact_force(wall, 0.01, Eigen::Vector3d::UnitZ(), Eigen::Vector3d(u, 0, 0), 0.0, m, sticking);
+  EXPECT_NEAR(t.tangential_force, sd.tangential_damping * u, 1e-14);
+  // one contact on one bead: the limits of that spring–dashpot (the normal spring is the stiffer)
+  BeadContactLoad load;
+  load.add(1.0, sd, Eigen::Vector3d(0.6, 0.0, 0.8));
+  const ContactTimeStep one = bead_contact_time_step(load, m);
+  const ContactTimeStep law = contact_time_step(wall, m);
+  EXPECT_NEAR(one.gear5, law.gear5, 1e-15);
+  EXPECT_NEAR(one.critical, law.critical, 1e-15);
+  EXPECT_TRUE(std::isinf(bead_contact_time_step(BeadContactLoad(), m).gear5));
+  EXPECT_THROW(bead_contact_time_step(1.0, -1.0, 1.0), InvalidArgument);
+  EXPECT_THROW(bead_contact_time_step(1.0, 1.0, 0.0), InvalidArgument);
+  EXPECT_TRUE(std::isinf(bead_contact_time_step(0.0, 0.0, 1.0).gear5));
+}
+
+// Strongly damped contacts (e = 0.1: the damping bound of Gear decides), k = 1, m = 1:
+// - a bead pressed by six bodies (both its segments against three grains, the load at the
+//   bead: weights 1), K = 6k, Γ = 6γ;
+// - two beads of a segment loaded at its middle (weights ½, ½): each K = k/2, Γ = γ/2;
+// - two segments of two beads each touching at their middles (weights ∓½): each K = k, Γ = γ.
+// Each system is stable at 0.97 of the bead's limit and grows at 1.15 of it; the single
+// contact's own limit (contact_time_step) would let the wedged bead run a step 6 times too
+// long (the damping decides both: Γ/(2m) is six times γ/(2m)).
+TEST(ContactTimeStep, BeadLimitOfSummedContacts) {
+  const double zeta = damping_ratio_from_restitution(0.1), k = 1.0, m = 1.0;
+  const double gamma = 2.0 * zeta * std::sqrt(k * m);
+  struct Case {
+    const char *name;
+    std::vector<std::vector<double>> weights;
+    double bead_stiffness, bead_damping;  // w S k and w S γ summed (contact_time_step.h)
+  };
+  const std::vector<Case> cases = {
+      {"wedged bead", std::vector<std::vector<double>>(6, {1.0}), 6.0 * k, 6.0 * gamma},
+      {"segment loaded at its middle", {{0.5, 0.5}}, 0.5 * k, 0.5 * gamma},
+      {"two segments touching", {{-0.5, -0.5, 0.5, 0.5}}, 2.0 * 0.5 * k, 2.0 * 0.5 * gamma},
+  };
+  for (const Case &c : cases) {
+    const double limit = bead_contact_time_step(c.bead_stiffness, c.bead_damping, m).gear5;
+    EXPECT_LE(late_amplitude_of_beads(c.weights, k, gamma, m, 0.97 * limit, 40000), 1.0 + 1e-6) << c.name;
+    EXPECT_GT(late_amplitude_of_beads(c.weights, k, gamma, m, 1.15 * limit, 40000), 1.0) << c.name;
+  }
+  const double single = spring_dashpot_time_step(k, m, zeta).gear5;
+  EXPECT_NEAR(single / bead_contact_time_step(6.0 * k, 6.0 * gamma, m).gear5, 6.0, 1e-12);
+}
+
+// Contacts in different directions do not add up along one: a bead pressed by three walls
+// with orthogonal normals and two along the same normal (strong damping, k_t = k_n / 2),
+// integrated in 3-D with the gear5 kernels, is stable at 0.97 of the limit from the
+// largest eigenvalues of K and Γ and grows at 1.15 of it; the five contacts summed as if
+// parallel would have asked for a step 1.21 times shorter.
+TEST(ContactTimeStep, BeadLimitTakesTheStiffestDirection) {
+  const double zeta = damping_ratio_from_restitution(0.1), m = 1.0;
+  SpringDashpot contact;
+  contact.normal_stiffness = 1.0;
+  contact.tangential_stiffness = 0.5;
+  contact.normal_damping = 2.0 * zeta * std::sqrt(contact.normal_stiffness * m);
+  contact.tangential_damping = 2.0 * zeta * std::sqrt(contact.tangential_stiffness * m);
+  const std::vector<Eigen::Vector3d> normals = {Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX(),
+                                                Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(),
+                                                Eigen::Vector3d::UnitZ()};
+  BeadContactLoad load;
+  for (const Eigen::Vector3d &n : normals) load.add(1.0, contact, n);
+  EXPECT_EQ(load.contacts, 5);
+  const double limit = bead_contact_time_step(load, m).gear5;
+  // by hand: K = diag(2 k_n + 3 k_t, k_n + 4 k_t, 2 k_n + 3 k_t) = diag(3.5, 3, 3.5), Γ the
+  // same with the γ's: λ_max(Γ) = 2 γ_n + 3 γ_t
+  const double largest_damping = 2.0 * contact.normal_damping + 3.0 * contact.tangential_damping;
+  EXPECT_NEAR(limit, bead_contact_time_step(3.5, largest_damping, m).gear5, 1e-14);
+  const auto late = [&](double dt) {
+    double x[3] = {1.0, -0.6, 0.3}, v[3] = {0.0, 0.0, 0.0}, a[3], h[kGearHistorySize];
+    const auto acceleration = [&]() {
+      const Eigen::Vector3d f = -(load.stiffness * Eigen::Vector3d(x[0], x[1], x[2]) +
+                                  load.damping * Eigen::Vector3d(v[0], v[1], v[2]));
+      for (int d = 0; d < 3; ++d) a[d] = f[d] / m;
+    };
+    acceleration();
+    gear5_start(h, a);
+    const GearCorrector corrector(GearCoefficients::position_forces(), dt);
+    double largest = 0.0;
+    const long steps = 40000;
+    for (long s = 0; s < steps; ++s) {
+      gear5_predict(x, v, h, dt);
+      acceleration();
+      gear5_correct(x, v, h, a, corrector);
+      if (!std::isfinite(x[0] + x[1] + x[2])) return std::numeric_limits<double>::infinity();
+      if (s >= steps - steps / 10) largest = std::max({largest, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
+    }
+    return largest;
+  };
+  EXPECT_LE(late(0.97 * limit), 1.0 + 1e-6);
+  EXPECT_GT(late(1.15 * limit), 1.0);
+  // the five stiffer springs summed as if parallel: the damping decides both limits
+  const double scalar = bead_contact_time_step(5.0 * contact.normal_stiffness, 5.0 * contact.normal_damping, m).gear5;
+  EXPECT_NEAR(limit / scalar, 5.0 / (2.0 + 3.0 / std::sqrt(2.0)), 1e-12);
 }

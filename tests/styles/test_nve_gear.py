@@ -154,6 +154,111 @@ run             100
         self.assertLess(difference, 1e-12)
 
 
+# A straight wire resting in a V-groove of two fix wire/wall planes at ±45° (strongly
+# damped contacts, restitution 0.1): every bead carries two wall contacts at once.
+GROOVE = """
+units           lj
+atom_style      wire
+boundary        f f f
+newton          off
+region          box block -2 2 -2 2 -2 2
+create_box      1 box
+create_wire     1 line -0.5 0 0.16 0.5 0 0.16
+fix             elastic all wire/elastic
+fix             integr all nve/gear
+fix             gravity all gravity 1.0 vector 0 0 -1
+fix             left all wire/wall plane 0 0 0 0 0.70710678118654752 0.70710678118654752 restitution 0.1
+fix             right all wire/wall plane 0 0 0 0 -0.70710678118654752 0.70710678118654752 restitution 0.1
+timestep        {dt}
+compute         ke all ke
+thermo_style    custom step c_ke f_integr[1] f_integr[2]
+thermo_modify   format float %.15g
+thermo          2000
+run             20000
+"""
+
+
+def groove_bead_limit():
+    """The gear5 limit of one bead of GROOVE, by hand (README, fix nve/gear): the walls'
+    springs k_n = E l π/4, k_t = E r (E* = E for ν = 0) and dashpots γ = 2ζ√(k m) on the bead
+    mass m = ρ π r² l; the two normals (0, ±1, 1)/√2 give K = diag(2 k_t, k_n + k_t, k_n + k_t)
+    and Γ likewise; limit = min(0.313 (√(1+ζ²) − ζ)/ω, 0.075/(ζ ω)) with ω² = (k_n + k_t)/m,
+    ζ ω = (γ_n + γ_t)/(2 m)."""
+    E, r, l, rho, e = 100.0, 0.1, 0.2, 0.5, 0.1
+    m = rho * math.pi * r * r * l
+    k_n, k_t = E * l * math.pi / 4, E * r
+    zeta = -math.log(e) / math.sqrt(math.pi ** 2 + math.log(e) ** 2)
+    g_n, g_t = 2 * zeta * math.sqrt(k_n * m), 2 * zeta * math.sqrt(k_t * m)
+    omega = math.sqrt((k_n + k_t) / m)
+    zeta_bead = (g_n + g_t) / (2 * math.sqrt((k_n + k_t) * m))
+    single = 0.075 / (zeta * math.sqrt(k_n / m))  # one wall contact alone (its damping decides)
+    bead = min(0.313 * (math.sqrt(1 + zeta_bead ** 2) - zeta_bead) / omega, 0.075 / (zeta_bead * omega))
+    return bead, single
+
+
+class BeadContactLoads(DeckTestCase):
+    """The per-bead time-step check (session 21): a bead loaded by several contacts at once
+    is unstable at a step that each contact alone allows (it rattles at the contact
+    frequency instead of coming to rest)."""
+
+    def test_groove_beyond_the_bead_limit_rattles_and_warns(self):
+        bead, single = groove_bead_limit()
+        self.assertLess(1.3 * bead, single)  # a step each wall's own check lets through
+        above = run(GROOVE.format(dt=1.3 * bead))
+        self.assertRanCleanly(above)
+        self.assertIn("WARNING: fix nve/gear (id integr): at step", above.output)
+        self.assertRegex(above.output, r"bead \d+ carries 2 contacts whose summed springs and dashpots on its mass "
+                                       r"0\.00314159 give a gear5 limit of 0\.000997")
+        self.assertNotIn("WARNING: fix wire/wall", above.output)
+        t = above.thermo()
+        self.assertAlmostEqual(t["integr[2"][-1], 1.3, delta=1e-9)
+        self.assertGreater(t["integr[1"][-1], 19000)  # nearly every step
+        self.assertGreater(np.min(t["ke"][-5:]), 1e-11)  # still rattling after 20000 steps
+        below = run(GROOVE.format(dt=0.8 * bead))
+        self.assertRanCleanly(below)
+        self.assertNotIn("WARNING: fix nve/gear", below.output)
+        t = below.thermo()
+        self.assertEqual(t["integr[1"][-1], 0)
+        self.assertAlmostEqual(t["integr[2"][-1], 0.8, delta=1e-9)
+        self.assertLess(t["ke"][-1], 1e-25)  # at rest
+
+    def test_loads_summed_across_ranks(self):
+        # two crossing wires on a floor, the crossing on the boundary of two ranks: the
+        # loads a rank adds to its ghost beads reach their owners (the same largest ratio
+        # at every sample on 1 and 2 ranks, to the round-off the trajectories differ by)
+        deck_text = """
+units           lj
+atom_style      wire
+atom_modify     map array
+boundary        f f f
+newton          off
+processors      * 1 1
+region          box block -2 2 -2 2 -1 2
+create_box      1 box
+create_wire     1 line -1.03 0 0.1 1.03 0 0.1
+create_wire     1 line 0.05 -1.03 0.29 0.05 1.03 0.29
+pair_style      wire/contact restitution 0.1
+pair_coeff      * *
+neighbor        0.1 bin
+fix             elastic all wire/elastic
+fix             integr all nve/gear
+fix             gravity all gravity 1.0 vector 0 0 -1
+fix             floor all wire/wall plane 0 0 0 0 0 1 restitution 0.1
+timestep        1e-3
+thermo_style    custom step f_integr[1] f_integr[2]
+thermo_modify   format float %.15g
+thermo          100
+run             3000
+"""
+        one, two = run(deck_text), run(deck_text, np_ranks=2)
+        self.assertRanCleanly(one)
+        self.assertRanCleanly(two)
+        a, b = one.thermo(), two.thermo()
+        self.assertGreater(np.max(a["integr[2"]), 1.2)
+        np.testing.assert_allclose(b["integr[2"], a["integr[2"], rtol=1e-9)
+        np.testing.assert_array_equal(b["integr[1"], a["integr[1"])
+
+
 class BadInput(DeckTestCase):
     def check(self, options, message):
         r = point_mass("", options, steps=10)

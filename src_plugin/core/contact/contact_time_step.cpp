@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Eigenvalues>
+
 #include "core/common/validation.h"
 #include "core/wire/gear_integrator.h"
 
@@ -31,6 +33,45 @@ ContactTimeStep spring_dashpot_time_step(double k, double m, double zeta) {
 ContactTimeStep contact_time_step(const SoftContactLaw& law, double effective_mass) {
   return spring_dashpot_time_step(std::max(law.normal_stiffness, law.tangential_stiffness), effective_mass,
                                   law.damping_ratio);
+}
+
+SpringDashpot contact_spring_dashpot(const SoftContactLaw& law, double m) {
+  SpringDashpot out;
+  out.normal_stiffness = law.normal_stiffness;
+  out.tangential_stiffness = law.tangential_stiffness;
+  out.normal_damping = 2.0 * law.damping_ratio * std::sqrt(law.normal_stiffness * m);
+  out.tangential_damping = 2.0 * law.damping_ratio * std::sqrt(law.tangential_stiffness * m);
+  return out;
+}
+
+void BeadContactLoad::add(double weight, const SpringDashpot& c, const Eigen::Vector3d& n) {
+  const Eigen::Matrix3d along = n * n.transpose(), across = Eigen::Matrix3d::Identity() - along;
+  stiffness += weight * (c.normal_stiffness * along + c.tangential_stiffness * across);
+  damping += weight * (c.normal_damping * along + c.tangential_damping * across);
+  contacts++;
+}
+
+ContactTimeStep bead_contact_time_step(const BeadContactLoad& load, double mass) {
+  const auto largest = [](const Eigen::Matrix3d& symmetric) {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(symmetric, Eigen::EigenvaluesOnly);
+    return std::max(0.0, solver.eigenvalues()[2]);  // ascending; round-off below 0 is 0
+  };
+  return bead_contact_time_step(largest(load.stiffness), largest(load.damping), mass);
+}
+
+ContactTimeStep bead_contact_time_step(double stiffness, double damping, double mass) {
+  require_nonnegative("damping", damping);
+  require_nonnegative("k", stiffness);
+  require_positive("m", mass);
+  if (stiffness == 0.0 && damping == 0.0) return spring_dashpot_time_step(0.0, mass, 0.0);
+  ContactTimeStep out;
+  if (stiffness == 0.0) {  // a dashpot alone: the Verlet bound 1/(ζω) → 2m/Γ, Gear's 0.075 · 2m/Γ
+    out.critical = 2.0 * mass / damping;
+    out.gear5 = kGear5StableDampedOmegaDt * 2.0 * mass / damping;
+    return out;
+  }
+  return spring_dashpot_time_step(stiffness, mass, damping / (2.0 * std::sqrt(stiffness * mass)));
 }
 
 double reduced_mass(double a, double b) {

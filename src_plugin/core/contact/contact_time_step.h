@@ -23,6 +23,8 @@
 // ω: the tangential one is the stiffer for segments shorter than 4r/π.
 #pragma once
 
+#include <Eigen/Core>
+
 #include "core/contact/soft_contact.h"
 
 namespace wiregrain {
@@ -47,5 +49,37 @@ ContactTimeStep contact_time_step(const SoftContactLaw& law, double effective_ma
 
 // m_a m_b / (m_a + m_b); m_b = ∞ (a wall, a held grain) gives m_a.
 double reduced_mass(double mass_a, double mass_b);
+
+// The springs and dashpots all the contacts of a step put on ONE bead (session 21: a bead
+// wedged between grains, loaded by the contacts of both its segments, rattled at the
+// contact frequency at Δt_SP = 1e-3 although each contact alone was within its limit).
+// A contact with normal n, springs k_n, k_t and dashpots γ_n = 2ζ√(k_n m_eff), γ_t =
+// 2ζ√(k_t m_eff) (its law's), whose force reaches the bead with the weight w (1 − t or t of
+// the load point on the segment, 1 for a wall), adds
+//     w S (k_n n nᵀ + k_t (I − n nᵀ))   to the bead's stiffness K (3×3),
+//     w S (γ_n n nᵀ + γ_t (I − n nᵀ))   to its damping Γ,
+// S the sum of the weights of all the bodies it moves (1 against a wall or a grain held
+// during the sub-steps, 2 between two segments or against a moving grain): the bead's
+// block row of K summed in absolute values over the beads (Gershgorin's bound on the
+// stiffest mode the bead takes part in; exact for a contact at a bead and for the beads
+// of a segment moving together). The bead's limit is that of one spring on its mass m
+// with the largest eigenvalues of K and Γ: ω² = λ_max(K)/m, ζω = λ_max(Γ)/(2m).
+struct SpringDashpot {
+  double normal_stiffness = 0.0, tangential_stiffness = 0.0;  // k_n, k_t
+  double normal_damping = 0.0, tangential_damping = 0.0;      // γ_n, γ_t
+};
+SpringDashpot contact_spring_dashpot(const SoftContactLaw& law, double effective_mass);
+
+struct BeadContactLoad {
+  Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();  // K
+  Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();    // Γ
+  int contacts = 0;
+  // one contact with the weight w S (above) and unit normal n
+  void add(double weight, const SpringDashpot& contact, const Eigen::Vector3d& normal);
+};
+// The bead's limits (m > 0); infinite without contacts.
+ContactTimeStep bead_contact_time_step(const BeadContactLoad& load, double mass);
+// The same from the largest eigenvalues λ_max(K) ≥ 0, λ_max(Γ) ≥ 0.
+ContactTimeStep bead_contact_time_step(double stiffness, double damping, double mass);
 
 }  // namespace wiregrain

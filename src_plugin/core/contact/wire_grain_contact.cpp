@@ -54,6 +54,7 @@ void load_touching_pair(const SoftContactLaw& law, const Eigen::Vector3d& centre
   const Eigen::Vector3d grain_velocity = motion.velocity + motion.angular_velocity.cross(arm);
   const double wire_mass = segment.m0 + segment.m1;
   const double effective_mass = wire_mass * motion.mass / (wire_mass + motion.mass);
+  out.spring_dashpot = contact_spring_dashpot(law, effective_mass);
   const SoftContactForce f = soft_contact_force(law, out.overlap, out.normal, wire_velocity - grain_velocity, dt,
                                                 effective_mass, history);
   out.normal_force = f.normal_force;

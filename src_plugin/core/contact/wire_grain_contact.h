@@ -36,6 +36,7 @@
 
 #include <Eigen/Core>
 
+#include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
 #include "core/geometry/contact_geometry.h"
 #include "core/geometry/superquadric.h"
@@ -67,6 +68,7 @@ struct WireGrainContact {
   double normal_force = 0.0;
   double load_parameter = 0.0;  // t of the load point: bead 0 gets (1 − t) F, bead 1 t F
   bool sliding = false;
+  SpringDashpot spring_dashpot;  // the pair's k and γ, for the beads' time-step check (contact_time_step.h)
   SegmentContact geometry;
 };
 
