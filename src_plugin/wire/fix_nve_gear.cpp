@@ -249,11 +249,12 @@ void FixNVEGear::check_contact_loads() {
   if (comm->me != 0) return;
   char text[640];
   std::snprintf(text, sizeof(text),
-                "fix nve/gear (id %s): at step %ld bead %.0f carries %.0f contacts whose summed springs and dashpots "
+                "fix nve/gear (id %s): at step %ld bead %.0f carries %.0f contact%s whose summed springs and dashpots "
                 "on its mass %g give a %s limit of %g, below the timestep %g (such a bead rattles at the contact "
                 "frequency instead of coming to rest); use a smaller timestep or less contact damping (restitution "
                 "closer to 1)%s",
-                id, (long)update->ntimestep, record[0], record[1], record[2], gear ? "gear5" : "Verlet", record[3], dt_,
+                id, (long)update->ntimestep, record[0], record[1], record[1] == 1.0 ? "" : "s", record[2],
+                gear ? "gear5" : "Verlet", record[3], dt_,
                 load_warnings_ == 10 ? " (the last such warning)" : "");
   error->warning(FLERR, text);
 }
