@@ -231,6 +231,7 @@ void FixNVEGear::check_contact_loads() {
     if (!(atom->mask[i] & groupbit) || wire_->contact_load[i][wiregrain_lmp::kBeadContactLoadSize - 1] == 0.0)
       continue;  // no contact
     const wiregrain::BeadContactLoad load = wiregrain_lmp::bead_contact_load(wire_->contact_load[i]);
+    if (dt_ / wiregrain::bead_contact_time_step_bound(load, mass_of(i)).limit(gear) <= mine.ratio) continue;
     const double limit = wiregrain::bead_contact_time_step(load, mass_of(i)).limit(gear);
     const double ratio = dt_ / limit;
     if (ratio > mine.ratio) {

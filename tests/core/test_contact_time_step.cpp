@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -277,4 +278,36 @@ TEST(ContactTimeStep, BeadLimitTakesTheStiffestDirection) {
   // the five stiffer springs summed as if parallel: the damping decides both limits
   const double scalar = bead_contact_time_step(5.0 * contact.normal_stiffness, 5.0 * contact.normal_damping, m).gear5;
   EXPECT_NEAR(limit / scalar, 5.0 / (2.0 + 3.0 / std::sqrt(2.0)), 1e-12);
+}
+
+// The trace bound never exceeds the bead's limit (K, Γ positive semi-definite: λ_max ≤
+// trace) and equals it for contacts along one direction with k_t = 0.
+TEST(ContactTimeStep, TraceBoundIsBelowTheBeadLimit) {
+  SpringDashpot contact;
+  contact.normal_stiffness = 15.7;
+  contact.tangential_stiffness = 10.0;
+  contact.normal_damping = 0.26;
+  contact.tangential_damping = 0.21;
+  const double m = 0.00314;
+  std::uint64_t state = 12345;
+  const auto uniform = [&]() {  // xorshift64*: the same numbers on every platform
+    state ^= state >> 12, state ^= state << 25, state ^= state >> 27;
+    return double((state * 2685821657736338717ULL) >> 11) / double(1ULL << 53);
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    BeadContactLoad load;
+    const int contacts = 1 + trial % 12;
+    for (int c = 0; c < contacts; ++c) {
+      const Eigen::Vector3d n = Eigen::Vector3d(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5).normalized();
+      load.add(2.0 * uniform(), contact, n);
+    }
+    for (bool gear : {true, false})
+      EXPECT_LE(bead_contact_time_step_bound(load, m).limit(gear), bead_contact_time_step(load, m).limit(gear) * (1 + 1e-12));
+  }
+  SpringDashpot normal_only = contact;
+  normal_only.tangential_stiffness = normal_only.tangential_damping = 0.0;
+  BeadContactLoad aligned;
+  aligned.add(1.0, normal_only, Eigen::Vector3d::UnitZ());
+  aligned.add(0.5, normal_only, -Eigen::Vector3d::UnitZ());
+  EXPECT_NEAR(bead_contact_time_step_bound(aligned, m).gear5, bead_contact_time_step(aligned, m).gear5, 1e-15);
 }

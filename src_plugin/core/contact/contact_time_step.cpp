@@ -52,12 +52,19 @@ void BeadContactLoad::add(double weight, const SpringDashpot& c, const Eigen::Ve
 }
 
 ContactTimeStep bead_contact_time_step(const BeadContactLoad& load, double mass) {
+  if (load.contacts == 0) return spring_dashpot_time_step(0.0, mass, 0.0);
   const auto largest = [](const Eigen::Matrix3d& symmetric) {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(symmetric, Eigen::EigenvaluesOnly);
     return std::max(0.0, solver.eigenvalues()[2]);  // ascending; round-off below 0 is 0
   };
   return bead_contact_time_step(largest(load.stiffness), largest(load.damping), mass);
+}
+
+ContactTimeStep bead_contact_time_step_bound(const BeadContactLoad& load, double mass) {
+  // K and Γ are positive semi-definite: λ_max ≤ trace, and each limit falls as the
+  // stiffness or the damping grows (1/(√(ω² + c²) + c) in ω and c = Γ/(2m))
+  return bead_contact_time_step(load.stiffness.trace(), load.damping.trace(), mass);
 }
 
 ContactTimeStep bead_contact_time_step(double stiffness, double damping, double mass) {

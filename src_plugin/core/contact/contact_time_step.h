@@ -79,6 +79,9 @@ struct BeadContactLoad {
 };
 // The bead's limits (m > 0); infinite without contacts.
 ContactTimeStep bead_contact_time_step(const BeadContactLoad& load, double mass);
+// Lower bounds of those limits from the traces of K and Γ (no eigenvalues: for the beads
+// that cannot be the one furthest beyond its limit).
+ContactTimeStep bead_contact_time_step_bound(const BeadContactLoad& load, double mass);
 // The same from the largest eigenvalues λ_max(K) ≥ 0, λ_max(Γ) ≥ 0.
 ContactTimeStep bead_contact_time_step(double stiffness, double damping, double mass);
 
