@@ -158,10 +158,15 @@ void FixNVEGear::initial_integrate(int /*vflag*/) {
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) wiregrain::gear5_predict(x[i], v[i], history_[i], dt_);
   } else {
+    // the first half kick with the acceleration of the last step's end (kept with the
+    // atom and in restart files: after a restart or between runs LIGGGHTS' setup
+    // recomputes the forces with the full-step velocities, which changes velocity-
+    // dependent forces such as contact damping); a new atom's from its setup force
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) {
         const double inv_m = force->ftm2v / mass_of(i);
-        const double a[3] = {f[i][0] * inv_m, f[i][1] * inv_m, f[i][2] * inv_m};
+        const double setup_a[3] = {f[i][0] * inv_m, f[i][1] * inv_m, f[i][2] * inv_m};
+        const double *a = history_[i][kStartedFlag] != 0.0 ? history_[i] : setup_a;
         wiregrain::verlet_kick_drift(x[i], v[i], a, dt_);
       }
   }
@@ -184,6 +189,8 @@ void FixNVEGear::final_integrate() {
     if (non_finite < 0 && !std::isfinite(a[0] + a[1] + a[2])) non_finite = i;
     if (scheme_ == VERLET) {
       wiregrain::verlet_kick(v[i], a, dt_);
+      for (int d = 0; d < 3; d++) history_[i][d] = a[d];  // x'', where Gear-5 keeps it
+      history_[i][kStartedFlag] = 1.0;
     } else if (history_[i][kStartedFlag] == 0.0) {
       // an atom created during the run (fix insert/...): its first step predicted with a
       // zero history; start the history from the force it feels now.

@@ -3,8 +3,9 @@
 
    fix ID group nve/gear [scheme gear5|verlet] [forces position|velocity]
 
-   The Gear history (x'' ... x^(5) per atom) migrates with the atoms and is written to
-   restart files, so a restarted run continues the same trajectory.
+   The Gear history (x'' ... x^(5) per atom; for verlet the last step's x'', used by the
+   next step's first half kick) migrates with the atoms and is written to restart files,
+   so a restarted run, or a run after another, continues the same trajectory.
 
    Each step it checks every bead's time step against the springs and dashpots the
    contact styles put on it in that step (atom_style wire's contact_load; the formula in

@@ -356,7 +356,13 @@ class Column(DeckTestCase):
         # for Table 1's wire (limit 0.00219) N = 2 at the default dt_NSCD 2e-3, dt_SP 1e-3;
         # N = 9 at m_elo E_w = 2000 (the limit ∝ (m_elo E_w)^-1/2: 0.00219 √(100/2000) =
         # 4.9e-4, half of it 2.45e-4; 2e-3 / 8 = 2.5e-4 is above it, 2e-3 / 9 = 2.22e-4 not)
-        short = dict(TINY, t_layer=0.1, t_relax=0.4, t_end=0.45)
+        # (the rule reads the Gear-5 limit whatever the integrator: run with gear5 so that
+        # fix wire/elastic prints it; the default, Verlet, takes the same step below)
+        short = dict(TINY, t_layer=0.1, t_relax=0.4, t_end=0.45, wire_scheme="gear5")
+        default = run(COLUMN, variables=dict(short, wire_scheme="auto"))
+        self.assertRanCleanly(default)
+        self.assertIn("wire nve/gear scheme verlet\n", default.output)  # echoed: NSCD grains take Verlet
+        self.assertRegex(default.output, r"verlet limit 0\.0139686; timestep 0\.001 = ")
         for extra, expected_dt in (({}, 1e-3), ({"E_w": 1000, "m_elo": 2}, 2e-3 / 9)):
             result = run(COLUMN, variables=dict(short, **extra))
             self.assertRanCleanly(result)

@@ -103,6 +103,31 @@ class SameAsStockNve(DeckTestCase):
             self.assertLess(np.max(np.abs(a[c] - b[c])), 1e-12, c)
 
 
+class VerletAcrossRuns(DeckTestCase):
+    # A damped mass on a spring (fix viscous: a velocity-dependent force): velocity Verlet
+    # starts each step with the acceleration of the last step's end, which it keeps, so
+    # two runs of 1000 steps are the run of 2000 to the bit; stock fix nve starts the
+    # second run with the forces LIGGGHTS' setup recomputes at the full-step velocity.
+    def test_two_runs_are_one(self):
+        body = POINT_MASS.replace("run             {steps}\n", "{runs}")
+        forces = "fix spring all spring/self 2.0\nfix drag all viscous 0.3\nset atom 1 x 1.0"
+        finals = {}
+        for integrator in ("nve/gear scheme verlet", "nve"):
+            for runs in ("run 2000\n", "run 1000\nrun 1000\n"):
+                text = body.format(forces=forces, options="scheme verlet", dt=0.01, every=2000, vx=0.0, vz=0.0,
+                                   runs=runs).replace("nve/gear scheme verlet", integrator)
+                r = run(text)
+                self.assertRanCleanly(r)
+                t = r.thermo()
+                finals[integrator, runs] = (t["x"][-1], t["vz"][-1], t["Time"][-1])
+            one, two = finals[integrator, "run 2000\n"], finals[integrator, "run 1000\nrun 1000\n"]
+            self.assertEqual(one[2], two[2])
+            if integrator == "nve":
+                self.assertNotEqual(one[0], two[0])  # the stock integrator's restart of the kick
+            else:
+                self.assertEqual(one[0], two[0])
+
+
 class AtomsAfterRestart(DeckTestCase):
     # Beads created by create_wire after read_restart (stock create_atoms refuses to run
     # there) have no Gear history in the restart file: they start as new (as beads created
