@@ -42,7 +42,6 @@ class LAMMPS;
 namespace wiregrain_lmp {
 
 constexpr double kLargeOverlapFraction = 0.5;  // of r_w
-
 constexpr int kMaxOverlapWarnings = 10;
 
 // true when a fix nve/gear with the gear5 scheme is defined (the wire is then integrated
