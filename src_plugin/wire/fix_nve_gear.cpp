@@ -27,6 +27,8 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
+// the per-bead check's largest timestep / limit is exact above this, the traces' bound below
+constexpr double kExactRatioAbove = 0.5;
 constexpr int kStartedFlag = wiregrain::kGearHistorySize;   // index of the flag
 constexpr int kPerAtom = wiregrain::kGearHistorySize + 1;    // values stored per atom
 }  // namespace
@@ -235,10 +237,22 @@ void FixNVEGear::check_contact_loads() {
   } mine = {0.0, comm->me}, worst;
   double record[4] = {0.0, 0.0, 0.0, 0.0};  // tag, contacts, m, limit
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || wire_->contact_load[i][wiregrain_lmp::kBeadContactLoadSize - 1] == 0.0)
-      continue;  // no contact
-    const wiregrain::BeadContactLoad load = wiregrain_lmp::bead_contact_load(wire_->contact_load[i]);
-    if (dt_ / wiregrain::bead_contact_time_step_bound(load, mass_of(i)).limit(gear) <= mine.ratio) continue;
+    const double *row = wire_->contact_load[i];
+    if (!(atom->mask[i] & groupbit) || row[wiregrain_lmp::kBeadContactLoadSize - 1] == 0.0) continue;  // no contact
+    // the bound from the traces of K and Γ (core: bead_contact_time_step_bound): the
+    // eigenvalues only for a bead that may be the worst and beyond half its limit
+    const double bound = dt_ / wiregrain::bead_contact_time_step(row[0] + row[1] + row[2], row[6] + row[7] + row[8],
+                                                                 mass_of(i))
+                                   .limit(gear);
+    if (bound <= mine.ratio) continue;
+    if (bound <= kExactRatioAbove) {
+      mine.ratio = bound;
+      const double values[4] = {double(atom->tag[i]), row[wiregrain_lmp::kBeadContactLoadSize - 1], mass_of(i),
+                                dt_ / bound};
+      std::memcpy(record, values, sizeof(values));
+      continue;
+    }
+    const wiregrain::BeadContactLoad load = wiregrain_lmp::bead_contact_load(row);
     const double limit = wiregrain::bead_contact_time_step(load, mass_of(i)).limit(gear);
     const double ratio = dt_ / limit;
     if (ratio > mine.ratio) {

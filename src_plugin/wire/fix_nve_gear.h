@@ -11,7 +11,8 @@
    contact styles put on it in that step (atom_style wire's contact_load; the formula in
    core/contact/contact_time_step.h) and warns the first 10 times one is beyond the
    limit of the scheme. Vector: steps with such a bead since the fix was defined, the
-   largest timestep / limit of the last step. */
+   largest timestep / limit of the last step (exact above 0.5; below, the bound from the
+   traces of the loads, which is at least the exact value). */
 
 #ifdef FIX_CLASS
 

@@ -44,10 +44,34 @@ SpringDashpot contact_spring_dashpot(const SoftContactLaw& law, double m) {
   return out;
 }
 
+ContactLoadEntries contact_load_entries(const SpringDashpot& c, const Eigen::Vector3d& n) {
+  ContactLoadEntries out;
+  const double outer[6] = {n.x() * n.x(), n.y() * n.y(), n.z() * n.z(), n.x() * n.y(), n.x() * n.z(), n.y() * n.z()};
+  const double stiffness_along = c.normal_stiffness - c.tangential_stiffness;
+  const double damping_along = c.normal_damping - c.tangential_damping;
+  for (int e = 0; e < 6; e++) {
+    const double identity = e < 3 ? 1.0 : 0.0;
+    out.stiffness[e] = c.tangential_stiffness * identity + stiffness_along * outer[e];
+    out.damping[e] = c.tangential_damping * identity + damping_along * outer[e];
+  }
+  return out;
+}
+
 void BeadContactLoad::add(double weight, const SpringDashpot& c, const Eigen::Vector3d& n) {
-  const Eigen::Matrix3d along = n * n.transpose(), across = Eigen::Matrix3d::Identity() - along;
-  stiffness += weight * (c.normal_stiffness * along + c.tangential_stiffness * across);
-  damping += weight * (c.normal_damping * along + c.tangential_damping * across);
+  add(weight, contact_load_entries(c, n));
+}
+
+void BeadContactLoad::add(double weight, const ContactLoadEntries& c) {
+  // entries xx, yy, zz, xy, xz, yz at (row, column) of the symmetric 3×3
+  static constexpr int row[6] = {0, 1, 2, 0, 0, 1}, column[6] = {0, 1, 2, 1, 2, 2};
+  for (int e = 0; e < 6; e++) {
+    stiffness(row[e], column[e]) += weight * c.stiffness[e];
+    damping(row[e], column[e]) += weight * c.damping[e];
+    if (e >= 3) {
+      stiffness(column[e], row[e]) += weight * c.stiffness[e];
+      damping(column[e], row[e]) += weight * c.damping[e];
+    }
+  }
   contacts++;
 }
 

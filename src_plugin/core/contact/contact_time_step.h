@@ -70,12 +70,21 @@ struct SpringDashpot {
 };
 SpringDashpot contact_spring_dashpot(const SoftContactLaw& law, double effective_mass);
 
+// One contact's k_t I + (k_n − k_t) n nᵀ and γ_t I + (γ_n − γ_t) n nᵀ as their six
+// entries xx, yy, zz, xy, xz, yz: formed once per contact, added to each bead it loads.
+struct ContactLoadEntries {
+  double stiffness[6];
+  double damping[6];
+};
+ContactLoadEntries contact_load_entries(const SpringDashpot& contact, const Eigen::Vector3d& normal);
+
 struct BeadContactLoad {
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();  // K
   Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();    // Γ
   int contacts = 0;
   // one contact with the weight w S (above) and unit normal n
   void add(double weight, const SpringDashpot& contact, const Eigen::Vector3d& normal);
+  void add(double weight, const ContactLoadEntries& contact);
 };
 // The bead's limits (m > 0); infinite without contacts.
 ContactTimeStep bead_contact_time_step(const BeadContactLoad& load, double mass);
