@@ -524,10 +524,12 @@ void FixWireGrain::evaluate(bool setup) {
       }
       // the beads' time-step check (contact_time_step.h): the weights of the moving
       // bodies sum to 1 with the grain held during the sub-steps, to 2 with stock grains
-      const double moving = stock_grains_ ? 2.0 : 1.0, t = c.load_parameter;
-      const wiregrain::ContactLoadEntries load = wiregrain::contact_load_entries(c.spring_dashpot, c.normal);
-      wiregrain_lmp::add_bead_contact_load(wire_->contact_load[i], (1.0 - t) * moving, load);
-      wiregrain_lmp::add_bead_contact_load(wire_->contact_load[j], t * moving, load);
+      if (wire_->contact_load_wanted) {
+        const double moving = stock_grains_ ? 2.0 : 1.0, t = c.load_parameter;
+        const wiregrain::ContactLoadEntries load = wiregrain::contact_load_entries(c.spring_dashpot, c.normal);
+        wiregrain_lmp::add_bead_contact_load(wire_->contact_load[i], (1.0 - t) * moving, load);
+        wiregrain_lmp::add_bead_contact_load(wire_->contact_load[j], t * moving, load);
+      }
       loads.add(grain_tag, c.force_grain, c.torque_grain);
       record_contact(c, i, grain_tag);
       return -c.overlap;

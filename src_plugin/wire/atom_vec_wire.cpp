@@ -43,6 +43,7 @@ AtomVecWire::AtomVecWire(LAMMPS *lmp) : PluginAtomVec(lmp) {
   wire_prev = wire_next = NULL;
   wire_rest = NULL;
   contact_load = NULL;
+  contact_load_wanted = false;
 }
 
 AtomVecWire::~AtomVecWire() {

@@ -61,8 +61,10 @@ class AtomVecWire : public PluginAtomVec {
   // (common/bead_contact_load.h: kBeadContactLoadSize doubles per bead); not migrated, not in
   // restarts: fix nve/gear clears them before the forces, sums the ghosts' to their owners
   // after them and checks each bead's time step. The contact styles add to them where
-  // they add their forces.
+  // they add their forces, in the steps where contact_load_wanted is set (a fix nve/gear
+  // sets it in pre_force of a step it checks, and clears it after the check).
   double **contact_load;
+  bool contact_load_wanted;
 
   // The wire style of this system (plain or inside atom_style hybrid), or NULL.
   static AtomVecWire *of(class Atom *);

@@ -1,18 +1,19 @@
 /* fix nve/gear: integrates point masses (wire beads, or any atom with a mass) with the
    6-value fifth-order Gear predictor–corrector, or with velocity Verlet.
 
-   fix ID group nve/gear [scheme gear5|verlet] [forces position|velocity]
+   fix ID group nve/gear [scheme gear5|verlet] [forces position|velocity] [check_every N]
 
    The Gear history (x'' ... x^(5) per atom; for verlet the last step's x'', used by the
    next step's first half kick) migrates with the atoms and is written to restart files,
    so a restarted run, or a run after another, continues the same trajectory.
 
-   Each step it checks every bead's time step against the springs and dashpots the
-   contact styles put on it in that step (atom_style wire's contact_load; the formula in
-   core/contact/contact_time_step.h) and warns the first 10 times one is beyond the
-   limit of the scheme. Vector: steps with such a bead since the fix was defined, the
-   largest timestep / limit of the last step (exact above 0.5; below, the bound from the
-   traces of the loads, which is at least the exact value). */
+   Every check_every-th step (default 10; 0: never) it checks every bead's time step
+   against the springs and dashpots the contact styles put on it in that step (atom_style
+   wire's contact_load; the formula in core/contact/contact_time_step.h) and warns the
+   first 10 times one is beyond the limit of the scheme. Vector: checked steps with such a
+   bead since the fix was defined, the largest timestep / limit of the last checked step
+   (exact above 0.5; below, the bound from the traces of the loads, which is at least the
+   exact value). */
 
 #ifdef FIX_CLASS
 
@@ -35,7 +36,6 @@ class FixNVEGear : public Fix {
   void init();
   void setup(int);
   void initial_integrate(int);
-  void setup_pre_force(int);
   void pre_force(int);
   void final_integrate();
   void reset_dt();
@@ -66,8 +66,9 @@ class FixNVEGear : public Fix {
   void start_history(int i);
   // the contact loads of the beads (atom_style wire; NULL without it)
   class AtomVecWire *wire_;
-  void clear_contact_loads();
   void check_contact_loads();
+  int check_every_;          // the steps between two checks (0: none)
+  bool checking_this_step_;  // set in pre_force of a checked step
   long unstable_steps_;
   double largest_ratio_;
   int load_warnings_;

@@ -210,8 +210,9 @@ void FixWireWall::post_force(int /*vflag*/) {
         wiregrain::soft_contact_force(law, -gap, n, u, setup ? 0.0 : update->dt, rmass[i], advanced);
     history_->store(i, 0, setup ? h : advanced);
     // the bead's time-step check (contact_time_step.h): the wall does not move with it
-    wiregrain_lmp::add_bead_contact_load(wire_->contact_load[i], 1.0,
-                                         wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, rmass[i]), n));
+    if (wire_->contact_load_wanted)
+      wiregrain_lmp::add_bead_contact_load(
+          wire_->contact_load[i], 1.0, wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, rmass[i]), n));
     for (int d = 0; d < 3; d++) {
       f[i][d] += fc.force[d];
       local_stats_[2 + d] -= fc.force[d];

@@ -363,10 +363,13 @@ void PairWireContact::compute(int eflag, int vflag) {
     add_force(f[a], -(1.0 - cp.s), fc.force);
     add_force(f[a1], -cp.s, fc.force);
     // the beads' time-step check (contact_time_step.h): four moving beads, weights summing to 2
-    const wiregrain::ContactLoadEntries load =
-        wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, m_a * m_b / (m_a + m_b)), normal);
-    const std::pair<int, double> loaded[4] = {{a, 1.0 - cp.s}, {a1, cp.s}, {b, 1.0 - cp.t}, {b1, cp.t}};
-    for (const auto &[bead, weight] : loaded) wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, load);
+    if (wire_->contact_load_wanted) {
+      const wiregrain::ContactLoadEntries load =
+          wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, m_a * m_b / (m_a + m_b)), normal);
+      const std::pair<int, double> loaded[4] = {{a, 1.0 - cp.s}, {a1, cp.s}, {b, 1.0 - cp.t}, {b1, cp.t}};
+      for (const auto &[bead, weight] : loaded)
+        wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, load);
+    }
     if (eflag)
       eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
                   0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();

@@ -190,7 +190,7 @@ region          box block -2 2 -2 2 -2 2
 create_box      1 box
 create_wire     1 line -0.5 0 0.16 0.5 0 0.16
 fix             elastic all wire/elastic
-fix             integr all nve/gear
+fix             integr all nve/gear {options}
 fix             gravity all gravity 1.0 vector 0 0 -1
 fix             left all wire/wall plane 0 0 0 0 0.70710678118654752 0.70710678118654752 restitution 0.1
 fix             right all wire/wall plane 0 0 0 0 -0.70710678118654752 0.70710678118654752 restitution 0.1
@@ -229,7 +229,7 @@ class BeadContactLoads(DeckTestCase):
     def test_groove_beyond_the_bead_limit_rattles_and_warns(self):
         bead, single = groove_bead_limit()
         self.assertLess(1.3 * bead, single)  # a step each wall's own check lets through
-        above = run(GROOVE.format(dt=1.3 * bead))
+        above = run(GROOVE.format(dt=1.3 * bead, options=""))
         self.assertRanCleanly(above)
         self.assertIn("WARNING: fix nve/gear (id integr): at step", above.output)
         self.assertRegex(above.output, r"bead \d+ carries 2 contacts whose summed springs and dashpots on its mass "
@@ -237,9 +237,20 @@ class BeadContactLoads(DeckTestCase):
         self.assertNotIn("WARNING: fix wire/wall", above.output)
         t = above.thermo()
         self.assertAlmostEqual(t["integr[2"][-1], 1.3, delta=1e-9)
-        self.assertGreater(t["integr[1"][-1], 19000)  # nearly every step
+        # checked every 10th step by default: nearly every one of the 2000 checks
+        self.assertGreater(t["integr[1"][-1], 1900)
+        self.assertLessEqual(t["integr[1"][-1], 2000)
         self.assertGreater(np.min(t["ke"][-5:]), 1e-11)  # still rattling after 20000 steps
-        below = run(GROOVE.format(dt=0.8 * bead))
+        every = run(GROOVE.format(dt=1.3 * bead, options="check_every 1"))
+        self.assertRanCleanly(every)
+        self.assertGreater(every.thermo()["integr[1"][-1], 19000)
+        np.testing.assert_array_equal(every.thermo()["ke"], t["ke"])  # the check does not touch the motion
+        never = run(GROOVE.format(dt=1.3 * bead, options="check_every 0"))
+        self.assertRanCleanly(never)
+        self.assertNotIn("WARNING: fix nve/gear", never.output)
+        self.assertEqual(never.thermo()["integr[1"][-1], 0)
+        self.assertEqual(never.thermo()["integr[2"][-1], 0)
+        below = run(GROOVE.format(dt=0.8 * bead, options=""))
         self.assertRanCleanly(below)
         self.assertNotIn("WARNING: fix nve/gear", below.output)
         t = below.thermo()
@@ -294,6 +305,9 @@ class BadInput(DeckTestCase):
 
     def test_missing_value(self):
         self.check("scheme", "fix nve/gear (id integr): missing value after 'scheme'")
+
+    def test_negative_check_every(self):
+        self.check("check_every -1", "fix nve/gear (id integr): value of 'check_every' must be >= 0, got -1")
 
     def test_bad_scheme(self):
         self.check("scheme rk4",

@@ -502,7 +502,7 @@ thermo          5
         # limit is 0.0198), undamped contacts: wire–wire k = E/2 l π/4 on half a bead,
         # wall k = E l π/4 on a bead: both gear5 limits 0.313/√(5000) = 0.00443. A second
         # run at the same step is not warned again; a new timestep is.
-        r = run(self.TWO_WIRES.format(scheme="gear5", wall="restitution 1") + """
+        r = run(self.TWO_WIRES.format(scheme="gear5 check_every 1", wall="restitution 1") + """
 timestep        0.006
 run             10
 run             10
@@ -517,8 +517,9 @@ run             10
                                             "the lightest bead", 0.0, True)
         found = warning_lines(r.output, "")
         print("\n".join(found))
-        # the run-start checks; fix nve/gear's per-bead check (session 21) warns each step
-        # too, and for a bead on the floor alone gives the wall's own limit
+        # the run-start checks; fix nve/gear's per-bead check (session 21), made at every
+        # step here (check_every 1), warns too, and for a bead on the floor alone gives the
+        # wall's own limit
         per_bead = [w for w in found if w.startswith("fix nve/gear")]
         self.assertEqual([w for w in found if w not in per_bead], [pair(0.006), wall(0.006), pair(0.01), wall(0.01)])
         self.assertIn("stable limit 0.00442649 of the gear5", found[0])
