@@ -79,6 +79,11 @@ void AtomVecPolyhedron::settings(int narg, char **arg) {
       error->all(FLERR, ("atom_style polyhedron: value of 'mass' must be dilated or sharp, got '" + value + "'").c_str());
     k += 2;
   }
+  // fix nscd/polyhedra and fix wire/grain find grains by tag: the array map unless the user
+  // chose one (atom_modify map hash). Called by read_restart too, which does not keep the
+  // map style: a deck continuing a restart without atom_modify map had no map, and the fix
+  // found none of its grains when it handed back their new velocities (session 22).
+  if (atom->map_style == 0) atom->map_style = 1;
 }
 
 void AtomVecPolyhedron::grow(int n) {

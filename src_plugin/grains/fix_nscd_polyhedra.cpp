@@ -306,6 +306,10 @@ int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNSCDPolyhedra::init() {
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nscd/polyhedra", "grains");
+  // the solve's results go back to the grains by tag (atom_style polyhedron turns the map on)
+  if (atom->map_style == 0)
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                               "needs an atom map (atom_modify map array or hash before the box is defined)");
   // detection works on the grains' coordinates as they are, without minimum image
   for (int d = 0; d < 3; d++)
     if (domain->periodicity[d])

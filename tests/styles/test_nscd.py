@@ -735,6 +735,28 @@ read_restart    one.restart
         self.assertLess(difference, 1e-12)
         self.assertLess(np.max(np.abs(a["z1"] - 0.5)), 1e-6)
 
+    def test_restart_without_atom_modify_map(self):
+        # read_restart does not keep the atom map; atom_style polyhedron turns it on, so a
+        # deck without atom_modify map continues the run. Before session 22 the fix found
+        # none of its grains when it handed back their velocities: a cube dropped 0.3 onto
+        # the floor fell through it at its speed of the restart step.
+        made = grains_data("cube 1.0", [(0, 0, 0.8, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        # the height by a compute (an indexed z[1] in a variable would need the map too)
+        body = self.BODY + "compute z1 all reduce max z\nthermo_style custom step time c_z1\n" \
+                           "thermo_modify format float %.15g\nthermo 10\n"
+        straight = run(deck(body + "run 20\nrun 80\n"), workdir=made.workdir)
+        first = run(deck(body + "run 20\nwrite_restart drop.restart\n"), workdir=made.workdir)
+        restarted = run("units lj\nread_restart drop.restart\natom_modify sort 0 0.0\n" + body + "run 80\n",
+                        workdir=made.workdir)
+        for r in (straight, first, restarted):
+            self.assertRanCleanly(r)
+        a, b = straight.thermo(), restarted.thermo()
+        # landed on the floor (half the cube's height, within the bounce θ = 1/2 leaves), not
+        # fallen through it (z = 0.3 at the end)
+        self.assertLess(abs(a["z1"][-1] - 0.5), 0.01)
+        np.testing.assert_allclose(b["z1"], a["z1"][-len(b["z1"]):], rtol=0, atol=1e-12)
+
 
 class LostGrain(DeckTestCase):
     # LIGGGHTS deletes a grain that leaves a fixed boundary and says nothing by default
