@@ -739,7 +739,7 @@ read_restart    one.restart
         # read_restart does not keep the atom map; atom_style polyhedron turns it on, so a
         # deck without atom_modify map continues the run. Before session 22 the fix found
         # none of its grains when it handed back their velocities: a cube dropped 0.3 onto
-        # the floor fell through it at its speed of the restart step.
+        # the floor kept the speed of the restart step (z 0.616 instead of 0.5 at the end).
         made = grains_data("cube 1.0", [(0, 0, 0.8, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         # the height by a compute (an indexed z[1] in a variable would need the map too)

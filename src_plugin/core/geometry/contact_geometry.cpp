@@ -452,15 +452,27 @@ SatAxis sat_segment(const PosedShape& P, const std::array<Vector3d, 2>& end, dou
 // edge perpendicular to n within the tolerance, else the support vertex.
 ContactFeature select_feature(const PosedShape& P, const Vector3d& n, double cos_tol,
                               double sin_tol, double tight) {
-  const int v = P.support_vertex(n);
-  const double h = n.dot(P.vertices()[v]);
+  // the support vertex v (the first of the largest n·x, as PosedShape::support_vertex) and
+  // S from one pass of the dot products
+  const int count = static_cast<int>(P.vertices().size());
+  thread_local std::vector<double> heights;
+  heights.resize(count);
+  int v = 0;
+  double h = -kInf;
+  for (int i = 0; i < count; ++i) {
+    heights[i] = n.dot(P.vertices()[i]);
+    if (heights[i] > h) {
+      h = heights[i];
+      v = i;
+    }
+  }
   // S: every candidate contains v, so only the faces and edges at v are looked at (in
   // ascending index, the tie order of a scan over all of them)
   thread_local std::vector<int> support_set;
   support_set.clear();
   std::uint64_t support_mask = 0;  // the same set as bits, when the core has ≤ 64 vertices
-  for (int i = 0; i < static_cast<int>(P.vertices().size()); ++i)
-    if (n.dot(P.vertices()[i]) >= h - tight) {
+  for (int i = 0; i < count; ++i)
+    if (heights[i] >= h - tight) {
       support_set.push_back(i);
       if (i < 64) support_mask |= std::uint64_t(1) << i;
     }
