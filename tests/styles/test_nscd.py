@@ -78,13 +78,16 @@ class Incline(DeckTestCase):
     # it sticks for θ < atan μ and slides with a = g (sin θ − μ cos θ) above. The θ = 1
     # scheme gains h a per step, starting with the solve at the run's setup, and moves with
     # the end-of-step velocity, so after n steps it has travelled h² a n(n+1)/2, not the
-    # continuum a t²/2 (1/n = 5e-4 less at the end).
+    # continuum a t²/2 (1/n = 5e-4 less at the end). Solver tolerance 1e-10: since
+    # overlap_recovery 0 is the default (session 22) an overlap the first solve leaves
+    # within its tolerance is kept, not pushed out (7.8e-14 at 1e-8, which put the
+    # travelled distance 1.0e-12 off; 1.8e-14 at 1e-10).
     def motion(self, theta):
         made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         r = run(deck(f"""
 fix             g all gravity {G} vector {math.sin(theta)!r} 0 {-math.cos(theta)!r}
-fix             nscd all nscd/polyhedra friction 0.5 tolerance 1e-8 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra friction 0.5 tolerance 1e-10 wall 0 0 0 0 0 1
 timestep        1e-3
 variable        x1 equal x[1]
 variable        vx1 equal vx[1]
@@ -100,7 +103,7 @@ run             2000
         critical = math.atan(0.5)
         stick = self.motion(critical - math.radians(0.5))
         moved = np.max(np.abs(stick["x1"] - stick["x1"][0]))
-        self.assertLess(moved, 2e-12)  # measured 2.3e-13 (4e-13 on an earlier build)
+        self.assertLess(moved, 2e-12)  # measured 2.1e-15 (2.3e-13 at tolerance 1e-8)
         theta = critical + math.radians(0.5)
         slide = self.motion(theta)
         a = np.polyfit(slide["Time"][2:], slide["vx1"][2:], 1)[0]
@@ -112,9 +115,8 @@ run             2000
               f"g(sin - mu cos) = {expected:.6f}, relative error {a / expected - 1:.1e}; travelled {travelled:.15g}, "
               f"the scheme's h^2 a n(n+1)/2 = {discrete:.15g} (relative error {travelled / discrete - 1:.1e}), "
               f"a t^2/2 = {expected * (n * h) ** 2 / 2:.15g}")
-        # measured 5.5e-14 and 4.0e-14 (the velocities of the first ~100 steps are off by up
-        # to 4e-8 of h a, the solver's tolerance 1e-8, without adding up; the fit starts
-        # at step 200)
+        # measured 4.7e-14 and 1.8e-14 (5.5e-14 and 4.0e-14 at tolerance 1e-8 with the
+        # overlaps pushed out; the fit starts at step 200)
         self.assertAlmostEqual(a / expected, 1.0, delta=5e-13)
         self.assertAlmostEqual(travelled / discrete, 1.0, delta=4e-13)
 
@@ -410,10 +412,11 @@ run             {steps}
         return r.thermo()
 
     def test_overlap_speed(self):
-        # the default push-out speed cap 0.1: a cube created 0.05 into the floor leaves at 0.1
-        # (not 0.05 / h = 50) and is out after 0.5 time units; then it rests (no gravity: at 0.1)
-        # (the projection off: it would remove the overlap at the first solve, next test)
-        t = self.cube_sunk_into_the_floor("project 0", "", every=100, steps=600)
+        # the default push-out speed cap 0.1 with overlap_recovery 1 (off by default since
+        # session 22): a cube created 0.05 into the floor leaves at 0.1 (not 0.05 / h = 50)
+        # and is out after 0.5 time units; then it rests (no gravity: at 0.1) (the
+        # projection off: it would remove the overlap at the first solve, next test)
+        t = self.cube_sunk_into_the_floor("project 0 overlap_recovery 1", "", every=100, steps=600)
         print(f"overlap_speed 0.1: overlaps {t['nscd[4]']}, vz {t['vz1'][-1]:.12f}")
         self.assertLess(np.max(np.abs(t["nscd[4]"][:6] - (0.05 - 0.1 * 1e-3 * t["Step"][:6]))), 1e-12)
         self.assertLess(t["nscd[4]"][-1], 1e-15)
@@ -423,9 +426,9 @@ run             {steps}
         # project (default 5e-5 of the pair's size): the same cube, 0.05 into the floor, is
         # lifted at the end of the first solve to half the tolerance inside (the gap of a
         # flat face is linear in the height: one pass), so the second step starts with an
-        # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 nothing else moves it:
-        # the pose is corrected, the velocity stays 0
-        t = self.cube_sunk_into_the_floor("overlap_recovery 0", "v_z1 f_nscd[17] f_nscd[18]", every=1, steps=3)
+        # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 (the default since
+        # session 22) nothing else moves it: the pose is corrected, the velocity stays 0
+        t = self.cube_sunk_into_the_floor("", "v_z1 f_nscd[17] f_nscd[18]", every=1, steps=3)
         size = 3 ** 0.5 / 2
         print(f"project 5e-5: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
         self.assertAlmostEqual(t["nscd[4]"][0], 0.05, delta=1e-15)
@@ -786,13 +789,14 @@ run             400
 class OverlapWarning(DeckTestCase):
     # An overlap at a step start beyond half the sweep radius r_p is named with h and the
     # fastest grain's speed, the first 10 times: a cube of sweep 0.1 created 0.06 into
-    # the floor (no gravity) is pushed out at overlap_speed 0.1, 1e-4 a step, so it stays
-    # beyond 0.05 for 100 steps (the projection off: it would lift it at the first solve).
+    # the floor (no gravity) is pushed out at overlap_speed 0.1 (overlap_recovery 1), 1e-4 a
+    # step, so it stays beyond 0.05 for 100 steps (the projection off: it would lift it at
+    # the first solve).
     def test_overlap_is_named_ten_times(self):
         made = grains_data("cube 1.0", [(0, 0, 0.54, 1, 0, 0, 0)], sweep=0.1)
         self.assertRanCleanly(made)
         r = run(deck("""
-fix             nscd all nscd/polyhedra project 0 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra project 0 overlap_recovery 1 wall 0 0 0 0 0 1
 timestep        1e-3
 thermo_style    custom step f_nscd[4]
 thermo          1
