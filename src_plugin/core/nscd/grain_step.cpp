@@ -26,7 +26,7 @@ NscdOptions grain_solver_defaults() {
   // overlaps of 1e-7–1e-6 a_max (the gap is linearised at the step start); pushed out at
   // |g|/h they gave the grains of the undamped 500-grain deposit speeds of ~4e-4 and a
   // kinetic energy of 1e-7 m g a_max per grain, the pile sinking 8.6e-5 a_max per time
-  // unit (4.6 times that at h = 5e-4) for as long as it ran; with β = 0 the same pile
+  // unit (4.8 times that at h = 5e-4) for as long as it ran; with β = 0 the same pile
   // came to rest within 2 time units (kinetic energy 3e-37; docs/core_nscd.md, session
   // 22). Deeper overlaps are removed by the fix's position projection (`project`).
   options.overlap_recovery = 0.0;
