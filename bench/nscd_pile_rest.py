@@ -68,14 +68,18 @@ def start(liggghts, config, steps, every, grains=500, half_width=5.0, create="")
     with open(os.path.join(work, "in.pile"), "w") as f:
         f.write(DECK.format(config=config, steps=steps, every=every, grains=grains, w=half_width, f=half_width - 1.1,
                             create=create))
-    return time.time(), subprocess.Popen([liggghts, "-in", "in.pile", "-log", "none"], cwd=work,
-                                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    # the run's own end time is written by its shell: side by side, the runs are collected
+    # in order, and a run that ended first would otherwise be timed to the end of the others
+    command = f"'{liggghts}' -in in.pile -log none; status=$?; date +%s.%N > ended; exit $status"
+    return time.time(), work, subprocess.Popen(["sh", "-c", command], cwd=work, stdout=subprocess.PIPE,
+                                               stderr=subprocess.STDOUT)
 
 
 def finish(config, started):
-    begin, process = started
+    begin, work, process = started
     out = process.communicate()[0].decode()
-    seconds = time.time() - begin
+    with open(os.path.join(work, "ended")) as f:
+        seconds = float(f.read()) - begin
     number = r"\s+([0-9.eE+-]+)"
     rows = re.findall(r"^\s*(\d+)" + 12 * number + r"\s*$", out, re.M)
     if not rows:
