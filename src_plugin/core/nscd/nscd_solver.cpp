@@ -140,9 +140,12 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
   regularized.makeCompressed();
   // The fill-reducing ordering (AMD) costs ~20 times the numerical factorisation; it is
   // kept from the last solve of this thread while the pattern of W_SS is unchanged (a
-  // resting stack or pile: the same contacts step after step).
+  // resting stack or pile: the same contacts step after step), and the factorisation too
+  // while its values are the same to the bit (a pile at rest: the same poses; the same
+  // factors as a new factorisation would give, so the results do not change).
   struct FactorCache {
     std::vector<int> outer, inner;
+    std::vector<double> values;  // of the matrix last factorised (empty: none usable)
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
   };
   thread_local FactorCache cache;
@@ -157,11 +160,19 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
   if (!same_pattern()) {
     cache.outer.assign(regularized.outerIndexPtr(), regularized.outerIndexPtr() + m + 1);
     cache.inner.assign(regularized.innerIndexPtr(), regularized.innerIndexPtr() + regularized.nonZeros());
+    cache.values.clear();
     cache.factor.analyzePattern(regularized);
   }
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& factor = cache.factor;
-  factor.factorize(regularized);
-  if (factor.info() != Eigen::Success) return StickSolveOutcome::harmful;
+  const double* values = regularized.valuePtr();
+  const bool same_values = cache.values.size() == static_cast<std::size_t>(regularized.nonZeros()) &&
+                           std::equal(cache.values.begin(), cache.values.end(), values);
+  if (!same_values) {
+    cache.values.clear();
+    factor.factorize(regularized);
+    if (factor.info() != Eigen::Success) return StickSolveOutcome::harmful;
+    cache.values.assign(values, values + regularized.nonZeros());
+  }
   Eigen::VectorXd rhs(m);
   Eigen::VectorXd current(m);
   for (int i = 0; i < m; ++i) {
