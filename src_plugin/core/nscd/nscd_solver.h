@@ -62,7 +62,8 @@
 // others held: the increment closest to the current impulses that brings u_S to 0,
 //     (W_SS + ε D_S) Δr_S = −u_S,   D_S = diag(W_SS),
 // ε = subspace_regularization, by a sparse LDLᵀ factorisation (Eigen's SimplicialLDLT,
-// AMD ordering, kept while the pattern of W_SS does not change) and two steps of
+// AMD ordering, kept while the pattern of W_SS does not change; the factors too while
+// its values are the same to the bit, as at rest) and two steps of
 // iterative refinement on W_SS. A frictionless contact enters with its normal row only
 // (its tangential impulse is 0). W_SS is singular where a face touches at more than three
 // points or a pile closes loops of contacts; ε keeps the part of r_S that W_SS does not
