@@ -269,16 +269,20 @@ Run run_ours(const ReducedProblem& reduced, SiconosProblem& siconos, const Optio
 }
 
 // The same solve on the bodies (solve_nscd_step: W never formed, body velocities kept up
-// to date), random order.
+// to date).
 Run run_bodies(const NscdStep& step, SiconosProblem& siconos, const Options& options,
-               double tolerance) {
+               double tolerance, SweepOrder order, ConvergenceMeasure measure,
+               const std::string& name) {
   Run run;
-  run.name = "wiregrain nscd on bodies, random order";
+  run.name = name;
   run.seconds = 1e300;
   NscdOptions nscd;
   nscd.tolerance = tolerance;
   nscd.max_iterations = options.max_iterations;
   nscd.seed = options.seed;
+  nscd.order = order;
+  nscd.measure = measure;
+  nscd.method = SolverMethod::gauss_seidel;
   for (int k = 0; k < options.repeat; ++k) {
     const auto start = std::chrono::steady_clock::now();
     NscdStepResult result = solve_nscd_step(step, nscd);
@@ -318,7 +322,15 @@ void compare(const ReducedProblem& reduced, const std::string& label, const Opti
   runs.push_back(run_ours(reduced, siconos, options, SweepOrder::forward, target,
                           "wiregrain nscd, forward, subspace (fix)", ConvergenceMeasure::natural_map,
                           SolverMethod::subspace));
-  if (step != nullptr) runs.push_back(run_bodies(*step, siconos, options, target));
+  if (step != nullptr) {
+    runs.push_back(run_bodies(*step, siconos, options, target, SweepOrder::random,
+                              ConvergenceMeasure::increment_then_natural_map,
+                              "wiregrain nscd on bodies, random order"));
+    // fix nscd/polyhedra's sweep and error-check schedule (method gauss_seidel)
+    runs.push_back(run_bodies(*step, siconos, options, target, SweepOrder::forward,
+                              ConvergenceMeasure::natural_map,
+                              "wiregrain nscd on bodies, forward (fix)"));
+  }
   std::printf("tolerance %.3g; our target: Siconos' final error %.3e; best of %d runs\n",
               options.tolerance, target, options.repeat);
   std::printf("%-40s %8s %14s %14s %12s %12s %8s\n", "solver", "sweeps", "siconos error",

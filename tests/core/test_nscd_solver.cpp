@@ -715,7 +715,9 @@ class WholeVelocityOperator final : public ContactOperator {
 // The sweep passes over a contact without impulse whose u_n ≥ 0 after reading u_n alone
 // (ContactOperator::normal_velocity). On the body operator that u_n must be velocity(c)[0]
 // to the bit whatever the impulses, and a solve must give, to the bit, the impulses of a
-// solve on the same operator that reads the whole u instead. The pile: 4×4×3 cubes with
+// solve on the same operator that reads the whole u instead (that solve also runs the
+// sweep through the virtual interface, the first through the sweep bound statically to
+// the body operator: the two instantiations of sweep_contacts agree). The pile: 4×4×3 cubes with
 // jittered velocities and gaps (bench/cube_lattice.h), its contacts open, sticking and
 // sliding.
 TEST(NscdOperators, OpenContactTestReadsTheNormalVelocityToTheBit) {
