@@ -7,9 +7,10 @@ Whether this one deposit comes fully to rest (issue 13's bar, 1e-8 m g a_max per
 is not asserted: the deposit is chaotic (a change of rounding in the solver gives another
 pile) and some piles keep a grain rolling in a well of its neighbours' rounded edges,
 which an undamped rigid model does not stop (docs/core_nscd.md, "Rattlers"; 4 of 6 seeds
-were at rest at t = 40 in session 23). The absence of the numerical push-out creep is
-asserted on a deterministic case instead (tests/styles/test_nscd.py, the cube sunk into
-the floor: no push-out speed at all)."""
+were at rest at t = 40 in session 23). Coming to rest is asserted
+where nothing else can move a grain: four Table 1 grains dropped apart onto the floor
+(test_lone_grains_come_to_rest), and the absence of the numerical push-out creep on the
+cube sunk into the floor (tests/styles/test_nscd.py: no push-out speed at all)."""
 
 import numpy as np
 
@@ -34,6 +35,47 @@ timestep        1e-3
 dump            d all custom 100 dump.{ranks} id x y z vx vy vz omegax omegay omegaz
 run             100
 """
+
+
+LONE_GRAINS = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -4 4 -4 4 0 10
+create_box      1 box
+create_grains   1 4 layer box 1.6 seed 7 spacing 4
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-4 wall 0 0 0 0 0 1
+timestep        1e-3
+compute         rot all grain/rotation
+compute         ket all ke
+variable        ke equal c_ket+c_rot[1]
+variable        mass equal mass(all)
+thermo_style    custom step atoms f_nscd[3] v_ke f_nscd[9] v_mass
+thermo_modify   norm no format float %.15g
+thermo          1000
+run             40000
+"""
+
+
+class LoneGrains(DeckTestCase):
+    def test_lone_grains_come_to_rest(self):
+        # four Table 1 grains on a 4 a_max lattice, dropped from 1.6 a_max onto the
+        # frictional floor, undamped: each tumbles onto a face alone (no neighbour, no
+        # well to roll in), so each must come to rest. Issue 13's bar, 1e-8 m g a_max per
+        # grain, at the last 10 samples (t = 31–40); measured at rest from t = 12–24 over
+        # seeds 7–12 (session 23), at ~1e-38 in all; the floor then carries m g exactly.
+        r = run(LONE_GRAINS)
+        self.assertRanCleanly(r)
+        t = r.thermo(0)
+        mass = t["mass"][-1]
+        per_grain = t["ke"] / mass
+        print(f"4 lone grains: kinetic energy per grain over t = 31–40 at most {per_grain[-10:].max():.2e}; "
+              f"floor force / m g {-t['nscd[9]'][-1] / mass:.15f}")
+        self.assertTrue(np.all(t["Atoms"] == 4))
+        self.assertTrue(np.all(per_grain[-10:] < 1e-8), per_grain[-10:])
+        self.assertAlmostEqual(-t["nscd[9]"][-1] / mass, 1.0, delta=1e-9)
 
 
 class GrainDeposit(DeckTestCase):
