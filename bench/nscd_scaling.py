@@ -2,7 +2,10 @@
 """Benchmark: time per NSCD step (fix nscd/polyhedra) for N grains resting on the floor
 of a box, split into gathering + contact detection and the Gauss-Seidel solve, for
 several N in one invocation; prints the time per grain and the exponent b of time ∝ N^b
-between consecutive N (1: linear), for the detection, the solve and both.
+between consecutive N (1: linear), for the detection, the solve and both; then the same
+against the work (contact points, contact points × sweeps), which separates the code's
+scaling from the scene's (a small layer is mostly edge; Gauss-Seidel takes more sweeps on
+a larger pile).
 
     bench/nscd_scaling.py [--liggghts build/liggghts] [--grains 100 1000 10000] [--steps 50]
 
@@ -64,11 +67,22 @@ def main():
         solve = sum(r[3] for r in rows) / len(rows)
         print(f"{n:8d} {contacts:9.0f} {sweeps:7.1f} {detect * 1e3:10.3f} {solve * 1e3:9.3f} "
               f"{detect / n * 1e6:16.2f} {solve / n * 1e6:15.2f}", flush=True)
-        measured.append((n, detect, solve))
+        measured.append((n, detect, solve, contacts, sweeps))
     print("\nexponent b of time per step ∝ N^b between consecutive sizes (1: linear)")
-    for (n1, d1, s1), (n2, d2, s2) in zip(measured, measured[1:]):
+    for (n1, d1, s1, *_), (n2, d2, s2, *_) in zip(measured, measured[1:]):
         b = [math.log(y / x) / math.log(n2 / n1) for x, y in ((d1, d2), (s1, s2), (d1 + s1, d2 + s2))]
         print(f"  {n1} -> {n2} grains: detection {b[0]:.2f}, solve {b[1]:.2f}, step {b[2]:.2f}")
+    # The work itself: a small layer is mostly edge (fewer grain-grain points per grain,
+    # the floor's cheap points a larger share), and Gauss-Seidel needs more sweeps on a
+    # larger connected pile; per contact point and per contact update the cost is the code's.
+    print("\nper unit of work: contact points per grain, detection per point, solve per point and sweep")
+    for n, d, s_, c, sw in measured:
+        print(f"  {n:6d} grains: {c / n:5.2f} points per grain, detection {d / c * 1e6:6.2f} us per point, "
+              f"solve {s_ / (c * sw) * 1e9:6.1f} ns per point and sweep")
+    for (n1, d1, s1, c1, w1), (n2, d2, s2, c2, w2) in zip(measured, measured[1:]):
+        bd = math.log(d2 / d1) / math.log(c2 / c1)
+        bs = math.log(s2 / s1) / math.log(c2 * w2 / (c1 * w1))
+        print(f"  {n1} -> {n2} grains: detection ∝ points^{bd:.2f}, solve ∝ (points × sweeps)^{bs:.2f}")
 
 
 if __name__ == "__main__":
