@@ -103,3 +103,85 @@ TEST(BroadPhase, BadGridsAreRejected) {
   EXPECT_THROW(BroadPhaseGrid::unbounded(0.0), wiregrain::InvalidArgument);
   EXPECT_THROW(BroadPhaseGrid::box({0, 0, 0}, {1, 0, 1}, {false, false, false}, 0.5), wiregrain::InvalidArgument);
 }
+
+namespace {
+
+// every (point, shift) a query visits, in visiting order
+std::vector<std::pair<int, Eigen::Vector3d>> visits(const BroadPhaseGrid& grid, const Eigen::Vector3d& x) {
+  std::vector<std::pair<int, Eigen::Vector3d>> seen;
+  grid.for_each_near(x, [&](int j, const Eigen::Vector3d& shift) { seen.emplace_back(j, shift); });
+  return seen;
+}
+
+// the grid with and without its dense index: the same visits (points, shifts, order) for
+// queries at the points and at random places in and around their range, and with the
+// index every pair closer than the cell found (against brute force)
+void expect_index_changes_nothing(BroadPhaseGrid hashed, const std::vector<Eigen::Vector3d>& x,
+                                  const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                                  const Eigen::Vector3d& period, double cutoff) {
+  for (const auto& p : x) hashed.insert(p);
+  BroadPhaseGrid indexed = hashed;
+  indexed.index();
+  ASSERT_TRUE(indexed.indexed());
+  ASSERT_FALSE(hashed.indexed());
+  auto queries = x;
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(2.0 * cutoff);
+  for (const auto& q : random_points(200, lo - margin, hi + margin, 17)) queries.push_back(q);
+  long total = 0;
+  for (const auto& q : queries) {
+    const auto a = visits(hashed, q), b = visits(indexed, q);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); k++) {
+      ASSERT_EQ(a[k].first, b[k].first);
+      ASSERT_EQ(a[k].second, b[k].second);
+    }
+    total += static_cast<long>(a.size());
+  }
+  EXPECT_GT(total, static_cast<long>(x.size()));  // the queries did visit points
+  expect_same_pairs(indexed, x, period, cutoff);
+}
+
+}  // namespace
+
+TEST(BroadPhase, DenseIndexVisitsTheSamePointsInTheSameOrder) {
+  {
+    const Eigen::Vector3d lo(-3, -2, 5), hi(4, 3, 9);
+    expect_index_changes_nothing(BroadPhaseGrid::unbounded(0.7), random_points(600, lo, hi, 11), lo, hi,
+                                 Eigen::Vector3d::Zero(), 0.7);
+  }
+  {
+    const Eigen::Vector3d lo(0, 0, 0), hi(5, 4, 3);
+    expect_index_changes_nothing(BroadPhaseGrid::box(lo, hi, {false, false, false}, 0.6),
+                                 random_points(500, lo, hi, 3), lo, hi, Eigen::Vector3d::Zero(), 0.6);
+  }
+  {
+    const Eigen::Vector3d lo(-1, 2, 0), hi(4, 6, 3);
+    expect_index_changes_nothing(BroadPhaseGrid::box(lo, hi, {true, false, true}, 0.6),
+                                 random_points(500, lo, hi, 5), lo, hi, Eigen::Vector3d(5, 0, 3), 0.6);
+  }
+  {
+    const Eigen::Vector3d lo(0, 0, 0), hi(2.5, 10, 10);  // 2 periodic cells along x
+    expect_index_changes_nothing(BroadPhaseGrid::box(lo, hi, {true, true, true}, 1.2),
+                                 random_points(300, lo, hi, 9), lo, hi, Eigen::Vector3d(2.5, 10, 10), 1.2);
+  }
+}
+
+TEST(BroadPhase, DenseIndexIsNotBuiltForAFarPointAndDroppedByAnInsert) {
+  auto x = random_points(50, {0, 0, 0}, {3, 3, 3}, 21);
+  x.push_back({1e6, 0, 0});  // 1e6 cells away: the dense array would need 1e6 slots for 51 points
+  BroadPhaseGrid grid = BroadPhaseGrid::unbounded(1.0);
+  for (const auto& p : x) grid.insert(p);
+  grid.index();
+  EXPECT_FALSE(grid.indexed());
+  expect_same_pairs(grid, x, Eigen::Vector3d::Zero(), 1.0);
+
+  x.pop_back();
+  BroadPhaseGrid near = BroadPhaseGrid::unbounded(1.0);
+  for (const auto& p : x) near.insert(p);
+  near.index();
+  EXPECT_TRUE(near.indexed());
+  x.push_back({1.5, 1.5, 1.5});  // an insert after index(): found, through the hash
+  near.insert(x.back());
+  EXPECT_FALSE(near.indexed());
+  expect_same_pairs(near, x, Eigen::Vector3d::Zero(), 1.0);
+}

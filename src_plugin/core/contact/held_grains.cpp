@@ -52,6 +52,7 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
               ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell)
               : BroadPhaseGrid::unbounded(cell);
   for (const HeldGrain& g : grains_) grid_.insert(g.position);
+  grid_.index();
 }
 
 int HeldGrains::index_of(long tag) const {

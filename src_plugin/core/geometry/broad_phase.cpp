@@ -32,6 +32,7 @@ BroadPhaseGrid BroadPhaseGrid::box(const Eigen::Vector3d& lo, const Eigen::Vecto
     grid.count_[d] = std::max(1L, std::min(kMaxCellsPerDimension, static_cast<long>(std::floor(length / min_cell))));
     grid.cell_[d] = length / grid.count_[d];
     grid.period_[d] = periodic[d] ? length : 0.0;
+    grid.wraps_onto_itself_ = grid.wraps_onto_itself_ || (periodic[d] && grid.count_[d] < 3);
   }
   return grid;
 }
@@ -40,7 +41,38 @@ int BroadPhaseGrid::insert(const Eigen::Vector3d& x) {
   const int index = size();
   cells_[key(cell_of(x))].push_back(index);
   points_.push_back(x);
+  indexed_ = false;
   return index;
+}
+
+void BroadPhaseGrid::index() {
+  indexed_ = false;
+  if (points_.empty()) return;
+  std::vector<std::array<long, 3>> cell(points_.size());
+  std::array<long, 3> lo = cell_of(points_[0]), hi = lo;
+  for (std::size_t j = 0; j < points_.size(); j++) {
+    cell[j] = cell_of(points_[j]);
+    for (int d = 0; d < 3; d++) {
+      lo[d] = std::min(lo[d], cell[j][d]);
+      hi[d] = std::max(hi[d], cell[j][d]);
+    }
+  }
+  const long limit = 8L * static_cast<long>(points_.size()) + 64;
+  long slots = 1;
+  for (int d = 0; d < 3; d++) {
+    const long count = hi[d] - lo[d] + 1;  // ≥ 1; each factor ≤ limit, so no overflow
+    if (count > limit || slots * count > limit) return;
+    slots *= count;
+    dense_lo_[d] = lo[d];
+    dense_count_[d] = count;
+  }
+  dense_start_.assign(slots + 1, 0);
+  for (const auto& c : cell) dense_start_[dense_slot(c) + 1]++;
+  for (long s = 0; s < slots; s++) dense_start_[s + 1] += dense_start_[s];
+  dense_points_.resize(points_.size());
+  std::vector<int> next(dense_start_.begin(), dense_start_.end() - 1);
+  for (std::size_t j = 0; j < points_.size(); j++) dense_points_[next[dense_slot(cell[j])]++] = static_cast<int>(j);
+  indexed_ = true;
 }
 
 std::array<long, 3> BroadPhaseGrid::cell_of(const Eigen::Vector3d& x) const {
@@ -53,7 +85,7 @@ std::array<long, 3> BroadPhaseGrid::cell_of(const Eigen::Vector3d& x) const {
   return c;
 }
 
-int BroadPhaseGrid::neighbour_cells(const Eigen::Vector3d& x, std::array<long, 27>& keys) const {
+int BroadPhaseGrid::neighbour_cells(const Eigen::Vector3d& x, std::array<std::array<long, 3>, 27>& cells) const {
   const std::array<long, 3> home = cell_of(x);
   int count = 0;
   for (long i = -1; i <= 1; i++)
@@ -67,9 +99,9 @@ int BroadPhaseGrid::neighbour_cells(const Eigen::Vector3d& x, std::array<long, 2
           else exists = false;
         }
         if (!exists) continue;
-        const long k_cell = key(c);
         // with fewer than 3 cells a periodic dimension wraps onto a cell already listed
-        if (std::find(keys.begin(), keys.begin() + count, k_cell) == keys.begin() + count) keys[count++] = k_cell;
+        if (!wraps_onto_itself_ || std::find(cells.begin(), cells.begin() + count, c) == cells.begin() + count)
+          cells[count++] = c;
       }
   return count;
 }

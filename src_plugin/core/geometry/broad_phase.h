@@ -33,8 +33,16 @@ class BroadPhaseGrid {
   static BroadPhaseGrid box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                             const std::array<bool, 3>& periodic, double min_cell);
 
-  // Adds a point; returns its index (0, 1, ... in insertion order).
+  // Adds a point; returns its index (0, 1, ... in insertion order). Drops the dense index.
   int insert(const Eigen::Vector3d& x);
+  // Indexes the points inserted so far in a dense array of cells (a counting sort by cell,
+  // insertion order kept within a cell), so that the queries that follow look their 27
+  // cells up by address instead of hashing: the same points, visited in the same order.
+  // For a grid filled once and then queried many times (a step's grains). Not built (the
+  // hash stays in use) when the points' cells span more than 8 cells per point and 64, e.g.
+  // one point far from the others. The next insert drops it.
+  void index();
+  bool indexed() const { return indexed_; }
   int size() const { return static_cast<int>(points_.size()); }
   const Eigen::Vector3d& point(int index) const { return points_[index]; }
   // widths of the cells (for tests and callers that check the interaction distance)
@@ -46,10 +54,17 @@ class BroadPhaseGrid {
   // point (zero in non-periodic dimensions). The caller filters by distance.
   template <class Visit>
   void for_each_near(const Eigen::Vector3d& x, Visit visit) const {
-    std::array<long, 27> keys;
-    const int count = neighbour_cells(x, keys);
+    std::array<std::array<long, 3>, 27> cells;
+    const int count = neighbour_cells(x, cells);
     for (int c = 0; c < count; c++) {
-      const auto it = cells_.find(keys[c]);
+      if (indexed_) {
+        const long slot = dense_slot(cells[c]);
+        if (slot < 0) continue;
+        for (int s = dense_start_[slot]; s < dense_start_[slot + 1]; s++)
+          visit(dense_points_[s], image_shift(x, points_[dense_points_[s]]));
+        continue;
+      }
+      const auto it = cells_.find(key(cells[c]));
       if (it == cells_.end()) continue;
       for (int j : it->second) visit(j, image_shift(x, points_[j]));
     }
@@ -68,12 +83,29 @@ class BroadPhaseGrid {
   Eigen::Vector3d cell_ = Eigen::Vector3d::Ones();
   Eigen::Vector3d period_ = Eigen::Vector3d::Zero();  // L per periodic dimension, else 0
   std::array<long, 3> count_ = {0, 0, 0};             // 0: unbounded
+  bool wraps_onto_itself_ = false;  // a periodic dimension of fewer than 3 cells
   std::vector<Eigen::Vector3d> points_;
   std::unordered_map<long, std::vector<int>> cells_;
+  // dense index (index()): cells dense_lo_ + [0, dense_count_) per dimension, cell
+  // ((i n_y + j) n_z + k) holding dense_points_[dense_start_[slot] .. dense_start_[slot + 1])
+  bool indexed_ = false;
+  std::array<long, 3> dense_lo_ = {0, 0, 0}, dense_count_ = {0, 0, 0};
+  std::vector<int> dense_start_, dense_points_;
 
   std::array<long, 3> cell_of(const Eigen::Vector3d& x) const;
-  // the distinct keys of the cells around x that exist; returns their number
-  int neighbour_cells(const Eigen::Vector3d& x, std::array<long, 27>& keys) const;
+  // the distinct cells around x that exist (wrapped in periodic dimensions), in the order
+  // of the offsets; returns their number
+  int neighbour_cells(const Eigen::Vector3d& x, std::array<std::array<long, 3>, 27>& cells) const;
+  // the dense index's slot of a cell, −1 outside the indexed range (no point there)
+  long dense_slot(const std::array<long, 3>& c) const {
+    long slot = 0;
+    for (int d = 0; d < 3; d++) {
+      const long i = c[d] - dense_lo_[d];
+      if (i < 0 || i >= dense_count_[d]) return -1;
+      slot = slot * dense_count_[d] + i;
+    }
+    return slot;
+  }
   Eigen::Vector3d image_shift(const Eigen::Vector3d& x, const Eigen::Vector3d& other) const;
   static long key(const std::array<long, 3>& c);
 };

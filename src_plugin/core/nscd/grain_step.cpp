@@ -618,6 +618,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   } else if (n > 0) {
     BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
     for (const GrainState& g : grains) grid.insert(g.position);
+    grid.index();
     std::vector<int> near;
     for (int a = 0; a < n; a++) {
       const double ra = library[grains[a].shape].bounding_radius;
