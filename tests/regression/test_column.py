@@ -419,7 +419,7 @@ class Column(DeckTestCase):
                                    ({"ke_stop": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_stop, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"ke_relax": -1}, "in.column: ke_relax must be >= 0 (0: relax to t_relax), got -1"),
-                                   ({"t_quiet": 0.1, "t_check": 0.5},
+                                   ({"ke_relax": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_relax, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"ke_walls": -1}, "in.column: ke_walls must be >= 0 (0: the walls move t_end - t_relax), got -1"),
                                    ({"ke_relax": 0, "t_quiet": 0.1, "t_check": 0.5},
