@@ -39,8 +39,8 @@ class BroadPhaseGrid {
   // insertion order kept within a cell), so that the queries that follow look their 27
   // cells up by address instead of hashing: the same points, visited in the same order.
   // For a grid filled once and then queried many times (a step's grains). Not built (the
-  // hash stays in use) when the points' cells span more than 8 cells per point and 64, e.g.
-  // one point far from the others. The next insert drops it.
+  // hash stays in use) when the box of the points' cells holds more than 8 N + 64 cells
+  // for N points, e.g. one point far from the others. The next insert drops it.
   void index();
   bool indexed() const { return indexed_; }
   int size() const { return static_cast<int>(points_.size()); }
