@@ -122,6 +122,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       const double v = args.value_positive(key);
       if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + wiregrain::format_number(v));
       core_->options.solver.subspace_regularization = v;
+    } else if (key == "subspace_closing") {
+      const double v = args.value_nonnegative(key);
+      if (!(v <= 1.0)) args.fail("value of 'subspace_closing' must be in [0, 1], got " + wiregrain::format_number(v));
+      core_->options.solver.subspace_closing = v;
     } else if (key == "seed") {
       core_->options.solver.seed = (std::uint64_t)args.value_int_in_range(key, 1, LONG_MAX);
     } else if (key == "warm_start") {
@@ -212,7 +216,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 16;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 17;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -698,6 +702,7 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   largest_overlap_ = std::max(largest_overlap_, stats.max_overlap);
   stick_solves_[0] += stats.subspace_solves;
   stick_solves_[1] += stats.subspace_accepted;
+  stick_solves_[2] += stats.subspace_factorizations;
   stats_[4] = stats.max_predicted_penetration;
   sleep_stats_[0] = stats.sleeping;
   sleep_stats_[1] = stats.woken;
@@ -782,6 +787,8 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
   // sleeping: grains asleep after the last solve, woken in it, frozen contact points,
   // sleepers solved in its equilibrium checks
+  // last: the stick solves' factorisations since the fix was made
+  if (k == 22 + (int)wall_forces_.size()) return stick_solves_[2];
   if (k >= 19 + (int)wall_forces_.size()) return clocks_[k - 19 - (int)wall_forces_.size()];
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs

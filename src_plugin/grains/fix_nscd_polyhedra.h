@@ -155,7 +155,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   bool share_detection_ = true;             // keyword detection shared|replicated
   long projections_ = 0;                    // pair corrections since the fix was made
   double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
-  double stick_solves_[2] = {0.0, 0.0};     // method subspace: tried, kept, since the fix was made
+  double stick_solves_[3] = {0.0, 0.0, 0.0};  // method subspace: tried, kept, factorisations, since the fix was made
   double timings_[2];                       // wall-clock seconds of the last solve: gather+detection, solve
   double clocks_[3] = {0.0, 0.0, 0.0};      // the same summed since the fix was made, and the scatter + overlap projection
   std::vector<double> wall_forces_;         // 3 per wall

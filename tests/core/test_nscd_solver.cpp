@@ -358,6 +358,65 @@ TEST(NscdSubspace, BackoffSkipsSolvesAndAKeptOneResetsIt) {
   EXPECT_LT(worst_column_load_error(solved, 20, g, h), 1e-10);
 }
 
+// The closing stick solve of a converged solve (header) is made unless the Siconos error
+// is already at most subspace_closing × tolerance. A 20-cube column warm-started from its
+// exact loads scaled by 1 + 1e-6 (the next step of a column at rest that something
+// disturbed) converges in the first sweep, to an error between 1e-12 and the tolerance:
+// with subspace_closing 0 (the default) the closing solve makes every interface carry the
+// statics, W_i = (n − i) m g h, to round-off; with 1 none is made and the loads are left
+// within the tolerance only; with 1e-9 (a threshold below that error) it is made. The
+// same problem solved again reuses the factors (no factorisation).
+TEST(NscdSubspace, ClosingStickSolveOnlyAboveItsShareOfTheTolerance) {
+  const double h = 1e-3, g = 9.81;
+  const int n = 20;
+  const auto options_with = [](double closing) {
+    NscdOptions options;
+    options.method = SolverMethod::subspace;
+    options.max_iterations = 10000;
+    options.subspace_closing = closing;
+    return options;
+  };
+  NscdOptions exact = options_with(0.0);
+  exact.tolerance = 1e-13;
+  const NscdStepResult reference = solve_nscd_step(cube_column(n, h, g, 0.5), exact);
+  ASSERT_LT(worst_column_load_error(reference, n, g, h), 1e-10);
+  std::vector<Vector3d> disturbed = reference.contacts.impulses;
+  for (Vector3d& r : disturbed) r *= 1.0 + 1e-6;
+
+  for (double closing : {0.0, 1.0, 1e-9}) {
+    const NscdStepResult result = solve_nscd_step(cube_column(n, h, g, 0.5), options_with(closing), disturbed);
+    const NscdReport& report = result.contacts.report;
+    const double worst = worst_column_load_error(result, n, g, h);
+    std::printf("  subspace_closing %g: sweeps %d, stick solves %d (kept %d), Siconos error %.1e, worst load error %.1e\n",
+                closing, report.iterations, report.subspace_solves, report.subspace_accepted, report.siconos_error, worst);
+    EXPECT_EQ(report.iterations, 1) << closing;
+    EXPECT_LE(report.siconos_error, 1e-4) << closing;
+    if (closing == 1.0) {
+      EXPECT_EQ(report.subspace_solves, 0);
+      EXPECT_GT(worst, 1e-9);  // what the closing solve removes
+    } else {
+      EXPECT_EQ(report.subspace_accepted, 1) << closing;
+      EXPECT_LT(worst, 1e-10) << closing;
+    }
+  }
+  const NscdStepResult again = solve_nscd_step(cube_column(n, h, g, 0.5), options_with(0.0), disturbed);
+  EXPECT_EQ(again.contacts.report.subspace_solves, 1);
+  EXPECT_EQ(again.contacts.report.subspace_factorizations, 0);
+}
+
+TEST(NscdSubspace, ClosingOutOfRangeNamesTheKeyword) {
+  for (double bad : {-0.1, 1.5, std::nan("")}) {
+    NscdOptions options;
+    options.subspace_closing = bad;
+    try {
+      options.validate();
+      ADD_FAILURE() << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.argument(), "subspace_closing");
+    }
+  }
+}
+
 TEST(NscdSubspace, RegularizationOutOfRangeNamesTheKeyword) {
   for (double bad : {0.0, -1e-9, 1.0, std::nan("")}) {
     NscdOptions options;

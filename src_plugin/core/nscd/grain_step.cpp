@@ -774,6 +774,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   result.stats.hit_iteration_cap = report.hit_iteration_cap;
   result.stats.subspace_solves = report.subspace_solves;
   result.stats.subspace_accepted = report.subspace_accepted;
+  result.stats.subspace_factorizations = report.subspace_factorizations;
   result.stats.frozen_points = static_cast<int>(problem.frozen.size());
   return result;
 }

@@ -79,7 +79,12 @@
 // in a row. A solve that converges without a kept stick solve (a warm start already
 // within the tolerance) gets one at the end: errors left within the tolerance otherwise
 // add up step after step (a 20-box stack at tolerance 1e-4 drifts and falls; with it
-// the loads stay exact to 1e-14).
+// the loads stay exact to 1e-14) — unless its Siconos error is already at most
+// subspace_closing × tolerance (default 0: always). Where something disturbs the
+// contacts every step, the exactness does not last: a coupled column at rest comes out of
+// its single sweep at an error of ~1e-6 each step (the wire's forces change), the closing
+// solve takes it to 3e-18 and the next step is back at 1e-6; there the closing solve is
+// most of the step's cost (in.column sets subspace_closing 1, docs/core_nscd.md).
 // Across solves (StickSolveBackoff, carried by the caller from one time step to the
 // next): a pile whose contacts slide and creep is not a structure that sticks, and its
 // stick solves make the error worse (9e-7 → 6e-5 on a 500-grain pile; W_SS of a pile is
@@ -141,6 +146,9 @@ struct NscdOptions {
   SolverMethod method = SolverMethod::gauss_seidel;
   // subspace: Tikhonov weight ε of the stick solve, relative to each row's diagonal of W
   double subspace_regularization = 1e-9;
+  // subspace: a solve that converged without a kept stick solve gets the closing one only
+  // if its Siconos error is above subspace_closing × tolerance (0: always)
+  double subspace_closing = 0.0;
   // Moreau–Jean law (solve_nscd_step and assemble_reduced only; see above).
   double theta = 1.0;        // [0.5, 1]
   double restitution = 0.0;  // [0, 1]
@@ -153,7 +161,8 @@ struct NscdOptions {
   int freeze = 0;
 
   // InvalidArgument("tolerance" | "max_iterations" | "relaxation" | "theta" |
-  // "restitution" | "overlap_recovery" | "overlap_speed" | "freeze", ...) on values outside
+  // "restitution" | "overlap_recovery" | "overlap_speed" | "freeze" |
+  // "subspace_regularization" | "subspace_closing", ...) on values outside
   // the ranges.
   void validate() const;
 };
@@ -169,6 +178,7 @@ struct NscdReport {
   long slide_fallbacks = 0;            // local slide solves that needed the scan
   int subspace_solves = 0;             // stick solves tried (method subspace)
   int subspace_accepted = 0;           // of which halved the Siconos error and were kept
+  int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made
   long frozen_updates = 0;             // contact updates skipped (freeze)
 };
 
