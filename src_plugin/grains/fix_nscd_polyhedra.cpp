@@ -148,6 +148,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       core_->options.solver.overlap_speed = args.value_nonnegative(key);
     } else if (key == "damping") {
       core_->options.damping = args.value_nonnegative(key);
+    } else if (key == "rolling_friction") {
+      core_->options.rolling_friction = args.value_nonnegative(key);
     } else if (key == "write_problems") {
       problem_every_ = (int)args.value_int_in_range(key, 1, INT_MAX, "'write_problems' (every N steps)");
       problem_file_ = args.value_word(key);
@@ -208,6 +210,8 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     }
   }
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
+  if (problem_every_ > 0 && core_->options.rolling_friction > 0.0)
+    args.fail("'write_problems' cannot carry 'rolling_friction' (a reduced FCLib problem has no rolling couples)");
   if (core_->options.solver.freeze > 0 && core_->options.solver.measure == wiregrain::ConvergenceMeasure::increment)
     args.fail("'freeze' needs 'convergence natural_map' or 'convergence both' (the increment does not see frozen contacts)");
   if (skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(skin));

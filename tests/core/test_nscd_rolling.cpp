@@ -14,10 +14,12 @@
 // conserved at θ = ½ and lost as −(h/2) m g·v(T) over the roll at θ = 1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
+#include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
 #include "core/geometry/shape_library.h"
 #include "core/nscd/grain_step.h"
@@ -49,10 +51,12 @@ struct Sphere {
 };
 
 // `steps` steps of the fix's scheme against the floor z = 0 under `gravity` (a tilted
-// gravity is an incline), friction mu, Siconos' error driven to 1e-14.
-void run(Sphere& s, const Vector3d& gravity, double mu, double h, double theta, int steps) {
+// gravity is an incline), friction mu, rolling resistance mu_r, Siconos' error driven to
+// 1e-14.
+void run(Sphere& s, const Vector3d& gravity, double mu, double h, double theta, int steps, double mu_r = 0.0) {
   GrainStepOptions options;
   options.friction = mu;
+  options.rolling_friction = mu_r;
   options.solver.tolerance = 1e-14;
   options.solver.max_iterations = 1000;
   options.solver.theta = theta;
@@ -134,4 +138,112 @@ TEST(NscdRolling, LaunchedSphereSlidesThenRollsAtFiveSeventhsOfItsSpeed) {
               t_roll, s.state.angular_velocity.y() * kRadius - v);
   EXPECT_NEAR(v / v0, 5.0 / 7.0, 2e-13);                          // measured 2.1e-14
   EXPECT_NEAR(s.state.angular_velocity.y() * kRadius, v, 1e-14);  // measured 0
+}
+
+// Rolling resistance (GrainStepOptions::rolling_friction μ_r; nscd_solver.h): a couple of
+// at most μ_r R r_n with R = the sphere's radius (its sweep radius; the floor's is 0).
+// Rolling without slip, m v' = F and I ω' = −r F − μ_r r m g with v = ω r, give
+// v' = −μ_r r² m g / (I + m r²) = −(5/7) μ_r g: a sphere set rolling at v0 on a level
+// floor slows down at that rate, each θ = 1 step by exactly h (5/7) μ_r g, and stops in
+// the step where that would reverse it; it then stays (nothing drives it).
+TEST(NscdRolling, RollingResistanceStopsARollingSphereAtFiveSeventhsOfMuRG) {
+  const double v0 = 0.1, mu = 0.5, mu_r = 0.1, g = 1.0, h = 1e-3;
+  const double deceleration = 5.0 / 7.0 * mu_r * g;
+  const int steps_to_stop = static_cast<int>(std::ceil(v0 / (deceleration * h)));  // 1400
+  Sphere s;
+  s.state.velocity = Vector3d(v0, 0, 0);
+  s.state.angular_velocity = Vector3d(0, v0 / kRadius, 0);  // rolling
+  const Vector3d gravity(0, 0, -g);
+  double x_expected = s.state.position.x();
+  for (int k = 1; k <= steps_to_stop + 500; ++k) {
+    run(s, gravity, mu, h, 1.0, 1, mu_r);
+    const double v_expected = std::max(0.0, v0 - k * h * deceleration);
+    x_expected += h * v_expected;  // θ = 1: x_{k+1} = x_k + h v_{k+1}
+    ASSERT_NEAR(s.state.velocity.x(), v_expected, 1e-13 * v0) << "step " << k;
+    ASSERT_NEAR(s.state.angular_velocity.y() * kRadius, s.state.velocity.x(), 1e-13 * v0) << "step " << k;
+  }
+  std::printf("[rolling resistance] stopped after %d steps at x = %.15f (expected %.15f; continuous "
+              "v0^2 / (2 a) = %.6f)\n",
+              steps_to_stop, s.state.position.x(), x_expected, v0 * v0 / (2.0 * deceleration));
+  EXPECT_NEAR(s.state.position.x(), x_expected, 1e-12);
+  EXPECT_LT(s.state.velocity.norm() + kRadius * s.state.angular_velocity.norm(), 1e-14);
+}
+
+// On an incline (μ ≥ tan α, so the contact sticks) the sphere stays at rest while the
+// couple needed, r m g sin α, is within μ_r r m g cos α, i.e. tan α ≤ μ_r, and otherwise
+// rolls down at (5/7) g (sin α − μ_r cos α).
+TEST(NscdRolling, RollingResistanceHoldsASphereOnAnInclineUpToTanAlphaMuR) {
+  const double mu = 0.5, mu_r = 0.2, h = 1e-3;
+  const int steps = 1000;
+  for (double tan_alpha : {0.1, 0.19, 0.21, 0.3}) {
+    const double alpha = std::atan(tan_alpha);
+    Sphere s;
+    run(s, incline_gravity(alpha), mu, h, 1.0, steps, mu_r);
+    const double v_expected =
+        tan_alpha <= mu_r ? 0.0 : 5.0 / 7.0 * (std::sin(alpha) - mu_r * std::cos(alpha)) * steps * h;
+    std::printf("[rolling resistance] tan alpha %.2f: v %.15f (expected %.15f), omega r - v %.1e\n", tan_alpha,
+                s.state.velocity.x(), v_expected, s.state.angular_velocity.y() * kRadius - s.state.velocity.x());
+    EXPECT_NEAR(s.state.velocity.x(), v_expected, 1e-13) << tan_alpha;
+    EXPECT_NEAR(s.state.angular_velocity.y() * kRadius, s.state.velocity.x(), 1e-13) << tan_alpha;
+    EXPECT_NEAR(s.state.position.z(), kRadius, 1e-13) << tan_alpha;
+  }
+}
+
+// The rolling law where W_r is not a multiple of the identity (a body of unequal moments
+// of inertia, so the couple on the disc's edge solves the 2×2 secular equation): a body
+// spinning about a horizontal axis on a floor contact whose couple cannot stop it within
+// one step ends the step with |m| = μ_r R r_n and its rolling velocity w opposed to m
+// (Coulomb's law on the disc, checked from the returned velocities, not from the solver's
+// own quantities); the same with a large bound sticks (w = 0).
+TEST(NscdRolling, CoupleOnTheDiscEdgeOpposesTheRollingVelocity) {
+  const double h = 1e-3, g = 1.0;
+  for (double rolling : {1e-2, 1e3}) {
+    NscdStep step;
+    step.time_step = h;
+    NscdBody body;
+    body.inverse_mass = 1.0;
+    body.inverse_inertia = Eigen::Vector3d(1.0, 4.0, 2.0).asDiagonal();
+    body.velocity_free = Vector3d(0, 0, -g * h);
+    body.angular_velocity_begin = body.angular_velocity_free = Vector3d(0.3, 0.2, 0.05);
+    step.bodies.push_back(body);
+    NscdContact contact;
+    contact.body_b = 0;
+    const Eigen::Matrix3d frame = contact_frame(Vector3d::UnitZ());
+    contact.jacobian_b = contact_jacobian(frame, Vector3d(0, 0, -0.5), 1.0);
+    contact.friction = 10.0;  // sticks
+    contact.rolling = rolling;
+    step.contacts.push_back(contact);
+    NscdOptions options;
+    options.tolerance = 1e-14;
+    options.max_iterations = 10000;
+    const NscdStepResult result = solve_nscd_step(step, options);
+    ASSERT_FALSE(result.contacts.report.hit_iteration_cap);
+    const double r_n = result.contacts.impulses[0][0];
+    const Vector3d m = frame.rightCols<2>() * result.contacts.couples[0];
+    const Vector3d w = result.angular_velocities[0] - result.angular_velocities[0].z() * Vector3d::UnitZ();
+    std::printf("[rolling law] bound %g: r_n %.6e, |m| / (bound r_n) %.15f, |w| %.3e, w x m / (|w||m|) %.1e, "
+                "w.m / (|w||m|) %.6f\n",
+                rolling, r_n, m.norm() / (rolling * r_n), w.norm(), w.cross(m).z() / (w.norm() * m.norm()),
+                w.dot(m) / (w.norm() * m.norm()));
+    EXPECT_GT(r_n, 0.0);
+    if (rolling < 1.0) {
+      EXPECT_NEAR(m.norm() / (rolling * r_n), 1.0, 1e-12);
+      EXPECT_GT(w.norm(), 0.1);
+      EXPECT_NEAR(w.dot(m) / (w.norm() * m.norm()), -1.0, 1e-12);
+    } else {
+      EXPECT_LT(m.norm(), rolling * r_n);
+      EXPECT_LT(w.norm(), 1e-13);
+    }
+  }
+}
+
+TEST(NscdRolling, NegativeRollingFrictionNamesTheKeyword) {
+  GrainStepOptions options;
+  options.rolling_friction = -0.1;
+  try {
+    options.validate();
+    ADD_FAILURE();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "rolling_friction");
+  }
 }

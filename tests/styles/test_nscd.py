@@ -149,6 +149,46 @@ run             3000
         self.assertAlmostEqual(travelled, discrete, delta=1e-9)
 
 
+class RollingFriction(DeckTestCase):
+    # fix nscd/polyhedra rolling_friction μ_r: a sphere (radius r = 0.5, its sweep radius)
+    # launched at v0 without spin. While it slides, friction slows it (v' = −μ g) and spins
+    # it up against the rolling couple μ_r r m g (I ω' = (μ − μ_r) m g r, I = 2/5 m r²), so
+    # it rolls from t1 = v0 / (g (μ + 5/2 (μ − μ_r))) at v1 = v0 − μ g t1 (2.2222 and
+    # 0.5556 for v0 = 1, μ = 0.2, μ_r = 0.1, g = 1); then the couple slows it at
+    # (5/7) μ_r g to rest: v0 t1 − μ g t1² / 2 + v1² / (2 (5/7) μ_r g) = 1.7284 + 2.1605
+    # travelled, less O(h v0) for the θ = 1 steps. Without rolling_friction it would roll
+    # on at 5 v0 / 7.
+    def test_launched_sphere_slides_rolls_and_stops(self):
+        made = grains_data("sphere 0.5", [(0, 0, 0.5, 1, 0, 0, 0)])
+        self.assertRanCleanly(made)
+        r = run(deck(f"""
+velocity        all set 1.0 0 0
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.2 rolling_friction 0.1 tolerance 1e-10 wall 0 0 0 0 0 1
+timestep        1e-3
+variable        x1 equal x[1]
+variable        v1 equal vx[1]
+thermo_style    custom step v_x1 v_v1
+thermo_modify   format float %.15g
+thermo          500
+run             12000
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        thermo = r.thermo()
+        v0, mu, mu_r = 1.0, 0.2, 0.1
+        t1 = v0 / (G * (mu + 2.5 * (mu - mu_r)))
+        v1 = v0 - mu * G * t1
+        decel = 5.0 / 7.0 * mu_r * G
+        expected = v0 * t1 - mu * G * t1 ** 2 / 2 + v1 ** 2 / (2 * decel)
+        travelled = thermo["x1"][-1]
+        v_at_7 = v1 - decel * (7.0 - t1)  # rolling, slowed by the couple
+        print(f"rolling friction: travelled {travelled:.9f}, continuous {expected:.9f}, "
+              f"v at t = 7 {thermo['v1'][14]:.9f} (continuous {v_at_7:.9f})")
+        self.assertLess(abs(thermo["v1"][-1]), 1e-12)  # at rest (one step slows it by 7e-5)
+        self.assertAlmostEqual(travelled, expected, delta=1e-3)  # measured 5.3e-4
+        self.assertAlmostEqual(thermo["v1"][14], v_at_7, delta=2e-4)  # measured 7.1e-5
+
+
 class WallFriction(DeckTestCase):
     # The same launch (v0 = 1) stops after v0²/(2 μ g) with the floor's μ: a wall takes the
     # grains' 'friction' whatever the keyword order, follows fix_modify friction, and keeps
@@ -899,6 +939,9 @@ class BadInput(DeckTestCase):
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")
         self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1 (")
         self.check("subspace_regularization 0", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be > 0, got 0")
+        self.check("rolling_friction -0.1", "fix nscd/polyhedra (id nscd): value of 'rolling_friction' must be >= 0, got -0.1")
+        self.check("rolling_friction 0.1 write_problems 1 p_*.txt",
+                   "fix nscd/polyhedra (id nscd): 'write_problems' cannot carry 'rolling_friction' (a reduced FCLib problem has no rolling couples)")
         self.check("subspace_closing -0.1", "fix nscd/polyhedra (id nscd): value of 'subspace_closing' must be >= 0, got -0.1")
         self.check("subspace_closing 2", "fix nscd/polyhedra (id nscd): value of 'subspace_closing' must be in [0, 1], got 2")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")

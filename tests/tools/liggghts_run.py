@@ -94,7 +94,9 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
 def grains_data(shape, poses, density=1.0, sweep=0.0, box=(-30, 30, -30, 30, -1, 60)):
     """Run create_grains for len(poses) grains of one fixed shape (e.g. "cube 1") and
     rewrite the data file with the given poses [(x, y, z, qw, qi, qj, qk), ...].
-    Returns the run (its workdir holds grains.data and grains.shapes)."""
+    Returns the run (its workdir holds grains.data and grains.shapes). A sphere ("sphere R")
+    takes no sweep (its radius is its sweep radius)."""
+    sweep_words = "" if shape.startswith("sphere") else f" sweep {sweep}"
     made = run(f"""
 units lj
 atom_style polyhedron
@@ -102,7 +104,7 @@ atom_modify map array sort 0 0.0
 boundary f f f
 region box block {' '.join(map(str, box))}
 create_box 1 box
-create_grains 1 {len(poses)} random box seed 7 shape {shape} sweep {sweep} density {density}
+create_grains 1 {len(poses)} random box seed 7 shape {shape}{sweep_words} density {density}
 write_data grains.data
 grain_shapes write grains.shapes
 """)

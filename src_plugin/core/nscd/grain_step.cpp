@@ -45,6 +45,8 @@ void GrainStepOptions::validate() const {
   if (!(friction >= 0.0)) throw InvalidArgument("friction", "grain step: friction must be >= 0, got " + std::to_string(friction));
   if (!(damping >= 0.0)) throw InvalidArgument("damping", "grain step: damping must be >= 0, got " + std::to_string(damping));
   if (!(margin >= 0.0)) throw InvalidArgument("margin", "grain step: margin must be >= 0, got " + std::to_string(margin));
+  if (!(rolling_friction >= 0.0) || !std::isfinite(rolling_friction))
+    throw InvalidArgument("rolling_friction", "grain step: rolling_friction must be >= 0, got " + std::to_string(rolling_friction));
   if (!(sleep.speed >= 0.0) || !std::isfinite(sleep.speed) || !(sleep.time > 0.0) || !std::isfinite(sleep.time))
     throw InvalidArgument("sleep", "grain step: sleep needs a speed >= 0 and a time > 0, got " +
                                        std::to_string(sleep.speed) + " and " + std::to_string(sleep.time));
@@ -98,8 +100,9 @@ NscdBody free_body(const GrainState& g, double h, double damping) {
 // body_a < 0) at `position`, normal from a to b.
 GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, int body_b,
                              const Eigen::Vector3d& position, const Eigen::Vector3d& normal, double gap, double mu,
-                             const Eigen::Vector3d& wall_velocity, long key_a) {
+                             const Eigen::Vector3d& wall_velocity, long key_a, const std::vector<double>& rolling_arm) {
   GrainContactPoint c;
+  if (!rolling_arm.empty()) c.constraint.rolling = rolling_arm[body_b] + (body_a >= 0 ? rolling_arm[body_a] : 0.0);
   c.frame = contact_frame(normal);
   c.constraint.body_a = body_a;
   c.constraint.body_b = body_b;
@@ -161,6 +164,11 @@ ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vec
     const GrainContactPoint& point = problem.points[c];
     add(point.constraint.body_a, point.constraint.body_b, point.pair.first, point.position,
         point.frame * solved.contacts.impulses[c]);
+    if (solved.contacts.couples.empty()) continue;
+    // rolling resistance: the couple, +m on b, −m on a
+    const Eigen::Vector3d couple = point.frame.rightCols<2>() * solved.contacts.couples[c];
+    out.moment[point.constraint.body_b] += couple;
+    if (point.constraint.body_a >= 0) out.moment[point.constraint.body_a] -= couple;
   }
   for (size_t f = 0; f < problem.frozen.size(); f++)
     add(problem.frozen_bodies[f].first, problem.frozen_bodies[f].second, problem.frozen[f].first.first,
@@ -286,6 +294,10 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
       row.body_b = 0;
       row.jacobian_b = contact_jacobian(frame, stored.position - g.position, 1.0);
       row.friction = pair.first < 0 ? problem.walls[-pair.first - 1].friction : options.friction;
+      if (!problem.rolling_arm.empty()) {
+        const auto [a, b] = problem.frozen_bodies[f];
+        row.rolling = problem.rolling_arm[b] + (a >= 0 ? problem.rolling_arm[a] : 0.0);
+      }
       local.contacts.push_back(row);
       frames.push_back(frame);
       warm.push_back(frame.transpose() * (sign * stored.impulse));
@@ -360,7 +372,8 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
     const PlaneWall* wall = a < 0 ? &problem.walls[-pair.first - 1] : nullptr;
     GrainContactPoint point = make_point(grains, a, b, stored.position, stored.normal, stored.gap,
                                          wall ? wall->friction : options.friction,
-                                         wall ? wall->velocity : Eigen::Vector3d::Zero(), pair.first);
+                                         wall ? wall->velocity : Eigen::Vector3d::Zero(), pair.first,
+                                         problem.rolling_arm);
     problem.warm_start.push_back(point.frame.transpose() * stored.impulse);
     problem.points.push_back(point);
   }
@@ -553,6 +566,10 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   GrainStepProblem problem;
   problem.wall_count = static_cast<int>(walls.size());
   problem.step.time_step = h;
+  if (options.rolling_friction > 0.0) {
+    problem.rolling_arm.resize(n);
+    for (int k = 0; k < n; k++) problem.rolling_arm[k] = options.rolling_friction * library[grains[k].shape].shape.sweep_radius();
+  }
 
   // 0. sleeping: who sleeps in this step. A sleeping grain wakes now if the deck gave it
   // a velocity or a moving wall can reach it within the step (relative speed |v_wall|).
@@ -664,13 +681,13 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     if (c.wall >= 0) {
       for (const ContactPoint& p : found[i].points)
         points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
-                                    walls[c.wall].velocity, -c.wall - 1));
+                                    walls[c.wall].velocity, -c.wall - 1, problem.rolling_arm));
       continue;
     }
     if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin)) pairs->keep(c.a, c.b);
     for (const ContactPoint& p : found[i].points)
       points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
-                                  Eigen::Vector3d::Zero(), grains[c.a].tag));
+                                  Eigen::Vector3d::Zero(), grains[c.a].tag, problem.rolling_arm));
   }
   if (pairs && !reuse && n > 0) pairs->end_build(grains, library, activation);
 

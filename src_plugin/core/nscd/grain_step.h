@@ -118,10 +118,16 @@ struct GrainStepOptions {
   // distance (ContactOptions::near_vertices; fix keyword `manifold near_vertices`), or the
   // closest features only (`manifold closest`)
   bool near_vertices = true;
+  // rolling resistance μ_r ≥ 0 (not in the paper; fix keyword `rolling_friction`): each
+  // contact point resists rolling with a couple of at most μ_r R r_n, R the sum of the
+  // two sweep radii (a wall's is 0): the radius of the rounded edges the grains roll on,
+  // so sharp grains (R = 0) get none (nscd_solver.h, "Rolling resistance"). 0: none.
+  double rolling_friction = 0.0;
   SleepOptions sleep;
   // solver options of a step: seed = solver.seed + step_number (a new random order per step)
   NscdOptions solver_for_step(std::uint64_t step_number) const;
-  // InvalidArgument("friction" | "damping" | "margin" | "sleep" | solver keywords, ...)
+  // InvalidArgument("friction" | "damping" | "margin" | "rolling_friction" | "sleep" |
+  // solver keywords, ...)
   void validate() const;
 };
 
@@ -201,6 +207,9 @@ struct GrainStepProblem {
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
   std::vector<std::pair<int, int>> frozen_bodies;   // (body a or −1 for a wall, body b) of each
   std::vector<PlaneWall> walls;                     // sleeping on: for frozen wall points that wake
+  // rolling resistance on: per grain, μ_r × its sweep radius (a point's bound is the sum
+  // of its two grains' per unit normal impulse)
+  std::vector<double> rolling_arm;
 };
 
 struct GrainStepStats {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <type_traits>
 
 #include "core/common/errors.h"
 #include "core/common/validation.h"
@@ -264,6 +265,7 @@ class BodyContactOperator final : public ContactOperator {
                                               std::to_string(contact.body_a));
       }
       check_nonnegative(contact.friction, "contacts", [&] { return label("friction"); });
+      check_nonnegative(contact.rolling, "contacts", [&] { return label("rolling resistance"); });
       check_finite(std::isfinite(contact.gap), "contacts", [&] { return label("gap"); });
       check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(), "contacts",
                    [&] { return label("Jacobian"); });
@@ -275,6 +277,7 @@ class BodyContactOperator final : public ContactOperator {
       link.jacobian_a = contact.jacobian_a;
       link.jacobian_b = contact.jacobian_b;
       link.mu = contact.friction;
+      link.rolling = contact.rolling;
       Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
       Eigen::Vector3d u_begin = contact.velocity_offset;
       if (link.body_a >= 0) {
@@ -313,6 +316,59 @@ class BodyContactOperator final : public ContactOperator {
       norm_q_squared += q.squaredNorm();
     }
     norm_q_ = std::sqrt(norm_q_squared);
+
+    // rolling blocks (header, "Rolling resistance"), for every contact once any has one
+    bool rolling = false;
+    for (const NscdContact& contact : step.contacts) rolling |= contact.rolling > 0.0;
+    if (rolling) {
+      rolling_.resize(n);
+      for (int c = 0; c < n; ++c) {
+        const Link& link = links_[c];
+        RollingBlock& block = rolling_[c];
+        // the frame's rows (n, t1, t2) from the Jacobian's linear part (± frameᵀ)
+        const Eigen::Matrix3d frame_t =
+            link.body_b >= 0 ? Eigen::Matrix3d(link.jacobian_b.leftCols<3>()) : Eigen::Matrix3d(-link.jacobian_a.leftCols<3>());
+        block.tangents = frame_t.bottomRows<2>().transpose();
+        Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();
+        if (link.body_a >= 0) inverse_inertia += bodies_[link.body_a].inverse_inertia;
+        if (link.body_b >= 0) inverse_inertia += bodies_[link.body_b].inverse_inertia;
+        block.delassus = block.tangents.transpose() * inverse_inertia * block.tangents;
+      }
+    }
+  }
+
+  bool has_rolling() const { return !rolling_.empty(); }
+  double rolling_bound(int c) const { return links_[c].rolling; }
+  // The couple of contact c's rolling law (header) for normal impulse r_n, the other
+  // impulses and couples as they are; `couple`: its present couple.
+  Eigen::Vector2d solve_couple(int c, double r_n, const Eigen::Vector2d& couple) const {
+    const double bound = links_[c].rolling * r_n;
+    if (!(bound > 0.0)) return Eigen::Vector2d::Zero();
+    const RollingBlock& block = rolling_[c];
+    const Eigen::Vector2d w_free = rolling_velocity(c) - block.delassus * couple;
+    const Eigen::Vector2d stick = -block.delassus.ldlt().solve(w_free);
+    if (stick.norm() <= bound) return stick;
+    // on the disc's edge: m(σ) = −(W_r + σ I)⁻¹ w_free with |m(σ)| = bound; Newton on
+    // φ(σ) = 1/|m(σ)| − 1/bound, φ' = mᵀ (W_r + σ I)⁻¹ m / |m|³ (> 0), from σ = 0 where
+    // φ < 0: the iterates increase to the root (φ is concave in σ)
+    double sigma = 0.0;
+    Eigen::Vector2d m = stick;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const Eigen::Matrix2d shifted = block.delassus + sigma * Eigen::Matrix2d::Identity();
+      m = -shifted.ldlt().solve(w_free);
+      const double norm = m.norm();
+      if (std::abs(norm - bound) <= 1e-14 * bound) break;
+      const double slope = m.dot(shifted.ldlt().solve(m)) / (norm * norm * norm);
+      sigma = std::max(0.0, sigma - (1.0 / norm - 1.0 / bound) / slope);
+    }
+    return bound / m.norm() * m;
+  }
+  // couple += delta: ω_b += I_b⁻¹ T delta, ω_a −= I_a⁻¹ T delta
+  void add_couple(int c, const Eigen::Vector2d& delta) {
+    const Link& link = links_[c];
+    const Eigen::Vector3d world = rolling_[c].tangents * delta;
+    if (link.body_a >= 0) bodies_[link.body_a].velocity.tail<3>() -= bodies_[link.body_a].inverse_inertia * world;
+    if (link.body_b >= 0) bodies_[link.body_b].velocity.tail<3>() += bodies_[link.body_b].inverse_inertia * world;
   }
 
   int contact_count() const override { return static_cast<int>(links_.size()); }
@@ -389,6 +445,7 @@ class BodyContactOperator final : public ContactOperator {
   struct Link {
     int body_a = -1, body_b = -1;
     double mu = 0.0;
+    double rolling = 0.0;  // μ_r R
     Eigen::Vector3d constant;  // velocity offset + s e_n
     RowJacobian jacobian_a, jacobian_b;
     LocalDelassus delassus;
@@ -430,7 +487,22 @@ class BodyContactOperator final : public ContactOperator {
     return linear + angular;
   }
 
+  // w = Tᵀ (ω_b − ω_a)
+  Eigen::Vector2d rolling_velocity(int c) const {
+    const Link& link = links_[c];
+    Eigen::Vector3d relative = Eigen::Vector3d::Zero();
+    if (link.body_b >= 0) relative += bodies_[link.body_b].velocity.tail<3>();
+    if (link.body_a >= 0) relative -= bodies_[link.body_a].velocity.tail<3>();
+    return rolling_[c].tangents.transpose() * relative;
+  }
+  // a contact's rolling block: T = (t1 t2) in world axes and W_r = Tᵀ (I_a⁻¹ + I_b⁻¹) T
+  struct RollingBlock {
+    Eigen::Matrix<double, 3, 2> tangents;
+    Eigen::Matrix2d delassus;
+  };
+
   std::vector<Link> links_;
+  std::vector<RollingBlock> rolling_;  // empty unless a contact has a rolling resistance
   std::vector<Body> bodies_;
   std::vector<double> start_normal_velocity_;
   double norm_q_ = 0.0;
@@ -450,11 +522,28 @@ namespace {
 template <class Operator>
 double sweep_contacts(Operator& op, const std::vector<int>& order, bool backward, int iteration,
                       const NscdOptions& options, std::vector<int>& frozen_until,
-                      ContactSolution& result, int counts[3], bool& changed) {
+                      ContactSolution& result, int counts[3], bool& changed, double& couple_increment_squared) {
   const int n = static_cast<int>(order.size());
   const double omega = options.relaxation;
   NscdReport& report = result.report;
   double increment_squared = 0.0;
+  // a contact's rolling couple for its normal impulse r_n (header, "Rolling resistance";
+  // bodies only)
+  const auto update_couple = [&](int c, double r_n) {
+    if constexpr (std::is_same_v<Operator, BodyContactOperator>) {
+      if (result.couples.empty() || op.rolling_bound(c) == 0.0) return;
+      Eigen::Vector2d& m = result.couples[c];
+      const Eigen::Vector2d delta = op.solve_couple(c, r_n, m) - m;
+      if (delta.isZero(0.0)) return;
+      op.add_couple(c, delta);
+      m += delta;
+      couple_increment_squared += delta.squaredNorm();
+      changed = true;
+    } else {
+      (void)c;
+      (void)r_n;
+    }
+  };
   for (int k = 0; k < n; ++k) {
     const int c = backward ? order[n - 1 - k] : order[k];
     if (!frozen_until.empty() && frozen_until[c] > iteration) {
@@ -467,6 +556,7 @@ double sweep_contacts(Operator& op, const std::vector<int>& order, bool backward
     // (solve_coulomb_local's first case, q_n = u_n − (W 0)_n = u_n), nothing changes; u_n
     // alone costs a third of u (on a settled pile most detected contacts are open).
     if (r.isZero(0.0) && op.normal_velocity(c) >= 0.0) {
+      update_couple(c, 0.0);  // an open contact carries no couple
       if (!frozen_until.empty()) frozen_until[c] = iteration + 1 + options.freeze;
       result.states[c] = ContactState::open;
       ++counts[static_cast<int>(ContactState::open)];
@@ -488,6 +578,7 @@ double sweep_contacts(Operator& op, const std::vector<int>& order, bool backward
       increment_squared += delta.squaredNorm();
       changed = true;
     }
+    update_couple(c, r[0]);
     if (!frozen_until.empty() && delta.squaredNorm() <= options.tolerance * options.tolerance * r.squaredNorm())
       frozen_until[c] = iteration + 1 + options.freeze;
     result.states[c] = local.state;
@@ -528,10 +619,13 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   std::vector<int> frozen_until(options.freeze > 0 ? n : 0, 0);  // skipped in sweeps before this
   std::mt19937_64 generator(options.seed);
   BodyContactOperator* const body_op = dynamic_cast<BodyContactOperator*>(&op);
+  const bool rolling = body_op != nullptr && body_op->has_rolling();
+  if (rolling) result.couples.assign(n, Eigen::Vector2d::Zero());
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
   // method subspace: schedule within this solve, and whether the backoff allows any
   int subspace_wait = 2, next_subspace = 2, subspace_dropped = 0;
-  bool stick_solves = options.method == SolverMethod::subspace;
+  // (none with rolling resistance: they would leave the couples one update behind, header)
+  bool stick_solves = options.method == SolverMethod::subspace && !rolling;
   if (stick_solves && backoff != nullptr && backoff->skip > 0) {
     --backoff->skip;
     stick_solves = false;
@@ -572,10 +666,13 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
 
     int counts[3] = {0, 0, 0};
     bool changed = false;
+    double couple_increment_squared = 0.0;
     const double increment_squared =
         body_op != nullptr
-            ? sweep_contacts(*body_op, order, backward, iteration, options, frozen_until, result, counts, changed)
-            : sweep_contacts(op, order, backward, iteration, options, frozen_until, result, counts, changed);
+            ? sweep_contacts(*body_op, order, backward, iteration, options, frozen_until, result, counts, changed,
+                             couple_increment_squared)
+            : sweep_contacts(op, order, backward, iteration, options, frozen_until, result, counts, changed,
+                             couple_increment_squared);
     if (changed) error_known = false;
     report.open = counts[0];
     report.stick = counts[1];
@@ -626,6 +723,12 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
           }
         }
         break;
+    }
+    // rolling resistance: the couples must have settled too (header)
+    if (converged && rolling) {
+      double norm_m_squared = 0.0;
+      for (const Eigen::Vector2d& m : result.couples) norm_m_squared += m.squaredNorm();
+      converged = couple_increment_squared <= options.tolerance * options.tolerance * norm_m_squared;
     }
     // method subspace, converged without a kept stick solve: one more (header), which
     // makes a resting stack exact every step instead of merely within the tolerance

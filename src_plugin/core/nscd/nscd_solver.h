@@ -97,6 +97,23 @@
 // about 100 sweeps; the 10 080 of a 10×10×9 lattice pile: ~6 s, about 2300 sweeps); a
 // structure that forms later (walls taken away) gets its stick solves back within 1024
 // steps.
+// Rolling resistance (NscdContact::rolling = μ_r R > 0; not in the paper, whose contacts
+// have none; bodies only). A contact also carries a couple m (its tangential components
+// t1, t2: a pure couple, +m on b and −m on a) against the rolling part of the relative
+// angular velocity, w = Tᵀ (ω_b − ω_a), T = (t1 t2), w = W_r m + w_free with
+// W_r = Tᵀ (I_a⁻¹ + I_b⁻¹) T; the law is Coulomb's on a disc:
+//     |m| ≤ μ_r R r_n,  and w = 0, or w = −λ m with λ ≥ 0 and |m| = μ_r R r_n
+// (the couple resists rolling as the tangential impulse resists sliding; the spin about
+// n is not resisted). In a sweep, after a contact's 3×3 block, its couple is solved with
+// the new r_n: m = −W_r⁻¹ w_free if that is in the disc, else the m on the disc's edge
+// with m = −(W_r + σ I)⁻¹ w_free, σ ≥ 0 (a 2×2 secular equation, Newton on
+// 1/|m(σ)| − 1/(μ_r R r_n) from σ = 0, monotone as for a trust region). Couples start at 0
+// every solve (no warm start); a solve is converged only once the couples changed by at
+// most tolerance × |m| in the last sweep too (the Siconos error does not see them). Stick
+// solves hold couples as they are and would leave them one update behind, so method
+// subspace makes none when any contact has a rolling resistance. A sphere (a point swept
+// by r, R = r) on a plane decelerates at (5/7) μ_r g while it rolls and rests on an
+// incline while tan α ≤ μ_r (core test NscdRolling).
 // Siconos error (fc3d_compute_error of Siconos numerics 4.4 as fc3d_nsgs calls it, with
 // the De Saxcé modified velocity, natural_map_residual in core/coulomb_local.h):
 //     error = sqrt(Σ_c ‖r_c − proj_{K_μc}(r_c − u_c − μ_c ‖u_t,c‖ e_n)‖²)
@@ -242,6 +259,9 @@ struct StickSolveBackoff {
 struct ContactSolution {
   std::vector<Eigen::Vector3d> impulses;  // r_c in the local frame
   std::vector<ContactState> states;
+  // rolling couples (t1, t2 components, on body b; −m on a), one per contact when any
+  // contact has a rolling resistance, else empty
+  std::vector<Eigen::Vector2d> couples;
   NscdReport report;
 };
 
@@ -279,6 +299,10 @@ struct NscdContact {
   Eigen::Vector3d velocity_offset = Eigen::Vector3d::Zero();
   double friction = 0.0;  // μ ≥ 0
   double gap = 0.0;       // g at the step start (< 0: overlap)
+  // Rolling resistance (not in the paper; solve_nscd_step only): the largest rolling
+  // couple per unit normal impulse, μ_r R ≥ 0 (a length; 0: none). See "Rolling
+  // resistance" below.
+  double rolling = 0.0;
 };
 
 struct NscdStep {
