@@ -404,28 +404,24 @@ TEST(NscdSubspace, ClosingStickSolveOnlyAboveItsShareOfTheTolerance) {
   EXPECT_EQ(again.contacts.report.subspace_factorizations, 0);
 }
 
-TEST(NscdSubspace, ClosingOutOfRangeNamesTheKeyword) {
-  for (double bad : {-0.1, 1.5, std::nan("")}) {
-    NscdOptions options;
-    options.subspace_closing = bad;
-    try {
-      options.validate();
-      ADD_FAILURE() << bad;
-    } catch (const InvalidArgument& e) {
-      EXPECT_EQ(e.argument(), "subspace_closing");
-    }
-  }
-}
-
-TEST(NscdSubspace, RegularizationOutOfRangeNamesTheKeyword) {
-  for (double bad : {0.0, -1e-9, 1.0, std::nan("")}) {
-    NscdOptions options;
-    options.subspace_regularization = bad;
-    try {
-      options.validate();
-      ADD_FAILURE() << bad;
-    } catch (const InvalidArgument& e) {
-      EXPECT_EQ(e.argument(), "subspace_regularization");
+// Each subspace option outside its range is refused naming its keyword.
+TEST(NscdSubspace, OptionsOutOfRangeNameTheirKeyword) {
+  struct Case {
+    const char* keyword;
+    double NscdOptions::*option;
+    std::vector<double> bad;
+  };
+  for (const Case& c : {Case{"subspace_regularization", &NscdOptions::subspace_regularization, {0.0, -1e-9, 1.0, std::nan("")}},
+                        Case{"subspace_closing", &NscdOptions::subspace_closing, {-0.1, 1.5, std::nan("")}}}) {
+    for (double bad : c.bad) {
+      NscdOptions options;
+      options.*c.option = bad;
+      try {
+        options.validate();
+        ADD_FAILURE() << c.keyword << " " << bad;
+      } catch (const InvalidArgument& e) {
+        EXPECT_EQ(e.argument(), c.keyword);
+      }
     }
   }
 }
