@@ -754,13 +754,14 @@ void FixNSCDPolyhedra::write_problem(const wiregrain::NscdStep &step) {
   wiregrain::write_reduced_problem(out, wiregrain::assemble_reduced(step, options), title);
 }
 
-// fix_modify ID damping γ | overlap_recovery β | overlap_speed v | tolerance t | friction μ,
-// e.g. to relax a deposit with damping and go on without it, keeping the warm start.
+// fix_modify ID damping γ | overlap_recovery β | overlap_speed v | tolerance t | friction μ |
+// sleep v t | subspace_closing κ, e.g. to relax a deposit with damping and go on without
+// it, keeping the warm start (in.column: no closing stick solve in the relaxation only).
 int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
   if (narg < 1) return 0;
   const std::string key = arg[0];
   if (key != "damping" && key != "overlap_recovery" && key != "overlap_speed" && key != "tolerance" &&
-      key != "friction" && key != "sleep")
+      key != "friction" && key != "sleep" && key != "subspace_closing")
     return 0;
   const int used = key == "sleep" ? 3 : 2;
   wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, used), arg, 0);
@@ -772,6 +773,7 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
   else if (key == "overlap_recovery") core_->options.solver.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
   else if (key == "overlap_speed") core_->options.solver.overlap_speed = args.value_nonnegative(key);
   else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
+  else if (key == "subspace_closing") core_->options.solver.subspace_closing = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
   else {
     core_->options.friction = args.value_nonnegative(key);
     core_->walls_take_grain_friction();

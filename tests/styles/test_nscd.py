@@ -944,6 +944,7 @@ class BadInput(DeckTestCase):
                    "fix nscd/polyhedra (id nscd): 'write_problems' cannot carry 'rolling_friction' (a reduced FCLib problem has no rolling couples)")
         self.check("subspace_closing -0.1", "fix nscd/polyhedra (id nscd): value of 'subspace_closing' must be >= 0, got -0.1")
         self.check("subspace_closing 2", "fix nscd/polyhedra (id nscd): value of 'subspace_closing' must be in [0, 1], got 2")
+        self.check("\nfix_modify nscd subspace_closing 2", "fix_modify nscd/polyhedra (id nscd): value of 'subspace_closing' must be in [0, 1], got 2")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
         made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
