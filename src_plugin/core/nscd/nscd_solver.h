@@ -84,7 +84,7 @@
 // contacts every step, the exactness does not last: a coupled column at rest comes out of
 // its single sweep at an error of ~1e-6 each step (the wire's forces change), the closing
 // solve takes it to 3e-18 and the next step is back at 1e-6; there the closing solve is
-// most of the step's cost (in.column sets subspace_closing 1, docs/core_nscd.md).
+// most of the step's cost (in.column leaves it out in its relaxation, docs/core_nscd.md).
 // Across solves (StickSolveBackoff, carried by the caller from one time step to the
 // next): a pile whose contacts slide and creep is not a structure that sticks, and its
 // stick solves make the error worse (9e-7 → 6e-5 on a 500-grain pile; W_SS of a pile is
