@@ -121,27 +121,36 @@ run             2000
         self.assertAlmostEqual(travelled / discrete, 1.0, delta=4e-13)
 
 
+def launch_one_grain(case, shape, z, nscd_options, steps, every):
+    """One grain of `shape` resting at height z on the floor z = 0, launched at vx = 1 under
+    gravity G with fix nscd/polyhedra `nscd_options`; h = 1e-3. Returns the thermo (x1, v1:
+    its x and vx every `every` steps)."""
+    made = grains_data(shape, [(0, 0, z, 1, 0, 0, 0)])
+    case.assertRanCleanly(made)
+    r = run(deck(f"""
+velocity        all set 1.0 0 0
+fix             g all gravity {G} vector 0 0 -1
+fix             nscd all nscd/polyhedra {nscd_options} wall 0 0 0 0 0 1
+timestep        1e-3
+variable        x1 equal x[1]
+variable        v1 equal vx[1]
+thermo_style    custom step v_x1 v_v1
+thermo_modify   format float %.15g
+thermo          {every}
+run             {steps}
+"""), workdir=made.workdir)
+    case.assertRanCleanly(r)
+    return r.thermo()
+
+
 class Launch(DeckTestCase):
     # A box launched at v0 on flat ground stops after v0^2 / (2 μ g). The θ = 1 scheme
     # decelerates by μ g h per step and moves with the end-of-step velocity, so with
     # N = v0 / (μ g h) steps (an integer here) it travels h Σ_{k=1..N} (v0 − k μ g h)
     # = v0^2 / (2 μ g) − h v0 / 2: 0.9995 for v0 = 1, μ g = 0.5, h = 1e-3.
     def test_stopping_distance(self):
-        made = grains_data("box 1.0 0.9 0.8", [(0, 0, 0.4, 1, 0, 0, 0)])
-        self.assertRanCleanly(made)
-        r = run(deck(f"""
-velocity        all set 1.0 0 0
-fix             g all gravity {G} vector 0 0 -1
-fix             nscd all nscd/polyhedra friction 0.5 tolerance 1e-8 wall 0 0 0 0 0 1
-timestep        1e-3
-variable        x1 equal x[1]
-thermo_style    custom step v_x1
-thermo_modify   format float %.15g
-thermo          100
-run             3000
-"""), workdir=made.workdir)
-        self.assertRanCleanly(r)
-        travelled = r.thermo()["x1"][-1]
+        thermo = launch_one_grain(self, "box 1.0 0.9 0.8", 0.4, "friction 0.5 tolerance 1e-8", 3000, 100)
+        travelled = thermo["x1"][-1]
         h, v0, decel = 1e-3, 1.0, 0.5 * G
         steps = round(v0 / (decel * h))
         discrete = h * sum(v0 - k * decel * h for k in range(1, steps + 1))
@@ -159,22 +168,7 @@ class RollingFriction(DeckTestCase):
     # travelled, less O(h v0) for the θ = 1 steps. Without rolling_friction it would roll
     # on at 5 v0 / 7.
     def test_launched_sphere_slides_rolls_and_stops(self):
-        made = grains_data("sphere 0.5", [(0, 0, 0.5, 1, 0, 0, 0)])
-        self.assertRanCleanly(made)
-        r = run(deck(f"""
-velocity        all set 1.0 0 0
-fix             g all gravity {G} vector 0 0 -1
-fix             nscd all nscd/polyhedra friction 0.2 rolling_friction 0.1 tolerance 1e-10 wall 0 0 0 0 0 1
-timestep        1e-3
-variable        x1 equal x[1]
-variable        v1 equal vx[1]
-thermo_style    custom step v_x1 v_v1
-thermo_modify   format float %.15g
-thermo          500
-run             12000
-"""), workdir=made.workdir)
-        self.assertRanCleanly(r)
-        thermo = r.thermo()
+        thermo = launch_one_grain(self, "sphere 0.5", 0.5, "friction 0.2 rolling_friction 0.1 tolerance 1e-10", 12000, 500)
         v0, mu, mu_r = 1.0, 0.2, 0.1
         t1 = v0 / (G * (mu + 2.5 * (mu - mu_r)))
         v1 = v0 - mu * G * t1
