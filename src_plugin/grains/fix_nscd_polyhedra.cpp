@@ -53,8 +53,10 @@ constexpr int kSleepState = 14;
 constexpr int kGrainRecord = 25 + kSleepState;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
 constexpr int kAtomRecord = 12 + kSleepState;
-// the first number of the fix's global restart data (older builds wrote 0 or 1 there)
-constexpr double kRestartLayout = -2.0;
+// the first number of the fix's global restart data (older builds wrote 0 or 1 there);
+// -2: points without rolling couples (sessions 18–25), still read
+constexpr double kRestartLayout = -3.0;
+constexpr double kRestartLayoutWithoutCouples = -2.0;
 
 }  // namespace
 
@@ -804,7 +806,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
 
 // restart: a layout mark, whether a solve happened, the sub-cycle state (steps summed, a
 // pending move and its h), the wall positions, the warm-start impulses (with each point's
-// normal, gap and status: frozen points) and the stick-solve backoff
+// normal, gap and status: frozen points; and its rolling couple) and the stick-solve backoff
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   if (comm->me != 0) return;
   std::vector<double> data = {kRestartLayout, solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
@@ -830,6 +832,7 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
     data.insert(data.end(), s.normal.data(), s.normal.data() + 3);
     data.push_back(s.gap);
     data.push_back(double(static_cast<int>(s.status)));
+    data.insert(data.end(), s.couple.data(), s.couple.data() + 3);
   }
   data.push_back(core_->impulses.backoff.skip);
   data.push_back(core_->impulses.backoff.wait);
@@ -840,7 +843,7 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
 
 void FixNSCDPolyhedra::restart(char *buf) {
   const double *d = reinterpret_cast<const double *>(buf);
-  if (d[0] != kRestartLayout) {  // a file of a build before sleeping: its impulses are laid out otherwise
+  if (d[0] != kRestartLayout && d[0] != kRestartLayoutWithoutCouples) {  // a file of a build before sleeping
     if (comm->me == 0)
       error->warning(FLERR, ("fix nscd/polyhedra (id " + std::string(id) +
                              "): the restart file comes from an older build: the grains start without warm start")
@@ -855,17 +858,19 @@ void FixNSCDPolyhedra::restart(char *buf) {
   const size_t nwalls = (size_t)d[k++];
   for (size_t w = 0; w < nwalls; w++, k += 3)
     if (w < core_->walls.size()) core_->walls[w].point = vec3(d + k);
+  const size_t point_record = d[0] == kRestartLayout ? 14 : 11;
   const size_t entries = (size_t)d[k++];
   core_->impulses.clear();
   for (size_t e = 0; e < entries; e++) {
     const wiregrain::GrainImpulseMemory::PairKey pair((long)d[k], (long)d[k + 1]);
     const size_t count = (size_t)d[k + 2];
     k += 3;
-    for (size_t c = 0; c < count; c++, k += 11) {
+    for (size_t c = 0; c < count; c++, k += point_record) {
       wiregrain::GrainImpulseMemory::Impulse point{vec3(d + k), vec3(d + k + 3)};
       point.normal = vec3(d + k + 6);
       point.gap = d[k + 9];
       point.status = static_cast<wiregrain::ContactStatus>((int)d[k + 10]);
+      if (point_record == 14) point.couple = vec3(d + k + 11);
       core_->impulses.add(pair, point);
     }
   }

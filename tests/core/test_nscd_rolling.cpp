@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/common/errors.h"
@@ -211,7 +212,8 @@ TEST(NscdRolling, CoupleOnTheDiscEdgeOpposesTheRollingVelocity) {
     const Eigen::Matrix3d frame = contact_frame(Vector3d::UnitZ());
     contact.jacobian_b = contact_jacobian(frame, Vector3d(0, 0, -0.5), 1.0);
     contact.friction = 10.0;  // sticks
-    contact.rolling = rolling;
+    contact.rolling_friction = rolling;  // μ_r R = rolling: R = 1
+    contact.rolling_radius = 1.0;
     step.contacts.push_back(contact);
     NscdOptions options;
     options.tolerance = 1e-14;
@@ -237,6 +239,26 @@ TEST(NscdRolling, CoupleOnTheDiscEdgeOpposesTheRollingVelocity) {
   }
 }
 
+TEST(NscdRolling, RollingFrictionWithoutARadiusNamesTheContact) {
+  NscdStep step;
+  step.time_step = 1e-3;
+  step.bodies.resize(1);
+  step.bodies[0].inverse_mass = 1.0;
+  step.bodies[0].inverse_inertia = Eigen::Matrix3d::Identity();
+  NscdContact contact;
+  contact.body_b = 0;
+  contact.jacobian_b = contact_jacobian(contact_frame(Vector3d::UnitZ()), Vector3d(0, 0, -0.5), 1.0);
+  contact.rolling_friction = 0.1;
+  step.contacts.push_back(contact);
+  try {
+    solve_nscd_step(step, NscdOptions());
+    ADD_FAILURE();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "contacts");
+    EXPECT_NE(std::string(e.what()).find("needs a rolling radius > 0"), std::string::npos) << e.what();
+  }
+}
+
 TEST(NscdRolling, NegativeRollingFrictionNamesTheKeyword) {
   GrainStepOptions options;
   options.rolling_friction = -0.1;
@@ -246,4 +268,124 @@ TEST(NscdRolling, NegativeRollingFrictionNamesTheKeyword) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.argument(), "rolling_friction");
   }
+}
+
+// rolling_axes (core/nscd/grain_step.h): an axis e is left to the couples where the
+// pair's points spread across it by a half-width w_e ≤ μ_r R (`arm`). Expected from the
+// geometry: one point keeps both axes; an edge of length L along x (half-width across x
+// 0, along x L/2) keeps x alone for L/2 > arm and both for L/2 ≤ arm; a square face of
+// side 1 none; points along y within 0.01 of the line keep y for arm 0.02 and none for
+// arm 0.005. The normal's sign does not matter.
+TEST(NscdRolling, RollingAxesFollowTheSpreadOfThePairsPoints) {
+  const Vector3d n = Vector3d::UnitZ();
+  EXPECT_EQ(rolling_axes({Vector3d(1, 2, 3)}, n, 0.02).count, 2);
+  for (const Vector3d& normal : {n, Vector3d(-n)}) {
+    const RollingAxes edge = rolling_axes({Vector3d(-0.5, 0.3, 0), Vector3d(0.5, 0.3, 0)}, normal, 0.02);
+    EXPECT_EQ(edge.count, 1);
+    EXPECT_NEAR(std::abs(edge.axis.x()), 1.0, 1e-15);
+    EXPECT_NEAR(edge.axis.norm(), 1.0, 1e-15);
+  }
+  EXPECT_EQ(rolling_axes({Vector3d(0, 0, 0), Vector3d(0.03, 0, 0)}, n, 0.02).count, 2);
+  EXPECT_EQ(rolling_axes({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)}, n, 0.02).count, 0);
+  const std::vector<Vector3d> near_line = {Vector3d(0, 0, 0), Vector3d(0.01, 0.5, 0), Vector3d(-0.01, 1, 0)};
+  const RollingAxes kept = rolling_axes(near_line, n, 0.02);
+  EXPECT_EQ(kept.count, 1);
+  EXPECT_GT(std::abs(kept.axis.y()), 0.999);
+  EXPECT_EQ(rolling_axes(near_line, n, 0.005).count, 0);
+}
+
+// A rounded box resting face down on the floor: its four points hold it against rolling
+// themselves, so it carries no couple, and every step after the first converges in one
+// sweep to rest (with a couple at each of the four points, redundant with their normal
+// impulses, every step hit the 1000-sweep cap).
+TEST(NscdRolling, BoxRestingOnAFaceCarriesNoCoupleAndConvergesInOneSweep) {
+  ShapeLibrary library;
+  library.add(ConvexShape::box(1.0, 0.9, 0.8, 0.1));
+  GrainState box;
+  box.tag = 1;
+  box.mass = library[0].volume;
+  box.inertia = library[0].unit_inertia;
+  box.position = Vector3d(0, 0, 0.4 + 0.1);
+  std::vector<PlaneWall> walls(1);
+  GrainStepOptions options;
+  options.rolling_friction = 0.1;
+  options.solver.tolerance = 1e-10;
+  GrainImpulseMemory memory;
+  for (int k = 0; k < 200; ++k) {
+    box.force = Vector3d(0, 0, -box.mass);
+    const GrainStepResult r = grain_step({box}, library, walls, 1e-3, options, (std::uint64_t)k, memory);
+    ASSERT_EQ(r.stats.contact_points, 4);
+    if (k > 0) ASSERT_EQ(r.stats.sweeps, 1) << "step " << k;
+    ASSERT_LT(r.velocities[0].norm() + r.angular_velocities[0].norm(), 1e-14) << "step " << k;
+    for (const auto& entry : memory.points()) ASSERT_EQ(entry.impulse.couple.norm(), 0.0) << "step " << k;
+  }
+}
+
+// A couple restricted to one axis (NscdContact::rolling_axis): a body on two frictionless
+// floor points along x (an edge), spinning about x (the edge: rolling) and about z (spin).
+// The normal impulses have no moment about x or z, so only the couples act about x: each
+// step takes μ_r R Σ r_n = μ_r R m g h off I_x ω_x until ω_x is 0; ω_z is untouched and
+// the couples have no component along y (the axis the points hold themselves).
+TEST(NscdRolling, OneAxisCoupleResistsOnlyRollingAboutTheEdge) {
+  const double h = 1e-3, g = 1.0, arm = 0.05, inertia_x = 0.2, omega_x0 = 0.1, omega_z0 = 0.3;
+  NscdBody body;
+  body.inverse_mass = 1.0;
+  body.inverse_inertia = Eigen::Vector3d(1.0 / inertia_x, 1.0 / 0.3, 1.0 / 0.4).asDiagonal();
+  const Eigen::Matrix3d frame = contact_frame(Vector3d::UnitZ());
+  NscdStep step;
+  step.time_step = h;
+  for (double x : {-0.5, 0.5}) {
+    NscdContact contact;
+    contact.body_b = 0;
+    contact.jacobian_b = contact_jacobian(frame, Vector3d(x, 0, -0.5), 1.0);
+    contact.rolling_friction = arm / 0.5;  // μ_r R = arm with R = 0.5
+    contact.rolling_radius = 0.5;
+    contact.rolling_axis = Vector3d::UnitX();
+    step.contacts.push_back(contact);
+  }
+  NscdOptions options;
+  options.tolerance = 1e-14;
+  Vector3d omega(omega_x0, 0, omega_z0);
+  const int steps_to_stop = static_cast<int>(std::ceil(omega_x0 * inertia_x / (arm * g * h)));  // 400
+  for (int k = 1; k <= steps_to_stop + 10; ++k) {
+    body.velocity_begin = Vector3d::Zero();
+    body.velocity_free = Vector3d(0, 0, -g * h);
+    body.angular_velocity_begin = body.angular_velocity_free = omega;
+    step.bodies = {body};
+    const NscdStepResult result = solve_nscd_step(step, options);
+    ASSERT_FALSE(result.contacts.report.hit_iteration_cap);
+    omega = result.angular_velocities[0];
+    const double expected = std::max(0.0, omega_x0 - k * arm * g * h / inertia_x);
+    ASSERT_NEAR(omega.x(), expected, 1e-14) << "step " << k;  // round-off of 400 steps
+    ASSERT_NEAR(omega.z(), omega_z0, 1e-15) << "step " << k;
+    ASSERT_NEAR(omega.y(), 0.0, 1e-15) << "step " << k;
+    for (int c = 0; c < 2; ++c) ASSERT_EQ((frame.rightCols<2>() * result.contacts.couples[c]).y(), 0.0) << "step " << k;
+  }
+}
+
+// Couples are warm-started as the impulses are (GrainImpulseMemory::Impulse::couple): a
+// sphere resting on an incline with tan α ≤ μ_r needs the couple r m g h sin α against
+// the moment of the friction that holds it; from the second step on it starts from last
+// step's couple and one sweep settles both.
+TEST(NscdRolling, WarmStartedCoupleHoldsASphereOnAnInclineInOneSweep) {
+  const double alpha = std::atan(0.1), h = 1e-3;
+  Sphere s;
+  GrainStepOptions options;
+  options.friction = 0.5;
+  options.rolling_friction = 0.2;
+  options.solver.tolerance = 1e-12;
+  std::vector<PlaneWall> walls(1);
+  walls[0].friction = 0.5;
+  GrainImpulseMemory memory;
+  for (int k = 0; k < 50; ++k) {
+    s.state.force = s.state.mass * incline_gravity(alpha);
+    const GrainStepResult r = grain_step({s.state}, s.library, walls, h, options, (std::uint64_t)k, memory);
+    if (k > 1) ASSERT_EQ(r.stats.sweeps, 1) << "step " << k;
+    s.state.velocity = r.velocities[0];
+    s.state.angular_velocity = r.angular_velocities[0];
+    ASSERT_EQ(memory.points().size(), 1u);
+    const Vector3d couple = memory.points()[0].impulse.couple;
+    ASSERT_NEAR(couple.norm(), kRadius * s.state.mass * h * std::sin(alpha), 1e-12 * s.state.mass * h) << "step " << k;
+  }
+  EXPECT_LT(s.state.velocity.norm() + kRadius * s.state.angular_velocity.norm(), 1e-12);
 }

@@ -522,18 +522,26 @@ class RanksAndRestart(DeckTestCase):
     # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
     # warm-start impulses and the stick-solve backoff) reproduces the straight run. The
     # restart comes at t = 1.2, when the heap has settled and its stick solves are being
-    # skipped: without the backoff in the restart file the runs differed by 2.9e-11.
+    # skipped: without the backoff in the restart file the runs differed by 2.9e-11. With
+    # rolling_friction the restart file carries the warm-start couples too.
     BODY = """
 fix             g all gravity 1.0 vector 0 0 -1
-fix             nscd all nscd/polyhedra tolerance 1e-6 wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
+fix             nscd all nscd/polyhedra tolerance 1e-6 EXTRA wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
 timestep        1e-3
 dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
 """
 
     def test_same_state(self):
+        self.check_same_state("")
+
+    def test_same_state_with_rolling_friction(self):
+        self.check_same_state("rolling_friction 0.2")
+
+    def check_same_state(self, extra):
         made = heap_of_30()
         self.assertRanCleanly(made)
-        text = full_precision(deck(self.BODY), "d")
+        body = self.BODY.replace("EXTRA", extra)
+        text = full_precision(deck(body), "d")
         one = run(text + "run 2400\n", workdir=made.workdir)
         a = read_dump(made.path("dump.h"))
         two = run(text.replace("dump.h", "dump2.h") + "run 2400\n", workdir=made.workdir, np_ranks=2)
@@ -543,7 +551,7 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
         half = run(text.replace("dump.h", "dump3.h") + "run 1200\nwrite_restart heap.restart\n", workdir=made.workdir)
         for r in (one, two, two_replicated, half):
             self.assertRanCleanly(r)
-        rest = run(full_precision(restarted("heap.restart") + self.BODY.replace("dump.h", "dump4.h") + "run 1200\n", "d"), workdir=made.workdir)
+        rest = run(full_precision(restarted("heap.restart") + body.replace("dump.h", "dump4.h") + "run 1200\n", "d"), workdir=made.workdir)
         self.assertRanCleanly(rest)
         b, c = read_dump(made.path("dump2.h")), read_dump(made.path("dump4.h"))
         cols = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
@@ -551,7 +559,7 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
         restart = max(np.max(np.abs(a[k] - c[k])) for k in cols)
         e = read_dump(made.path("dump5.h"))
         replicated = max(np.max(np.abs(a[k] - e[k])) for k in cols)
-        print(f"heap of 30: 1 vs 2 ranks {ranks:.2e} (detection replicated {replicated:.2e}), restart vs straight {restart:.2e}")
+        print(f"heap of 30 ({extra or 'defaults'}): 1 vs 2 ranks {ranks:.2e} (detection replicated {replicated:.2e}), restart vs straight {restart:.2e}")
         self.assertLess(ranks, 1e-12)
         self.assertLess(replicated, 1e-12)
         self.assertLess(restart, 1e-12)
@@ -565,7 +573,7 @@ class PairReuse(DeckTestCase):
     def test_pour_follows_the_full_search_to_the_bit(self):
         made = heap_of_30()
         self.assertRanCleanly(made)
-        body = RanksAndRestart.BODY + """
+        body = RanksAndRestart.BODY.replace("EXTRA", "") + """
 thermo_style    custom step f_nscd[3] f_nscd[27] f_nscd[28]
 thermo          1500
 run             1500

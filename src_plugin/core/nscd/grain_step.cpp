@@ -52,6 +52,39 @@ void GrainStepOptions::validate() const {
                                        std::to_string(sleep.speed) + " and " + std::to_string(sleep.time));
 }
 
+RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Eigen::Vector3d& normal, double arm) {
+  RollingAxes axes;
+  if (positions.size() < 2) return axes;
+  const Eigen::Matrix3d frame = contact_frame(normal);
+  const Eigen::Matrix<double, 3, 2> tangents = frame.rightCols<2>();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : positions) centroid += p;
+  centroid /= static_cast<double>(positions.size());
+  std::vector<Eigen::Vector2d> spread;  // in the tangent plane (t1, t2)
+  Eigen::Matrix2d second_moment = Eigen::Matrix2d::Zero();
+  for (const Eigen::Vector3d& p : positions) {
+    spread.push_back(tangents.transpose() * (p - centroid));
+    second_moment += spread.back() * spread.back().transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(second_moment);
+  const Eigen::Vector2d along = principal.eigenvectors().col(1);  // the larger spread
+  const Eigen::Vector2d across = principal.eigenvectors().col(0);
+  // half the points' extent along `direction`
+  const auto half_width = [&](const Eigen::Vector2d& direction) {
+    double low = 0.0, high = 0.0;
+    for (const Eigen::Vector2d& d : spread) {
+      low = std::min(low, d.dot(direction));
+      high = std::max(high, d.dot(direction));
+    }
+    return 0.5 * (high - low);
+  };
+  // rolling about `along` is resisted by the spread across it, and conversely
+  const bool free_along = half_width(across) <= arm, free_across = half_width(along) <= arm;
+  axes.count = int(free_along) + int(free_across);
+  if (axes.count == 1) axes.axis = tangents * (free_along ? along : across);
+  return axes;
+}
+
 void GrainImpulseMemory::commit() {
   if (sorted_) return;
   std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) { return x.pair < y.pair; });
@@ -96,13 +129,21 @@ NscdBody free_body(const GrainState& g, double h, double damping) {
   return b;
 }
 
+// Rolling resistance of a point between grain body_b and grain body_a (−1: a wall), if on:
+// μ_r, and R the sum of the sweep radii (sharp grains on a wall: none).
+void set_rolling(NscdContact& row, const GrainStepProblem& problem, int body_a, int body_b) {
+  if (problem.sweep_radius.empty()) return;
+  row.rolling_radius = problem.sweep_radius[body_b] + (body_a >= 0 ? problem.sweep_radius[body_a] : 0.0);
+  row.rolling_friction = row.rolling_radius > 0.0 ? problem.rolling_friction : 0.0;
+}
+
 // A contact point between grain body_b and grain body_a (or wall −(key_a + 1) when
 // body_a < 0) at `position`, normal from a to b.
 GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, int body_b,
                              const Eigen::Vector3d& position, const Eigen::Vector3d& normal, double gap, double mu,
-                             const Eigen::Vector3d& wall_velocity, long key_a, const std::vector<double>& rolling_arm) {
+                             const Eigen::Vector3d& wall_velocity, long key_a, const GrainStepProblem& problem) {
   GrainContactPoint c;
-  if (!rolling_arm.empty()) c.constraint.rolling = rolling_arm[body_b] + (body_a >= 0 ? rolling_arm[body_a] : 0.0);
+  set_rolling(c.constraint, problem, body_a, body_b);
   c.frame = contact_frame(normal);
   c.constraint.body_a = body_a;
   c.constraint.body_b = body_b;
@@ -116,6 +157,33 @@ GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, 
   return c;
 }
 
+// rolling_axes on each run of consecutive rows of one pair among `count` rows: key(i),
+// position(i), normal(i) of row i, and its NscdContact& row(i) (rolling and rolling_axis
+// set; rows without rolling resistance are left alone)
+template <class Key, class Position, class Normal, class Row>
+void restrict_rolling(size_t count, const Key& key, const Position& position, const Normal& normal, const Row& row) {
+  std::vector<Eigen::Vector3d> positions;
+  for (size_t first = 0, last = 0; first < count; first = last) {
+    positions.clear();
+    for (last = first; last < count && key(last) == key(first); last++) positions.push_back(position(last));
+    const double arm = row(first).rolling_friction * row(first).rolling_radius;  // μ_r R
+    if (arm == 0.0) continue;
+    const RollingAxes axes = rolling_axes(positions, normal(first), arm);
+    for (size_t i = first; i < last; i++) {
+      if (axes.count == 0) row(i).rolling_friction = 0.0;
+      if (axes.count == 1) row(i).rolling_axis = axes.axis;
+    }
+  }
+}
+
+// restrict_rolling on points[begin, end)
+void restrict_rolling(std::vector<GrainContactPoint>& points, size_t begin) {
+  restrict_rolling(
+      points.size() - begin, [&](size_t i) { return points[begin + i].pair; },
+      [&](size_t i) { return points[begin + i].position; }, [&](size_t i) { return Eigen::Vector3d(points[begin + i].frame.col(0)); },
+      [&](size_t i) -> NscdContact& { return points[begin + i].constraint; });
+}
+
 // Step 3: the points from the top down (descending z, ties in the order given), with
 // their rows and warm starts.
 void sort_top_down(GrainStepProblem& problem) {
@@ -126,13 +194,16 @@ void sort_top_down(GrainStepProblem& problem) {
   });
   std::vector<GrainContactPoint> points;
   std::vector<Eigen::Vector3d> warm;
+  std::vector<Eigen::Vector2d> warm_couples;
   points.reserve(order.size());
   for (size_t c : order) {
     points.push_back(problem.points[c]);
     if (!problem.warm_start.empty()) warm.push_back(problem.warm_start[c]);
+    if (!problem.couple_warm_start.empty()) warm_couples.push_back(problem.couple_warm_start[c]);
   }
   problem.points = std::move(points);
   problem.warm_start = std::move(warm);
+  problem.couple_warm_start = std::move(warm_couples);
   problem.step.contacts.clear();
   problem.step.contacts.reserve(problem.points.size());
   for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
@@ -254,12 +325,18 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
     const GrainState& g = grains[k];
     const double radius = problem.bounding_radius[k];
     Eigen::Vector3d load = h * g.force, moment = h * g.torque;
-    const auto add_load = [&](const Eigen::Vector3d& position, const Eigen::Vector3d& impulse) {
+    // an impulse at `position` and a rolling couple
+    const auto add_load = [&](const Eigen::Vector3d& position, const Eigen::Vector3d& impulse, const Eigen::Vector3d& couple) {
       load += impulse;
-      moment += (position - g.position).cross(impulse);
+      moment += (position - g.position).cross(impulse) + couple;
     };
-    for (const auto& [c, sign] : solved_on[k])
-      add_load(problem.points[c].position, sign * (problem.points[c].frame * solved.contacts.impulses[c]));
+    for (const auto& [c, sign] : solved_on[k]) {
+      const GrainContactPoint& point = problem.points[c];
+      const Eigen::Vector3d couple = solved.contacts.couples.empty()
+                                         ? Eigen::Vector3d::Zero()
+                                         : Eigen::Vector3d(point.frame.rightCols<2>() * solved.contacts.couples[c]);
+      add_load(point.position, sign * (point.frame * solved.contacts.impulses[c]), sign * couple);
+    }
     std::vector<int> owned;
     for (int f : frozen_on[k]) {
       if (owner(f) == k) {
@@ -267,7 +344,7 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
         continue;
       }
       const double sign = problem.frozen_bodies[f].second == k ? 1.0 : -1.0;
-      add_load(problem.frozen[f].second.position, sign * problem.frozen[f].second.impulse);
+      add_load(problem.frozen[f].second.position, sign * problem.frozen[f].second.impulse, sign * problem.frozen[f].second.couple);
     }
     const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
     const Eigen::Matrix3d inverse_inertia = r * g.inertia.cwiseInverse().asDiagonal() * r.transpose();
@@ -285,6 +362,7 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
     local.time_step = h;
     local.bodies.push_back(free_body(alone, h, options.damping));
     std::vector<Eigen::Vector3d> warm;
+    std::vector<Eigen::Vector2d> warm_couples;
     std::vector<Eigen::Matrix3d> frames;
     for (int f : owned) {
       const auto& [pair, stored] = problem.frozen[f];
@@ -294,15 +372,19 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
       row.body_b = 0;
       row.jacobian_b = contact_jacobian(frame, stored.position - g.position, 1.0);
       row.friction = pair.first < 0 ? problem.walls[-pair.first - 1].friction : options.friction;
-      if (!problem.rolling_arm.empty()) {
-        const auto [a, b] = problem.frozen_bodies[f];
-        row.rolling = problem.rolling_arm[b] + (a >= 0 ? problem.rolling_arm[a] : 0.0);
-      }
+      set_rolling(row, problem, problem.frozen_bodies[f].first, problem.frozen_bodies[f].second);
       local.contacts.push_back(row);
       frames.push_back(frame);
       warm.push_back(frame.transpose() * (sign * stored.impulse));
+      warm_couples.push_back(frame.rightCols<2>().transpose() * (sign * stored.couple));
     }
-    const NscdStepResult rest = solve_nscd_step(local, local_options, warm);
+    if (!problem.sweep_radius.empty())
+      restrict_rolling(
+          owned.size(), [&](size_t i) { return problem.frozen[owned[i]].first; },
+          [&](size_t i) { return problem.frozen[owned[i]].second.position; },
+          [&](size_t i) { return problem.frozen[owned[i]].second.normal; },
+          [&](size_t i) -> NscdContact& { return local.contacts[i]; });
+    const NscdStepResult rest = solve_nscd_step(local, local_options, warm, nullptr, warm_couples);
     checks++;
     if (rest.velocities[0].norm() + radius * rest.angular_velocities[0].norm() > v_sleep) {
       woken.push_back(k);  // its step starts again from its drift at the step start
@@ -316,6 +398,7 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
       auto& stored = problem.frozen[owned[i]].second;
       const double sign = problem.frozen_bodies[owned[i]].second == k ? 1.0 : -1.0;
       stored.impulse = sign * (frames[i] * rest.contacts.impulses[i]);
+      if (!rest.contacts.couples.empty()) stored.couple = sign * (frames[i].rightCols<2>() * rest.contacts.couples[i]);
       stored.status = static_cast<ContactStatus>(static_cast<int>(rest.contacts.states[i]));
     }
   }
@@ -351,6 +434,11 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
     }
   }
   problem.warm_start = solved.contacts.impulses;
+  if (!problem.sweep_radius.empty())
+    problem.couple_warm_start = solved.contacts.couples.empty()
+                                    ? std::vector<Eigen::Vector2d>(problem.points.size(), Eigen::Vector2d::Zero())
+                                    : solved.contacts.couples;
+  const size_t first_woken_point = problem.points.size();
   for (int k : woken) {
     problem.asleep[k] = 0;
     problem.quiet_time[k] = 0.0;
@@ -373,10 +461,12 @@ int wake_in_step(GrainStepProblem& problem, const std::vector<GrainState>& grain
     GrainContactPoint point = make_point(grains, a, b, stored.position, stored.normal, stored.gap,
                                          wall ? wall->friction : options.friction,
                                          wall ? wall->velocity : Eigen::Vector3d::Zero(), pair.first,
-                                         problem.rolling_arm);
+                                         problem);
     problem.warm_start.push_back(point.frame.transpose() * stored.impulse);
+    if (!problem.sweep_radius.empty()) problem.couple_warm_start.push_back(point.frame.rightCols<2>().transpose() * stored.couple);
     problem.points.push_back(point);
   }
+  if (!problem.sweep_radius.empty()) restrict_rolling(problem.points, first_woken_point);
   problem.frozen = std::move(still_frozen);
   problem.frozen_bodies = std::move(still_frozen_bodies);
   sort_top_down(problem);
@@ -567,8 +657,9 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   problem.wall_count = static_cast<int>(walls.size());
   problem.step.time_step = h;
   if (options.rolling_friction > 0.0) {
-    problem.rolling_arm.resize(n);
-    for (int k = 0; k < n; k++) problem.rolling_arm[k] = options.rolling_friction * library[grains[k].shape].shape.sweep_radius();
+    problem.rolling_friction = options.rolling_friction;
+    problem.sweep_radius.resize(n);
+    for (int k = 0; k < n; k++) problem.sweep_radius[k] = library[grains[k].shape].shape.sweep_radius();
   }
 
   // 0. sleeping: who sleeps in this step. A sleeping grain wakes now if the deck gave it
@@ -681,15 +772,16 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     if (c.wall >= 0) {
       for (const ContactPoint& p : found[i].points)
         points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
-                                    walls[c.wall].velocity, -c.wall - 1, problem.rolling_arm));
+                                    walls[c.wall].velocity, -c.wall - 1, problem));
       continue;
     }
     if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin)) pairs->keep(c.a, c.b);
     for (const ContactPoint& p : found[i].points)
       points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
-                                  Eigen::Vector3d::Zero(), grains[c.a].tag, problem.rolling_arm));
+                                  Eigen::Vector3d::Zero(), grains[c.a].tag, problem));
   }
   if (pairs && !reuse && n > 0) pairs->end_build(grains, library, activation);
+  if (!problem.sweep_radius.empty()) restrict_rolling(points, 0);
 
   // 3. top-down order (descending z of the point, ties in detection order)
   sort_top_down(problem);
@@ -714,10 +806,14 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   // 4. warm start from the nearest stored point of the same pair within R_max / 4
   if (options.warm_start) {
     problem.warm_start.assign(points.size(), Eigen::Vector3d::Zero());
+    if (!problem.sweep_radius.empty()) problem.couple_warm_start.assign(points.size(), Eigen::Vector2d::Zero());
     const double near2 = std::pow(0.25 * largest_radius, 2);
     for (size_t c = 0; c < points.size(); c++)
-      if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2))
+      if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
         problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
+        if (!problem.couple_warm_start.empty())
+          problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
+      }
   }
   return problem;
 }
@@ -726,7 +822,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
                                  const GrainStepOptions& options, std::uint64_t step_number,
                                  GrainImpulseMemory& memory) {
   const NscdOptions solver = options.solver_for_step(step_number);
-  NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
+  NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff, problem.couple_warm_start);
   // sleeping grains that cannot stay at rest wake within the step, and the step is
   // solved again with them, until every grain still asleep can (the header)
   int woken_in_step = 0, sleeper_checks = 0;
@@ -734,7 +830,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
     for (std::vector<int> woken = check_sleepers(problem, grains, options, solved, sleeper_checks); !woken.empty();
          woken = check_sleepers(problem, grains, options, solved, sleeper_checks)) {
       woken_in_step += wake_in_step(problem, grains, woken, options, solved);
-      solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff);
+      solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff, problem.couple_warm_start);
     }
   }
   const ContactImpulses impulses = contact_impulses(problem, grains, solved);
@@ -770,6 +866,7 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   for (size_t c = 0; c < problem.points.size(); c++) {
     const GrainContactPoint& point = problem.points[c];
     GrainImpulseMemory::Impulse stored{point.position, point.frame * solved.contacts.impulses[c]};
+    if (!solved.contacts.couples.empty()) stored.couple = point.frame.rightCols<2>() * solved.contacts.couples[c];
     stored.normal = point.frame.col(0);
     stored.gap = point.constraint.gap;
     stored.status = static_cast<ContactStatus>(static_cast<int>(solved.contacts.states[c]));

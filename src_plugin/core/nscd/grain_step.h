@@ -108,6 +108,24 @@ struct SleepOptions {
   bool on() const { return speed > 0.0; }
 };
 
+// Rolling resistance of one pair (not in the paper): its couples act only about the
+// tangent axes about which the pair's own contact points do not already resist rolling.
+// About a tangent axis e, the normal impulses of points spread across e (by a half-width
+// w_e, half the extent of the points along n × e) resist with a moment of up to w_e r_n,
+// the couples with μ_r R r_n; e is left to the couples where w_e ≤ μ_r R (`arm`). So a
+// single point keeps both axes, an edge on a face (points on a line) the axis along the
+// edge, a face on a face none. Couples about an axis the points also hold are redundant
+// with the normal impulses, and Gauss–Seidel drifts along that redundancy: a box resting
+// face down hit the 1000-sweep cap on every step, and the 500-grain deposit did on some
+// steps from t = 3, until the couples were restricted (docs/core_nscd.md, "Rolling
+// resistance"). The axes e1, e2 are the principal axes of the points' spread in the
+// plane normal to `normal`.
+struct RollingAxes {
+  int count = 2;                                   // free axes: 0, 1 or 2
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // count 1: the free axis (unit, tangent)
+};
+RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Eigen::Vector3d& normal, double arm);
+
 struct GrainStepOptions {
   NscdOptions solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
   double friction = 0.5;   // μ between grains
@@ -121,7 +139,9 @@ struct GrainStepOptions {
   // rolling resistance μ_r ≥ 0 (not in the paper; fix keyword `rolling_friction`): each
   // contact point resists rolling with a couple of at most μ_r R r_n, R the sum of the
   // two sweep radii (a wall's is 0): the radius of the rounded edges the grains roll on,
-  // so sharp grains (R = 0) get none (nscd_solver.h, "Rolling resistance"). 0: none.
+  // so sharp grains (R = 0) get none (nscd_solver.h, "Rolling resistance"), about the
+  // axes its pair's points leave free (rolling_axes). 0: none. The couples are
+  // warm-started as the impulses are.
   double rolling_friction = 0.0;
   SleepOptions sleep;
   // solver options of a step: seed = solver.seed + step_number (a new random order per step)
@@ -142,6 +162,7 @@ class GrainImpulseMemory {
   // frozen point (sleeping pair), which is reported without being detected again
   struct Impulse {
     Eigen::Vector3d position, impulse;
+    Eigen::Vector3d couple = Eigen::Vector3d::Zero();  // rolling couple on b (world frame)
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     double gap = 0.0;
     ContactStatus status = ContactStatus::open;
@@ -197,6 +218,8 @@ struct GrainStepProblem {
   NscdStep step;                              // bodies = grains (same order), contacts top-down
   std::vector<GrainContactPoint> points;      // parallel to step.contacts
   std::vector<Eigen::Vector3d> warm_start;    // local frames; empty without warm start
+  // rolling couples (t1, t2), parallel to warm_start; empty without rolling resistance
+  std::vector<Eigen::Vector2d> couple_warm_start;
   int wall_count = 0;
   // sleeping: per grain, asleep during this step (after the start-of-step wake-ups; empty
   // when sleeping is off), and the frozen points of sleeping pairs (not in `step`)
@@ -207,9 +230,10 @@ struct GrainStepProblem {
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
   std::vector<std::pair<int, int>> frozen_bodies;   // (body a or −1 for a wall, body b) of each
   std::vector<PlaneWall> walls;                     // sleeping on: for frozen wall points that wake
-  // rolling resistance on: per grain, μ_r × its sweep radius (a point's bound is the sum
-  // of its two grains' per unit normal impulse)
-  std::vector<double> rolling_arm;
+  // rolling resistance on (μ_r = rolling_friction > 0): per grain, its sweep radius (a
+  // point's rolling radius R is the sum of its two grains'; a wall's is 0); else empty
+  double rolling_friction = 0.0;
+  std::vector<double> sweep_radius;
 };
 
 struct GrainStepStats {

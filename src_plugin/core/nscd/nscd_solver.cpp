@@ -265,7 +265,13 @@ class BodyContactOperator final : public ContactOperator {
                                               std::to_string(contact.body_a));
       }
       check_nonnegative(contact.friction, "contacts", [&] { return label("friction"); });
-      check_nonnegative(contact.rolling, "contacts", [&] { return label("rolling resistance"); });
+      check_nonnegative(contact.rolling_friction, "contacts", [&] { return label("rolling friction"); });
+      check_nonnegative(contact.rolling_radius, "contacts", [&] { return label("rolling radius"); });
+      if (contact.rolling_friction > 0.0 && !(contact.rolling_radius > 0.0)) {
+        throw InvalidArgument("contacts", label("rolling friction ") + format_number(contact.rolling_friction) +
+                                              " needs a rolling radius > 0");
+      }
+      check_finite(contact.rolling_axis.allFinite(), "contacts", [&] { return label("rolling axis"); });
       check_finite(std::isfinite(contact.gap), "contacts", [&] { return label("gap"); });
       check_finite(contact.jacobian_a.allFinite() && contact.jacobian_b.allFinite(), "contacts",
                    [&] { return label("Jacobian"); });
@@ -277,7 +283,8 @@ class BodyContactOperator final : public ContactOperator {
       link.jacobian_a = contact.jacobian_a;
       link.jacobian_b = contact.jacobian_b;
       link.mu = contact.friction;
-      link.rolling = contact.rolling;
+      link.rolling = contact.rolling_friction * contact.rolling_radius;
+      link.rolling_radius = contact.rolling_radius;
       Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
       Eigen::Vector3d u_begin = contact.velocity_offset;
       if (link.body_a >= 0) {
@@ -319,7 +326,7 @@ class BodyContactOperator final : public ContactOperator {
 
     // rolling blocks (header, "Rolling resistance"), for every contact once any has one
     bool rolling = false;
-    for (const NscdContact& contact : step.contacts) rolling |= contact.rolling > 0.0;
+    for (const NscdContact& contact : step.contacts) rolling |= contact.rolling_friction > 0.0;
     if (rolling) {
       rolling_.resize(n);
       for (int c = 0; c < n; ++c) {
@@ -333,6 +340,15 @@ class BodyContactOperator final : public ContactOperator {
         if (link.body_a >= 0) inverse_inertia += bodies_[link.body_a].inverse_inertia;
         if (link.body_b >= 0) inverse_inertia += bodies_[link.body_b].inverse_inertia;
         block.delassus = block.tangents.transpose() * inverse_inertia * block.tangents;
+        const NscdContact& contact = step.contacts[c];
+        if (!contact.rolling_axis.isZero(0.0)) {
+          const Eigen::Vector2d axis = block.tangents.transpose() * contact.rolling_axis;
+          if (!(axis.norm() > 0.5)) {
+            throw InvalidArgument("contacts", contact_label(c) + "rolling axis is not a unit vector of the tangent plane");
+          }
+          block.axis = axis.normalized();
+          block.one_axis = true;
+        }
       }
     }
   }
@@ -346,6 +362,10 @@ class BodyContactOperator final : public ContactOperator {
     if (!(bound > 0.0)) return Eigen::Vector2d::Zero();
     const RollingBlock& block = rolling_[c];
     const Eigen::Vector2d w_free = rolling_velocity(c) - block.delassus * couple;
+    if (block.one_axis) {  // m = m_e a: m_e = −aᵀ w_free / aᵀ W_r a, clamped to ± the bound
+      const double stick = -block.axis.dot(w_free) / block.axis.dot(block.delassus * block.axis);
+      return std::clamp(stick, -bound, bound) * block.axis;
+    }
     const Eigen::Vector2d stick = -block.delassus.ldlt().solve(w_free);
     if (stick.norm() <= bound) return stick;
     // on the disc's edge: m(σ) = −(W_r + σ I)⁻¹ w_free with |m(σ)| = bound; Newton on
@@ -362,6 +382,30 @@ class BodyContactOperator final : public ContactOperator {
       sigma = std::max(0.0, sigma - (1.0 / norm - 1.0 / bound) / slope);
     }
     return bound / m.norm() * m;
+  }
+  // The rolling law's natural-map residual as the Siconos error's numerator has it for
+  // Coulomb's law (header): the couple as the impulse m / R at the rolling radius, the
+  // rolling velocity as the surface speed w R, and ρ = 1:
+  //     sqrt(Σ_c |m_c / R_c − proj_{D_c}(m_c / R_c − w_c R_c)|²),
+  // D_c the disc of radius μ_r r_n (a one-axis couple: the segment along its axis).
+  double rolling_residual(const std::vector<Eigen::Vector2d>& couples, const std::vector<Eigen::Vector3d>& impulses) const {
+    double residual_squared = 0.0;
+    for (int c = 0; c < contact_count(); ++c) {
+      const Link& link = links_[c];
+      if (link.rolling == 0.0) continue;
+      const RollingBlock& block = rolling_[c];
+      const double bound = link.rolling / link.rolling_radius * impulses[c][0];
+      const Eigen::Vector2d m = couples[c] / link.rolling_radius;
+      const Eigen::Vector2d trial = m - link.rolling_radius * rolling_velocity(c);
+      Eigen::Vector2d projected;
+      if (block.one_axis) {
+        projected = std::clamp(block.axis.dot(trial), -bound, bound) * block.axis;
+      } else {
+        projected = trial.norm() <= bound ? trial : Eigen::Vector2d(bound / trial.norm() * trial);
+      }
+      residual_squared += (m - projected).squaredNorm();
+    }
+    return std::sqrt(residual_squared);
   }
   // couple += delta: ω_b += I_b⁻¹ T delta, ω_a −= I_a⁻¹ T delta
   void add_couple(int c, const Eigen::Vector2d& delta) {
@@ -446,6 +490,7 @@ class BodyContactOperator final : public ContactOperator {
     int body_a = -1, body_b = -1;
     double mu = 0.0;
     double rolling = 0.0;  // μ_r R
+    double rolling_radius = 0.0;  // R
     Eigen::Vector3d constant;  // velocity offset + s e_n
     RowJacobian jacobian_a, jacobian_b;
     LocalDelassus delassus;
@@ -499,6 +544,8 @@ class BodyContactOperator final : public ContactOperator {
   struct RollingBlock {
     Eigen::Matrix<double, 3, 2> tangents;
     Eigen::Matrix2d delassus;
+    bool one_axis = false;  // the couple only along `axis` (t1, t2 components, unit)
+    Eigen::Vector2d axis = Eigen::Vector2d::Zero();
   };
 
   std::vector<Link> links_;
@@ -591,7 +638,8 @@ double sweep_contacts(Operator& op, const std::vector<int>& order, bool backward
 
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
                                          const std::vector<Eigen::Vector3d>& warm_start,
-                                         StickSolveBackoff* backoff) {
+                                         StickSolveBackoff* backoff,
+                                         const std::vector<Eigen::Vector2d>& couple_warm_start) {
   options.validate();
   const int n = op.contact_count();
   ContactSolution result;
@@ -621,6 +669,18 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
   BodyContactOperator* const body_op = dynamic_cast<BodyContactOperator*>(&op);
   const bool rolling = body_op != nullptr && body_op->has_rolling();
   if (rolling) result.couples.assign(n, Eigen::Vector2d::Zero());
+  if (!couple_warm_start.empty()) {
+    if (static_cast<int>(couple_warm_start.size()) != n) {
+      throw InvalidArgument("warm_start", "couple warm start has " + std::to_string(couple_warm_start.size()) +
+                                              " couples for " + std::to_string(n) + " contacts");
+    }
+    for (int c = 0; c < n && rolling; ++c) {
+      check_finite(couple_warm_start[c].allFinite(), "warm_start", [&] { return contact_label(c) + "couple"; });
+      if (couple_warm_start[c].isZero(0.0) || body_op->rolling_bound(c) == 0.0) continue;
+      result.couples[c] = couple_warm_start[c];
+      body_op->add_couple(c, couple_warm_start[c]);
+    }
+  }
   int check_interval = 1, next_error_check = 0;  // increment_then_natural_map
   // method subspace: schedule within this solve, and whether the backoff allows any
   int subspace_wait = 2, next_subspace = 2, subspace_dropped = 0;
@@ -724,11 +784,17 @@ ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions&
         }
         break;
     }
-    // rolling resistance: the couples must have settled too (header)
+    // rolling resistance: the couples must satisfy their law too (header)
     if (converged && rolling) {
-      double norm_m_squared = 0.0;
-      for (const Eigen::Vector2d& m : result.couples) norm_m_squared += m.squaredNorm();
-      converged = couple_increment_squared <= options.tolerance * options.tolerance * norm_m_squared;
+      if (options.measure == ConvergenceMeasure::increment) {
+        double bounds_squared = 0.0;
+        for (int c = 0; c < n; ++c) bounds_squared += std::pow(body_op->rolling_bound(c) * result.impulses[c][0], 2);
+        converged = couple_increment_squared <= options.tolerance * options.tolerance * bounds_squared;
+      } else {
+        // normalised as the Siconos error, less ‖u‖ (not at hand here): max(‖q‖, ‖r‖)
+        converged = body_op->rolling_residual(result.couples, result.impulses) <=
+                    options.tolerance * std::max(op.free_velocity_norm(), norm_r);
+      }
     }
     // method subspace, converged without a kept stick solve: one more (header), which
     // makes a resting stack exact every step instead of merely within the tolerance
@@ -779,11 +845,12 @@ std::unique_ptr<ContactOperator> body_contact_operator(const NscdStep& step, con
 
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
                                const std::vector<Eigen::Vector3d>& warm_start,
-                               StickSolveBackoff* backoff) {
+                               StickSolveBackoff* backoff,
+                               const std::vector<Eigen::Vector2d>& couple_warm_start) {
   options.validate();
   BodyContactOperator op(step, options);
   NscdStepResult result;
-  result.contacts = solve_frictional_contact(op, options, warm_start, backoff);
+  result.contacts = solve_frictional_contact(op, options, warm_start, backoff, couple_warm_start);
   const int body_count = static_cast<int>(step.bodies.size());
   result.velocities.resize(body_count);
   result.angular_velocities.resize(body_count);

@@ -97,8 +97,8 @@
 // about 100 sweeps; the 10 080 of a 10×10×9 lattice pile: ~6 s, about 2300 sweeps); a
 // structure that forms later (walls taken away) gets its stick solves back within 1024
 // steps.
-// Rolling resistance (NscdContact::rolling = μ_r R > 0; not in the paper, whose contacts
-// have none; bodies only). A contact also carries a couple m (its tangential components
+// Rolling resistance (NscdContact::rolling_friction μ_r > 0 and rolling_radius R; not in
+// the paper, whose contacts have none; bodies only). A contact also carries a couple m (its tangential components
 // t1, t2: a pure couple, +m on b and −m on a) against the rolling part of the relative
 // angular velocity, w = Tᵀ (ω_b − ω_a), T = (t1 t2), w = W_r m + w_free with
 // W_r = Tᵀ (I_a⁻¹ + I_b⁻¹) T; the law is Coulomb's on a disc:
@@ -107,9 +107,20 @@
 // n is not resisted). In a sweep, after a contact's 3×3 block, its couple is solved with
 // the new r_n: m = −W_r⁻¹ w_free if that is in the disc, else the m on the disc's edge
 // with m = −(W_r + σ I)⁻¹ w_free, σ ≥ 0 (a 2×2 secular equation, Newton on
-// 1/|m(σ)| − 1/(μ_r R r_n) from σ = 0, monotone as for a trust region). Couples start at 0
-// every solve (no warm start); a solve is converged only once the couples changed by at
-// most tolerance × |m| in the last sweep too (the Siconos error does not see them). Stick
+// 1/|m(σ)| − 1/(μ_r R r_n) from σ = 0, monotone as for a trust region); a contact with a
+// rolling axis a (NscdContact::rolling_axis) takes m = m_a a, the stick value
+// −aᵀ w_free / aᵀ W_r a clamped to ± μ_r R r_n. Couples start from the caller's couple
+// warm start (else 0). A solve is converged only once the couples satisfy their law too:
+// with a measure that computes the Siconos error, the rolling law's natural-map residual
+// written as the Siconos error writes Coulomb's (the couple as the impulse m / R at the
+// rolling radius, the rolling velocity as the surface speed w R, ρ = 1),
+//     sqrt(Σ_c |m_c/R_c − proj_{D_c}(m_c/R_c − R_c w_c)|²) ≤ tolerance × max(‖q‖, ‖r‖),
+// D_c the disc of radius μ_r r_n; with `increment`, the couples' increment in the last
+// sweep at most tolerance × the bounds' norm. (Measured against |m| itself the test
+// never passed where the couples are ~0: a box at rest hit the sweep cap every step;
+// relative to the bounds' norm it asked 1/μ_r times the accuracy of Coulomb's law: the
+// 500-grain deposit took 180–370 sweeps per step while it landed, against 8–15 now;
+// docs/core_nscd.md, "Rolling resistance".) Stick
 // solves hold couples as they are and would leave them one update behind, so method
 // subspace makes none when any contact has a rolling resistance. A sphere (a point swept
 // by r, R = r) on a plane decelerates at (5/7) μ_r g while it rolls and rests on an
@@ -269,9 +280,13 @@ struct ContactSolution {
 // (e.g. the last step's impulses on persistent contacts, zero on new ones), applied to the
 // operator before the first sweep. InvalidArgument("warm_start", ...) on a size mismatch.
 // backoff: the state carried between the solves of a run (method subspace), or nullptr.
+// couple_warm_start: empty, or one rolling couple per contact (t1, t2 components),
+// applied with the impulses; entries of contacts without rolling resistance (all of them
+// on an operator other than solve_nscd_step's) are ignored.
 ContactSolution solve_frictional_contact(ContactOperator& op, const NscdOptions& options,
                                          const std::vector<Eigen::Vector3d>& warm_start = {},
-                                         StickSolveBackoff* backoff = nullptr);
+                                         StickSolveBackoff* backoff = nullptr,
+                                         const std::vector<Eigen::Vector2d>& couple_warm_start = {});
 
 // Siconos error of impulses r on an operator in the state r (see the top of this file).
 double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses);
@@ -299,10 +314,16 @@ struct NscdContact {
   Eigen::Vector3d velocity_offset = Eigen::Vector3d::Zero();
   double friction = 0.0;  // μ ≥ 0
   double gap = 0.0;       // g at the step start (< 0: overlap)
-  // Rolling resistance (not in the paper; solve_nscd_step only): the largest rolling
-  // couple per unit normal impulse, μ_r R ≥ 0 (a length; 0: none). See "Rolling
-  // resistance" below.
-  double rolling = 0.0;
+  // Rolling resistance (not in the paper; solve_nscd_step only; "Rolling resistance"
+  // above): the largest rolling couple is μ_r R r_n, with μ_r = rolling_friction ≥ 0
+  // (0: none) and R = rolling_radius > 0 (a length: the radius the bodies roll on).
+  double rolling_friction = 0.0;
+  double rolling_radius = 0.0;
+  // Zero: the couple may point anywhere in the tangent plane. Else a unit vector of the
+  // tangent plane (world frame): the couple only along it, |m| ≤ μ_r R r_n (a pair whose
+  // points resist rolling about the other axis themselves, e.g. an edge on a face; see
+  // rolling_axes in core/nscd/grain_step.h).
+  Eigen::Vector3d rolling_axis = Eigen::Vector3d::Zero();
 };
 
 struct NscdStep {
@@ -325,7 +346,8 @@ struct NscdStepResult {
 // infinite masses; negative inverse mass; μ < 0; non-finite data).
 NscdStepResult solve_nscd_step(const NscdStep& step, const NscdOptions& options,
                                const std::vector<Eigen::Vector3d>& warm_start = {},
-                               StickSolveBackoff* backoff = nullptr);
+                               StickSolveBackoff* backoff = nullptr,
+                               const std::vector<Eigen::Vector2d>& couple_warm_start = {});
 
 // The operator solve_nscd_step sweeps on (u_c = H_c V + s_c e_n from the bodies'
 // velocities V, W never formed), for tests and benchmarks of the sweep itself; the same
