@@ -117,9 +117,9 @@ struct SleepOptions {
 // edge, a face on a face none. Couples about an axis the points also hold are redundant
 // with the normal impulses, and Gauss–Seidel drifts along that redundancy: a box resting
 // face down hit the 1000-sweep cap on every step, and the 500-grain deposit did on some
-// steps from t = 3, until the couples were restricted (docs/core_nscd.md, "Rolling
-// resistance"). The axes e1, e2 are the principal axes of the points' spread in the
-// plane normal to `normal`.
+// steps from t = 3, until the couples were restricted (docs/core_nscd.md, "Session 26:
+// rolling resistance at the cost of the friction it sits beside"). The axes are the
+// principal axes of the points' spread in the plane normal to `normal`.
 struct RollingAxes {
   int count = 2;                                   // free axes: 0, 1 or 2
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // count 1: the free axis (unit, tangent)

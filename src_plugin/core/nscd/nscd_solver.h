@@ -120,7 +120,8 @@
 // never passed where the couples are ~0: a box at rest hit the sweep cap every step;
 // relative to the bounds' norm it asked 1/μ_r times the accuracy of Coulomb's law: the
 // 500-grain deposit took 180–370 sweeps per step while it landed, against 8–15 now;
-// docs/core_nscd.md, "Rolling resistance".) Stick
+// docs/core_nscd.md, "Session 26: rolling resistance at the cost of the friction it sits
+// beside".) Stick
 // solves hold couples as they are and would leave them one update behind, so method
 // subspace makes none when any contact has a rolling resistance. A sphere (a point swept
 // by r, R = r) on a plane decelerates at (5/7) μ_r g while it rolls and rests on an
