@@ -223,6 +223,7 @@ TEST(GrainStep, WarmStartReproducesTheStoredImpulse) {
   // a stored point farther than R_max/4 from every new point is not used
   GrainImpulseMemory far;
   far.add({-1, 3}, {Eigen::Vector3d(5, 5, 0), Eigen::Vector3d(0, 0, 1)});
+  far.commit();
   const GrainStepProblem cold = assemble_grain_step(grains, library, walls, kH, tight(), far);
   for (const Eigen::Vector3d& w : cold.warm_start) EXPECT_EQ(w, Eigen::Vector3d::Zero());
   // warm_start off: no start vector

@@ -86,23 +86,39 @@ RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Ei
 }
 
 void GrainImpulseMemory::commit() {
-  if (sorted_) return;
-  std::stable_sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) { return x.pair < y.pair; });
-  sorted_ = true;
+  if (committed_) return;
+  // a stable sort by pair: the packed keys (pair, index added) sorted, the entries moved
+  // once (sorting the entries themselves moved ~150-byte records log n times)
+  std::vector<std::pair<PairKey, std::size_t>> order(entries_.size());
+  bool sorted = true;
+  for (std::size_t i = 0; i < entries_.size(); i++) {
+    order[i] = {entries_[i].pair, i};
+    sorted = sorted && (i == 0 || !(entries_[i].pair < entries_[i - 1].pair));
+  }
+  if (!sorted) {
+    std::sort(order.begin(), order.end());
+    std::vector<Entry> by_pair;
+    by_pair.reserve(entries_.size());
+    for (const auto& key : order) by_pair.push_back(entries_[key.second]);
+    entries_ = std::move(by_pair);
+  }
+  keys_.resize(entries_.size());
+  for (std::size_t i = 0; i < entries_.size(); i++) keys_[i] = entries_[i].pair;
+  committed_ = true;
 }
 
 const std::vector<GrainImpulseMemory::Entry>& GrainImpulseMemory::points() const {
-  if (!sorted_) throw std::logic_error("GrainImpulseMemory: points added since the last commit");
+  if (!committed_) throw std::logic_error("GrainImpulseMemory: points added since the last commit");
   return entries_;
 }
 
 const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pair, const Eigen::Vector3d& position,
                                                                double radius2) const {
   const std::vector<Entry>& all = points();
-  auto it = std::lower_bound(all.begin(), all.end(), pair, [](const Entry& e, const PairKey& p) { return e.pair < p; });
   const Impulse* nearest = nullptr;
   double best = radius2;
-  for (; it != all.end() && it->pair == pair; ++it) {
+  for (auto it = all.begin() + (std::lower_bound(keys_.begin(), keys_.end(), pair) - keys_.begin());
+       it != all.end() && it->pair == pair; ++it) {
     const double d2 = (it->impulse.position - position).squaredNorm();
     if (d2 < best) {
       best = d2;
@@ -187,16 +203,17 @@ void restrict_rolling(std::vector<GrainContactPoint>& points, size_t begin) {
 // Step 3: the points from the top down (descending z, ties in the order given), with
 // their rows and warm starts.
 void sort_top_down(GrainStepProblem& problem) {
-  std::vector<size_t> order(problem.points.size());
-  for (size_t c = 0; c < order.size(); c++) order[c] = c;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return problem.points[a].position.z() > problem.points[b].position.z();
-  });
+  // the keys (−z, index) sorted: the stable sort by descending z, on packed keys
+  std::vector<std::pair<double, size_t>> order(problem.points.size());
+  for (size_t c = 0; c < order.size(); c++) order[c] = {-problem.points[c].position.z(), c};
+  std::sort(order.begin(), order.end());
   std::vector<GrainContactPoint> points;
   std::vector<Eigen::Vector3d> warm;
   std::vector<Eigen::Vector2d> warm_couples;
   points.reserve(order.size());
-  for (size_t c : order) {
+  warm.reserve(problem.warm_start.size());
+  warm_couples.reserve(problem.couple_warm_start.size());
+  for (const auto& [minus_z, c] : order) {
     points.push_back(problem.points[c]);
     if (!problem.warm_start.empty()) warm.push_back(problem.warm_start[c]);
     if (!problem.couple_warm_start.empty()) warm_couples.push_back(problem.couple_warm_start[c]);
@@ -766,6 +783,9 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   });
 
   std::vector<GrainContactPoint>& points = problem.points;
+  size_t found_points = 0;
+  for (const NarrowPhaseResult& f : found) found_points += f.points.size();
+  points.reserve(found_points);
   if (pairs && !reuse && n > 0) pairs->begin_build();
   for (std::size_t i = 0; i < candidates.size(); i++) {
     const NarrowPhaseCandidate& c = candidates[i];
@@ -783,7 +803,22 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   if (pairs && !reuse && n > 0) pairs->end_build(grains, library, activation);
   if (!problem.sweep_radius.empty()) restrict_rolling(points, 0);
 
-  // 3. top-down order (descending z of the point, ties in detection order)
+  // 4. warm start from the nearest stored point of the same pair within R_max / 4,
+  // recalled before step 3 (in detection order, close to the memory's pair order)
+  if (options.warm_start) {
+    problem.warm_start.assign(points.size(), Eigen::Vector3d::Zero());
+    if (!problem.sweep_radius.empty()) problem.couple_warm_start.assign(points.size(), Eigen::Vector2d::Zero());
+    const double near2 = std::pow(0.25 * largest_radius, 2);
+    for (size_t c = 0; c < points.size(); c++)
+      if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
+        problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
+        if (!problem.couple_warm_start.empty())
+          problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
+      }
+  }
+
+  // 3. top-down order (descending z of the point, ties in detection order), the warm
+  // starts with them
   sort_top_down(problem);
 
   // the frozen points: last step's points of the pairs that sleep now
@@ -803,18 +838,6 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     problem.walls = walls;
   }
 
-  // 4. warm start from the nearest stored point of the same pair within R_max / 4
-  if (options.warm_start) {
-    problem.warm_start.assign(points.size(), Eigen::Vector3d::Zero());
-    if (!problem.sweep_radius.empty()) problem.couple_warm_start.assign(points.size(), Eigen::Vector2d::Zero());
-    const double near2 = std::pow(0.25 * largest_radius, 2);
-    for (size_t c = 0; c < points.size(); c++)
-      if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
-        problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
-        if (!problem.couple_warm_start.empty())
-          problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
-      }
-  }
   return problem;
 }
 

@@ -176,10 +176,11 @@ class GrainImpulseMemory {
   const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2) const;
   void clear() {  // the impulses; the backoff stays
     entries_.clear();
-    sorted_ = true;
+    keys_.clear();
+    committed_ = true;
   }
   void add(const PairKey& pair, const Impulse& impulse) {
-    sorted_ = sorted_ && (entries_.empty() || !(pair < entries_.back().pair));
+    committed_ = false;
     entries_.push_back({pair, impulse});
   }
   // sorts the points added by pair, a pair's points in the order they were added
@@ -190,7 +191,8 @@ class GrainImpulseMemory {
 
  private:
   std::vector<Entry> entries_;
-  bool sorted_ = true;
+  std::vector<PairKey> keys_;  // entries_[i].pair, packed for recall's binary search
+  bool committed_ = true;
 };
 
 // A contact point of the step: the solver's row and where it came from.
