@@ -21,6 +21,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "core/common/stable_order.h"
 #include "core/common/validation.h"
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
@@ -549,9 +550,12 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     mine.insert(mine.end(), sleep_state_[i], sleep_state_[i] + kSleepState);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
-  std::vector<wiregrain::GrainState> grains(all.size() / kGrainRecord);
+  // in tag order, each grain built once in place
+  const std::vector<size_t> by_tag =
+      wiregrain::stable_order(all.size() / kGrainRecord, [&](size_t k) { return all[k * kGrainRecord]; });
+  std::vector<wiregrain::GrainState> grains(by_tag.size());
   for (size_t k = 0; k < grains.size(); k++) {
-    const double *r = &all[k * kGrainRecord];
+    const double *r = &all[by_tag[k] * kGrainRecord];
     wiregrain::GrainState &g = grains[k];
     g.tag = (long)r[0];
     g.shape = (int)r[1];
@@ -570,8 +574,6 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.load = vec3(r + 33);
     g.load_moment = vec3(r + 36);
   }
-  std::sort(grains.begin(), grains.end(),
-            [](const wiregrain::GrainState &a, const wiregrain::GrainState &b) { return a.tag < b.tag; });
   // every rank holds the same grains, so error->all is safe here
   for (const wiregrain::GrainState &g : grains) {
     const char *what = !(g.position.allFinite() && g.orientation.coeffs().allFinite()) ? "position or orientation"

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/common/errors.h"
+#include "core/common/stable_order.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
@@ -13,7 +14,13 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
                        double segment_reach)
     : grains_(std::move(grains)), library_(&library), segment_reach_(segment_reach),
       grid_(BroadPhaseGrid::unbounded(1.0)) {
-  std::stable_sort(grains_.begin(), grains_.end(), [](const HeldGrain& a, const HeldGrain& b) { return a.tag < b.tag; });
+  {  // in tag order
+    const std::vector<std::size_t> order = stable_order(grains_.size(), [&](std::size_t k) { return grains_[k].tag; });
+    std::vector<HeldGrain> by_tag;
+    by_tag.reserve(grains_.size());
+    for (std::size_t k : order) by_tag.push_back(std::move(grains_[k]));
+    grains_ = std::move(by_tag);
+  }
   if (!(segment_reach > 0.0) || !std::isfinite(segment_reach))
     throw InvalidArgument("segment_reach", "segment_reach must be finite and > 0, got " + format_number(segment_reach));
   double largest = 0.0;

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "core/common/errors.h"
+#include "core/common/stable_order.h"
 #include "core/geometry/broad_phase.h"
 #include "core/geometry/contact_geometry.h"
 #include "core/nscd/rigid_body.h"
@@ -87,21 +88,11 @@ RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Ei
 
 void GrainImpulseMemory::commit() {
   if (committed_) return;
-  // a stable sort by pair: the packed keys (pair, index added) sorted, the entries moved
-  // once (sorting the entries themselves moved ~150-byte records log n times)
-  std::vector<std::pair<PairKey, std::size_t>> order(entries_.size());
-  bool sorted = true;
-  for (std::size_t i = 0; i < entries_.size(); i++) {
-    order[i] = {entries_[i].pair, i};
-    sorted = sorted && (i == 0 || !(entries_[i].pair < entries_[i - 1].pair));
-  }
-  if (!sorted) {
-    std::sort(order.begin(), order.end());
-    std::vector<Entry> by_pair;
-    by_pair.reserve(entries_.size());
-    for (const auto& key : order) by_pair.push_back(entries_[key.second]);
-    entries_ = std::move(by_pair);
-  }
+  const std::vector<std::size_t> order = stable_order(entries_.size(), [&](std::size_t i) { return entries_[i].pair; });
+  std::vector<Entry> by_pair;
+  by_pair.reserve(entries_.size());
+  for (std::size_t i : order) by_pair.push_back(entries_[i]);
+  entries_ = std::move(by_pair);
   keys_.resize(entries_.size());
   for (std::size_t i = 0; i < entries_.size(); i++) keys_[i] = entries_[i].pair;
   committed_ = true;
@@ -203,17 +194,15 @@ void restrict_rolling(std::vector<GrainContactPoint>& points, size_t begin) {
 // Step 3: the points from the top down (descending z, ties in the order given), with
 // their rows and warm starts.
 void sort_top_down(GrainStepProblem& problem) {
-  // the keys (−z, index) sorted: the stable sort by descending z, on packed keys
-  std::vector<std::pair<double, size_t>> order(problem.points.size());
-  for (size_t c = 0; c < order.size(); c++) order[c] = {-problem.points[c].position.z(), c};
-  std::sort(order.begin(), order.end());
+  const std::vector<size_t> order =
+      stable_order(problem.points.size(), [&](size_t c) { return -problem.points[c].position.z(); });
   std::vector<GrainContactPoint> points;
   std::vector<Eigen::Vector3d> warm;
   std::vector<Eigen::Vector2d> warm_couples;
   points.reserve(order.size());
   warm.reserve(problem.warm_start.size());
   warm_couples.reserve(problem.couple_warm_start.size());
-  for (const auto& [minus_z, c] : order) {
+  for (size_t c : order) {
     points.push_back(problem.points[c]);
     if (!problem.warm_start.empty()) warm.push_back(problem.warm_start[c]);
     if (!problem.couple_warm_start.empty()) warm_couples.push_back(problem.couple_warm_start[c]);
