@@ -644,11 +644,16 @@ class Capstan(DeckTestCase):
                      shape=f"sphere {self.RADIUS}", sweep=None, density=1e6, box=(-3, 3, -3, 3, -3, 3),
                      files={"wire.txt": polyline})
 
-    def make_deck(self, body):
+    def make_deck(self, body, nscd_every=1):
         """The deck that reads the scene and runs `body` (which defines fix wg)."""
-        return deck("fix             nscd grains nscd/polyhedra\n" + body)
+        every = "" if nscd_every == 1 else f" every {nscd_every}"
+        return deck(f"fix             nscd grains nscd/polyhedra{every}\n" + body)
 
-    def slip_ratio(self, wrap):
+    def slip_ratio(self, wrap, timestep=1e-4, scheme="gear5", nscd_every=1):
+        """The ratio T₂/T₁ at gross slip, and where the held end starts to move, against
+        e^{μθ}; the tests run Table 1's Δt_SP = 1e-4 with Gear-5 and the grain solved every
+        step, bench/capstan_precision.py other time steps and integrators (the ramps and
+        the thermo spacing are in time units, so the same at every step)."""
         text, chord, tangent0, tangent1 = self.polyline(wrap)
         made = self.make_scene(text, chord)
         target = np.exp(self.MU * wrap)
@@ -659,15 +664,16 @@ class Capstan(DeckTestCase):
         t1 = self.T1
         # T₁ pulls the first bead (atom 2: the grain is atom 1) back along the first leg,
         # T₂ pulls the last bead on along the last
+        settle, ramp, every = (int(round(t / timestep)) for t in (2.0, 10.0, 0.01))
         r = run(self.make_deck(f"""
 variable        last equal count(all)
 group           pulled1 id 2
 group           pulled2 id ${{last}}
 fix             elastic wire wire/elastic m_rot 0
-fix             integr wire nve/gear
+fix             integr wire nve/gear scheme {scheme}
 fix             wg wire wire/grain grains mu_s {self.MU} mu_d {self.MU}
 fix             calm wire viscous 0.0002
-timestep        1e-4
+timestep        {timestep!r}
 variable        ratio equal 1.0+{fast!r}*0.5*step*dt
 variable        f1x equal {-t1 * tangent0[0]!r}
 variable        f1z equal {-t1 * tangent0[1]!r}
@@ -679,12 +685,13 @@ compute         x1 pulled1 reduce max x
 compute         z1 pulled1 reduce max z
 thermo_style    custom step v_ratio f_wg[1] f_wg[8] c_x1 c_z1
 thermo_modify   format float %.10g
-thermo          100
-run             20000
+thermo          {every}
+run             {settle}
 variable        ratio equal {0.8 * target!r}+{slow!r}*(step*dt-2.0)
-run             100000
-"""), workdir=made.workdir)
+run             {ramp}
+""", nscd_every), workdir=made.workdir)
         self.assertRanCleanly(r)
+        self.last_output = r.output  # for the benchmark's loop times
         self.assertTrue("1 atoms in group pulled2" in r.output, "the last bead was not found")
         t = r.thermo()
         contacts, sliding = t["wg[1]"], t["wg[8]"]
