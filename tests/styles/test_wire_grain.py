@@ -644,16 +644,15 @@ class Capstan(DeckTestCase):
                      shape=f"sphere {self.RADIUS}", sweep=None, density=1e6, box=(-3, 3, -3, 3, -3, 3),
                      files={"wire.txt": polyline})
 
-    def make_deck(self, body, nscd_every=1):
+    def make_deck(self, body):
         """The deck that reads the scene and runs `body` (which defines fix wg)."""
-        every = "" if nscd_every == 1 else f" every {nscd_every}"
-        return deck(f"fix             nscd grains nscd/polyhedra{every}\n" + body)
+        return deck("fix             nscd grains nscd/polyhedra\n" + body)
 
-    def slip_ratio(self, wrap, timestep=1e-4, scheme="gear5", nscd_every=1):
+    def slip_ratio(self, wrap, timestep=1e-4, scheme="gear5"):
         """The ratio T₂/T₁ at gross slip, and where the held end starts to move, against
-        e^{μθ}; the tests run Table 1's Δt_SP = 1e-4 with Gear-5 and the grain solved every
-        step, bench/capstan_precision.py other time steps and integrators (the ramps and
-        the thermo spacing are in time units, so the same at every step)."""
+        e^{μθ}; the tests run Table 1's Δt_SP = 1e-4 with Gear-5, bench/capstan_precision.py
+        other time steps and integrators (the ramps and the thermo spacing are in time
+        units, so the same at every step)."""
         text, chord, tangent0, tangent1 = self.polyline(wrap)
         made = self.make_scene(text, chord)
         target = np.exp(self.MU * wrap)
@@ -689,7 +688,7 @@ thermo          {every}
 run             {settle}
 variable        ratio equal {0.8 * target!r}+{slow!r}*(step*dt-2.0)
 run             {ramp}
-""", nscd_every), workdir=made.workdir)
+"""), workdir=made.workdir)
         self.assertRanCleanly(r)
         self.last_output = r.output  # for the benchmark's loop times
         self.assertTrue("1 atoms in group pulled2" in r.output, "the last bead was not found")
