@@ -223,7 +223,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 17;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 18;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -797,8 +797,10 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k == 14 + (int)wall_forces_.size()) return projected_depth_;
   // sleeping: grains asleep after the last solve, woken in it, frozen contact points,
   // sleepers solved in its equilibrium checks
-  // last: the stick solves' factorisations since the fix was made
+  // the stick solves' factorisations since the fix was made; last, the pair cache's kept
+  // pairs skipped as still apart
   if (k == 22 + (int)wall_forces_.size()) return stick_solves_[2];
+  if (k == 23 + (int)wall_forces_.size()) return core_->pairs ? double(core_->pairs->skipped()) : 0.0;
   if (k >= 19 + (int)wall_forces_.size()) return clocks_[k - 19 - (int)wall_forces_.size()];
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs

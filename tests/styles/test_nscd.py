@@ -568,13 +568,15 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
 class PairReuse(DeckTestCase):
     # keyword skin: the grain pairs kept between steps while no grain moved more than the
     # skin allows (core/nscd/grain_pairs.h); every pair within the activation distance is
-    # among them, visited in the same order, so a pour into a box follows the trajectory
-    # of a search every step (skin 0) to the last bit, with 1 or 2 ranks
+    # among them, visited in the same order, and a kept pair is skipped only while its gap
+    # minus how far its grains moved stays beyond the activation distance, so a pour into
+    # a box follows the trajectory of a search every step (skin 0) to the last bit, with 1
+    # or 2 ranks
     def test_pour_follows_the_full_search_to_the_bit(self):
         made = heap_of_30()
         self.assertRanCleanly(made)
         body = RanksAndRestart.BODY.replace("EXTRA", "") + """
-thermo_style    custom step f_nscd[3] f_nscd[27] f_nscd[28]
+thermo_style    custom step f_nscd[3] f_nscd[27] f_nscd[28] f_nscd[39]
 thermo          1500
 run             1500
 """
@@ -586,14 +588,15 @@ run             1500
             self.assertRanCleanly(r)
             states[skin] = read_dump(made.path(f"dump_{skin}.h"))
             t = r.thermo()
-            counts[skin] = (t["nscd[27]"][-1], t["nscd[28]"][-1])
-        print(f"\nskin 0.1: {counts[0.1][0]:.0f} searches, {counts[0.1][1]:.0f} reuses; "
-              f"skin 0.5 (2 ranks): {counts[0.5][0]:.0f}, {counts[0.5][1]:.0f}")
+            counts[skin] = (t["nscd[27]"][-1], t["nscd[28]"][-1], t["nscd[39]"][-1])
+        print(f"\nskin 0.1: {counts[0.1][0]:.0f} searches, {counts[0.1][1]:.0f} reuses, {counts[0.1][2]:.0f} kept "
+              f"pairs skipped; skin 0.5 (2 ranks): {counts[0.5][0]:.0f}, {counts[0.5][1]:.0f}, {counts[0.5][2]:.0f}")
         for skin in (0.1, 0.5):
             for column in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz"):
                 np.testing.assert_array_equal(states[skin][column], states[0][column], err_msg=f"skin {skin} {column}")
             self.assertGreater(counts[skin][1], counts[skin][0])  # mostly reused
-        self.assertEqual(counts[0], (0, 0))
+            self.assertGreater(counts[skin][2], counts[skin][1])  # more than one kept pair apart per reuse
+        self.assertEqual(counts[0], (0, 0, 0))
 
 
 class Sleeping(DeckTestCase):

@@ -18,14 +18,15 @@ WireGrainPairCache::WireGrainPairCache(double skin) : skin_(skin) {
 void WireGrainPairCache::hold(const HeldGrains& held) {
   if (reference_.size() != static_cast<std::size_t>(held.size())) return reset(held);
   double bound = 0.0;
+  grain_moved_.resize(held.size());
   for (int k = 0; k < held.size(); ++k) {
     const HeldGrain& g = held.grain(k);
     const auto it = reference_.find(g.tag);
     if (it == reference_.end() || it->second.shape != g.shape || it->second.bounding_radius != held.bounding_radius(k))
       return reset(held);
     const Pose& ref = it->second;
-    bound = std::max(bound, rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation,
-                                               ref.bounding_radius));
+    grain_moved_[k] = rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation, ref.bounding_radius);
+    bound = std::max(bound, grain_moved_[k]);
   }
   grain_bound_ = bound;
   if (!(bound < 0.5 * skin_)) reset(held);  // also a non-finite pose
@@ -35,6 +36,7 @@ void WireGrainPairCache::reset(const HeldGrains& held) {
   ++resets_;
   ++epoch_;
   grain_bound_ = 0.0;
+  grain_moved_.assign(held.size(), 0.0);
   reference_.clear();
   entries_.clear();
   for (int k = 0; k < held.size(); ++k) {

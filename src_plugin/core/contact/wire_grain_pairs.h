@@ -21,17 +21,20 @@
 // rebuilt. Grains move only when fix nscd/polyhedra solves, so D is updated once per held
 // grain set (hold()); segments are checked at every visit.
 // Within a valid entry a pair is not evaluated while its gap at the build exceeds the
-// motion bound since, g_build > d_seg + D(now) + D(build): it is still apart (its surfaces
-// moved at most that far towards each other), as its evaluation would find. Superquadric
-// pairs are always evaluated: their contact solve starts from the last evaluation's.
+// motion bound since, taken for its own grain k, g_build > d_seg + D_k(now) + D_k(build)
+// (D_k the bound above for grain k alone, ≤ D): it is still apart (its surfaces moved at
+// most that far towards each other), as its evaluation would find. Superquadric pairs are
+// always evaluated: their contact solve starts from the last evaluation's.
 #pragma once
 
+#include <algorithm>
 #include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/common/errors.h"
 #include "core/contact/held_grains.h"
 
 namespace wiregrain {
@@ -47,6 +50,8 @@ class WireGrainPairCache {
   void hold(const HeldGrains& held);
   // D of the last hold()
   double grain_motion_bound() const { return grain_bound_; }
+  // D_k of the last hold(), k an index of its HeldGrains
+  double grain_motion_bound(int k) const { return grain_moved_[k]; }
 
   // Calls evaluate(k, shift, exact_gap_below) for every grain of `held` (the set of the
   // last hold()) that may touch the segment [x0, x1] of radius r_w, in the order of
@@ -57,12 +62,15 @@ class WireGrainPairCache {
   template <class Evaluate>
   void for_each_pair(long key, const HeldGrains& held, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                      double wire_radius, Evaluate evaluate) {
+    if (static_cast<int>(grain_moved_.size()) != held.size())
+      throw InvalidArgument("held", "the pair cache was not given this set of grains (hold()) before its pairs");
     Entry& entry = entries_[key];
     const double moved = motion_since_build(entry, x0, x1, wire_radius);
     if (moved < skin_) {  // the entry is valid
+      const double moved_segment = std::max((x0 - entry.x0).norm(), (x1 - entry.x1).norm());
       for (const Pair& p : entry.pairs) {
         const int k = held.index_of(p.tag);
-        if (p.gap > moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
+        if (p.gap > moved_segment + grain_moved_[k] + p.grain_moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
           ++skipped_;
           continue;
         }
@@ -79,7 +87,7 @@ class WireGrainPairCache {
     entry.pairs.clear();
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
       const double gap = evaluate(k, shift, skin_);
-      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap});
+      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap, grain_moved_[k]});
     });
   }
 
@@ -93,7 +101,8 @@ class WireGrainPairCache {
   struct Pair {
     long tag;
     Eigen::Vector3d shift;
-    double gap;  // exact, at the entry's build
+    double gap;          // exact, at the entry's build
+    double grain_moved;  // D_k at the entry's build
   };
   struct Entry {
     long epoch = -1;           // the reference it was built against
@@ -111,6 +120,7 @@ class WireGrainPairCache {
   double skin_;
   long epoch_ = 0;
   double grain_bound_ = 0.0;
+  std::vector<double> grain_moved_;           // D_k, in HeldGrains' order
   std::unordered_map<long, Pose> reference_;  // grain tag → pose at the last reset
   std::unordered_map<long, Entry> entries_;   // segment key → entry
   long rebuilds_ = 0, resets_ = 0, skipped_ = 0;

@@ -16,15 +16,16 @@ GrainPairCache::GrainPairCache(double skin) : skin_(skin) {
 }
 
 bool GrainPairCache::valid(const std::vector<GrainState>& grains, const ShapeLibrary& library,
-                           double activation) const {
+                           double activation) {
   if (!built_ || grains.size() != reference_.size()) return false;
+  moved_.resize(grains.size());
   double moved = 0.0;
   for (std::size_t k = 0; k < grains.size(); ++k) {
     const GrainState& g = grains[k];
     const Pose& ref = reference_[k];
     if (g.tag != ref.tag || g.shape != ref.shape || g.shape >= library.size()) return false;
-    moved = std::max(moved, rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation,
-                                               ref.bounding_radius));
+    moved_[k] = rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation, ref.bounding_radius);
+    moved = std::max(moved, moved_[k]);
   }
   return 2.0 * moved + (activation - activation_) < skin_;  // false for NaN
 }

@@ -727,8 +727,9 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   const double skin = pairs && !reuse ? pairs->skin() : 0.0;
   if (reuse) {
     pairs->count_reuse();
-    for (const auto& [a, b] : pairs->pairs())
-      if (!(asleep(a) && asleep(b))) candidates.push_back({a, b, -1, false});
+    for (const GrainPairCache::KeptPair& p : pairs->pairs())
+      if (!(asleep(p.a) && asleep(p.b)) && !pairs->still_apart(p, activation))
+        candidates.push_back({p.a, p.b, -1, false});
   } else if (n > 0) {
     BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
     for (const GrainState& g : grains) grid.insert(g.position);
@@ -784,7 +785,8 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
                                     walls[c.wall].velocity, -c.wall - 1, problem));
       continue;
     }
-    if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin)) pairs->keep(c.a, c.b);
+    if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin))
+      pairs->keep(c.a, c.b, c.frozen ? -std::numeric_limits<double>::infinity() : found[i].gap);
     for (const ContactPoint& p : found[i].points)
       points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
                                   Eigen::Vector3d::Zero(), grains[c.a].tag, problem));
