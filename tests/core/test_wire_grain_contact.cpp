@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <string>
 
+#include "core/common/errors.h"
 #include "core/contact/wire_grain_contact.h"
 #include "wire_contact_law.h"
 
@@ -302,4 +305,93 @@ TEST(WireOnStockSphere, AnAxisThroughTheCentreGetsAFiniteForceAcrossTheSegment) 
   EXPECT_NEAR(c.normal.dot(s.x1 - s.x0), 0.0, 1e-15);
   EXPECT_NEAR(c.normal_force, 15.7 * (1.0 + kWireRadius), 1e-12);
   EXPECT_TRUE((c.force_bead0 + c.force_bead1).allFinite());
+}
+
+// GJK's early exit for polyhedra (ContactOptions::exit_gap, session 28): with exit gap g,
+// a segment whose gap is at most g gets exactly the full query's answer (every field,
+// the same bits); a farther one either that answer or a lower bound of its gap above g
+// (method gjk_far), never above the true gap. The wire contact's force and spring do not
+// depend on exact_gap_below. Negative and NaN exit gaps are rejected.
+TEST(WireOnRandomHull, EarlyExitChangesOnlyPairsApartAndBoundsTheirGap) {
+  std::mt19937_64 rng(28);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto unit = [&] {
+    Vector3d d;
+    do d = Vector3d(u(rng), u(rng), u(rng));
+    while (d.squaredNorm() > 1.0 || d.squaredNorm() < 1e-4);
+    return Vector3d(d.normalized());
+  };
+  int exits = 0, exact = 0, touching = 0;
+  for (int shape = 0; shape < 20; ++shape) {
+    const ConvexShape hull = ConvexShape::random_ellipsoid(rng, 20, 0.5, 0.8, 0.6, 0.05);
+    for (int trial = 0; trial < 50; ++trial) {
+      const Eigen::Quaterniond q(u(rng), u(rng), u(rng), u(rng) + 1.5);
+      const PosedShape grain(hull, Vector3d(u(rng), u(rng), u(rng)), q.normalized());
+      const Vector3d dir = unit();
+      const Vector3d mid = grain.position() + (0.3 + 0.5 * (u(rng) + 1.0)) * unit();
+      const double length = 0.2 + 0.2 * (u(rng) + 1.0), r_w = 0.05;
+      const Vector3d x0 = mid - 0.5 * length * dir, x1 = mid + 0.5 * length * dir;
+      for (const double exit_gap : {0.0, 0.1}) {
+        ContactOptions full_options, early_options;
+        full_options.feature_gap_limit = early_options.feature_gap_limit = 0.0;  // as the wire contact asks
+        early_options.exit_gap = exit_gap;
+        const SegmentContact full = segment_contact(grain, x0, x1, r_w, full_options);
+        const SegmentContact early = segment_contact(grain, x0, x1, r_w, early_options);
+        if (early.method == DistanceMethod::gjk_far) {
+          ++exits;
+          EXPECT_GT(early.gap, exit_gap);
+          EXPECT_LE(early.gap, full.gap + 1e-12);
+          EXPECT_GT(full.gap, exit_gap);
+        } else {
+          ++exact;
+          EXPECT_EQ(early.method, full.method);
+          EXPECT_EQ(early.distance, full.distance);
+          EXPECT_EQ(early.gap, full.gap);
+          EXPECT_EQ(early.normal, full.normal);
+          EXPECT_EQ(early.point_on_core, full.point_on_core);
+          EXPECT_EQ(early.point_on_segment, full.point_on_segment);
+          EXPECT_EQ(early.t, full.t);
+          EXPECT_EQ(early.t_begin, full.t_begin);
+          EXPECT_EQ(early.t_end, full.t_end);
+          EXPECT_EQ(early.gjk_iterations, full.gjk_iterations);
+        }
+        if (full.gap <= exit_gap) EXPECT_NE(early.method, DistanceMethod::gjk_far);
+      }
+      WireSegmentState w;
+      w.x0 = x0;
+      w.x1 = x1;
+      w.v0 = Vector3d(0.1, 0.0, 0.0);
+      w.v1 = Vector3d(0.0, -0.2, 0.0);
+      w.radius = r_w;
+      w.m0 = w.m1 = 0.01;
+      GrainMotion motion;
+      motion.mass = 2.0;
+      TangentialHistory h1, h2;
+      const WireGrainContact a = wire_grain_contact(law(0.3), grain, motion, w, 1e-3, h1);
+      const WireGrainContact b = wire_grain_contact(law(0.3), grain, motion, w, 1e-3, h2, 0.0);
+      ASSERT_EQ(a.touching, b.touching);
+      touching += a.touching;
+      EXPECT_EQ(a.force_bead0, b.force_bead0);
+      EXPECT_EQ(a.force_bead1, b.force_bead1);
+      EXPECT_EQ(a.torque_grain, b.torque_grain);
+      EXPECT_EQ(h1.spring, h2.spring);
+      if (!b.touching) EXPECT_GT(-b.overlap, 0.0);
+    }
+  }
+  std::printf("early exits %d, exact answers %d, touching pairs %d\n", exits, exact, touching);
+  EXPECT_GT(exits, 200);  // every branch seen
+  EXPECT_GT(exact, 200);
+  EXPECT_GT(touching, 50);
+  const ConvexShape cube = ConvexShape::cube(1.0, 0.1);
+  const PosedShape grain(cube, Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  for (const double bad : {-1.0, std::nan("")}) {
+    ContactOptions options;
+    options.exit_gap = bad;
+    try {
+      segment_contact(grain, Vector3d(2, 0, 0), Vector3d(3, 0, 0), 0.1, options);
+      FAIL() << "accepted exit_gap " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(std::string(e.argument()), "exit_gap");
+    }
+  }
 }

@@ -94,7 +94,7 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
       : g.shape == HeldGrain::kSuperquadric
           ? wire_superquadric_contact(law, PosedSuperquadric(g.superquadric, g.position, g.orientation), g.motion,
                                       moved, dt, history, exact_gap_below, guess)
-          : wire_grain_contact(law, posed(k), g.motion, moved, dt, history);
+          : wire_grain_contact(law, posed(k), g.motion, moved, dt, history, exact_gap_below);
   c.point += shift;
   return c;
 }

@@ -103,8 +103,8 @@ class HeldGrains {
   // The contact of segment `segment` with grain k seen at its image position + shift:
   // evaluated with the segment moved by −shift, the contact point moved back by +shift
   // (forces and torque arms do not depend on the image). The returned gap is exact while
-  // below exact_gap_below, else possibly a lower bound (superquadrics: see
-  // wire_superquadric_contact; the other shapes' gaps are always exact). guess: a
+  // below exact_gap_below, else possibly a lower bound (polyhedra and superquadrics: see
+  // wire_grain_contact, wire_superquadric_contact; a sphere's gap is always exact). guess: a
   // superquadric's warm start, in and out (wire_superquadric_contact); ignored otherwise.
   WireGrainContact contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
                            const WireSegmentState& segment, double dt, TangentialHistory& history,

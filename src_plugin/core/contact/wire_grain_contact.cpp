@@ -28,10 +28,11 @@ double load_point_parameter(const PosedShape& grain, const SegmentContact& g, co
 
 WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
                                     const GrainMotion& motion, const WireSegmentState& segment,
-                                    double dt, TangentialHistory& history) {
+                                    double dt, TangentialHistory& history, double exact_gap_below) {
   WireGrainContact out;
-  ContactOptions only_touching;  // pairs apart need their gap only
+  ContactOptions only_touching;  // pairs apart need their gap only, farther ones a bound
   only_touching.feature_gap_limit = 0.0;
+  only_touching.exit_gap = exact_gap_below;
   out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, only_touching);
   const SegmentContact& g = out.geometry;
   out.overlap = -g.gap;

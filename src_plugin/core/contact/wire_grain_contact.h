@@ -80,10 +80,14 @@ double load_point_parameter(const PosedShape& grain, const SegmentContact& g, co
 // Geometry and force of one (segment, grain) pair. `grain` is posed at its centre of mass
 // (PosedShape::position()). history is the pair's tangential spring; it is advanced only
 // when the pair touches (the caller drops it when the pair separates). dt = 0 evaluates
-// the force without advancing the spring (a setup force call).
+// the force without advancing the spring (a setup force call). exact_gap_below ≥ 0 (+inf:
+// always exact): the geometry's gap is exact while below it; a pair farther apart may get
+// a lower bound of its gap (GJK's early exit, ContactOptions::exit_gap). The force is the
+// same whatever the value: it needs only gap ≤ 0.
 WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
                                     const GrainMotion& motion, const WireSegmentState& segment,
-                                    double dt, TangentialHistory& history);
+                                    double dt, TangentialHistory& history,
+                                    double exact_gap_below = std::numeric_limits<double>::infinity());
 
 // The force of a touching pair whose overlap and normal are in `out`, loaded at t on the
 // axis (the part after the geometry above, for grains of any kind): the body's centre of

@@ -73,6 +73,8 @@ void check_options(const ContactOptions& options) {
   if (!(options.exit_beyond_activation >= 0.0))
     throw InvalidArgument("exit_beyond_activation", "exit_beyond_activation must be >= 0, got " +
                                                         number(options.exit_beyond_activation));
+  if (!(options.exit_gap >= 0.0))
+    throw InvalidArgument("exit_gap", "exit_gap must be >= 0, got " + number(options.exit_gap));
 }
 
 void check_not_nan(const char* name, double value) {
@@ -1177,10 +1179,23 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
   const Vector3d s = end1 - end0;
   const double length = s.norm();
   const double size = configuration_size(grain, mid, 0.5 * length);
-  const GjkResult g = gjk(PolytopeSet{&grain}, S, grain.position() - mid, size, 0.0);
+  // the early exit on the cores' distance (0 to gjk: never)
+  const double exit_distance = std::isinf(options.exit_gap) ? 0.0 : options.exit_gap + grain.sweep_radius() + wire_radius;
+  const GjkResult g = gjk(PolytopeSet{&grain}, S, grain.position() - mid, size, exit_distance);
 
   SegmentContact out;
   out.gjk_iterations = g.iterations;
+  if (g.far) {
+    out.method = DistanceMethod::gjk_far;
+    out.distance = g.distance;
+    out.gap = g.distance - (grain.sweep_radius() + wire_radius);
+    const Vector3d d = mid - grain.position();
+    out.normal = d.squaredNorm() > 0.0 ? Vector3d(d.normalized()) : Vector3d::UnitX();
+    out.point_on_core = grain.position();
+    out.point_on_segment = mid;
+    out.t = out.t_begin = out.t_end = 0.5;
+    return out;
+  }
   const auto param_of = [&](const Vector3d& x) {
     return length > 0.0 ? std::clamp((x - end0).dot(s) / (length * length), 0.0, 1.0) : 0.0;
   };

@@ -165,6 +165,14 @@ struct ContactOptions {
   // gap, and the same points as with 0. The grain pair cache (core/nscd/grain_pairs.h)
   // passes its skin to learn which pairs lie beyond activation + skin.
   double exit_beyond_activation = 0.0;
+  // segment_contact (polytope) only: GJK may stop once the gap (between the swept surfaces)
+  // is known to exceed this (+inf: never, the default; negative or NaN: InvalidArgument);
+  // the gap is then GJK's lower bound (method gjk_far, normal along the centres, t = ½).
+  // A pair with gap ≤ exit_gap gets exactly the result it gets without it (its lower
+  // bounds never exceed it). The wire–grain contact passes the gap below which it needs
+  // exact values (0 for a touching test, the pair cache's skin at a build): most of its
+  // evaluated pairs are apart (session 28).
+  double exit_gap = std::numeric_limits<double>::infinity();
 };
 
 enum class FeatureKind { vertex, edge, face };
