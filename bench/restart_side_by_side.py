@@ -9,7 +9,7 @@ the same machine), for a change that must not alter the column (or to price a se
 
 Each run gets its own directory under --out (a copy of the decks of this checkout and a
 link to the restart) and runs `liggghts -in DECK -var root . -var resume R [--var ...]`
-(run B with --b-var on top). Prints, for A and B and their ratio B / A: the loop time of
+(run B with --b-var on top: they take precedence over --var). Prints, for A and B and their ratio B / A: the loop time of
 each `run`, LIGGGHTS' per-fix times (`modify_timing on`, the deck's default: fix
 nscd/polyhedra, fix wire/grain, the wire–wire pair, fix wire/elastic, fix nve/gear), the
 NSCD clocks the deck prints, and the final observables, with whether they agree to the
@@ -83,7 +83,7 @@ def main():
         prepare(directory, args.restart)
         command = [os.path.abspath(binary), "-in", args.deck, "-var", "root", ".", "-var", "resume", str(args.resume),
                    "-log", "log.liggghts"]
-        for name, value in args.var + extra:
+        for name, value in extra + args.var:  # LIGGGHTS keeps the first -var of a name: B's win
             command += ["-var", name, value]
         with open(os.path.join(directory, "command.txt"), "w") as f:
             f.write(" ".join(command) + "\n")
