@@ -198,6 +198,16 @@ class Column(DeckTestCase):
         # see test_two_ranks)
         self.assert_continues_as_straight(2, 3e-6)
 
+    def test_resume_with_another_step_is_refused(self):
+        # the deck's clock is t = step dt_SP and a restart file keeps no timestep: the
+        # deposit (step 2000 at dt_SP 1e-3) read at 2e-3 would sit at t = 4, after t_relax
+        for resume, message in ((2, "in.column: resume 2: column_deposited.restart is at step 2000, but the "
+                                    "deposition ends at step 1000 with dt_SP 2e-3: resume with the dt_SP"),
+                                (1, "in.column: resume 1: the restart is at step 2500, t = 5 with dt_SP 2e-3, "
+                                    "before the end of the deposition (step 1000) or after t_end 3.5")):
+            resumed = run(COLUMN, variables=dict(TINY, resume=resume, dt_SP="2e-3"), workdir=self.straight.workdir)
+            self.assertStopsWith(resumed, message)
+
     def test_continue_from_the_wall_phase(self):
         # t_restart 0.4: the wall phase (steps 2500 to 3500) in chunks of 400 steps,
         # column_walls.restart after each that passes a multiple of 400: at 2900 and 3300;
