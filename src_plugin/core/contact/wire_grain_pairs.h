@@ -50,8 +50,6 @@ class WireGrainPairCache {
   void hold(const HeldGrains& held);
   // D of the last hold()
   double grain_motion_bound() const { return grain_bound_; }
-  // D_k of the last hold(), k an index of its HeldGrains
-  double grain_motion_bound(int k) const { return grain_moved_[k]; }
 
   // Calls evaluate(k, shift, exact_gap_below) for every grain of `held` (the set of the
   // last hold()) that may touch the segment [x0, x1] of radius r_w, in the order of

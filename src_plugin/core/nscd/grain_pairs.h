@@ -22,7 +22,6 @@
 // most kept pairs are a skin apart, not touching).
 #pragma once
 
-#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
