@@ -110,6 +110,15 @@ def relaxed_sample(args, dt):
     walls moving for args.sample steps): (steps, seconds, atoms, timers)."""
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-relaxed-")
     shutil.copy(args.relaxed, os.path.join(work, "column_relaxed.restart"))
+    # the deposition's end, which in.column's resume checks the restart's step against: the
+    # run's own record, or (a restart from before session 29, when the deck wrote none) 0,
+    # which leaves only the check against t_end
+    record = os.path.join(os.path.dirname(os.path.abspath(args.relaxed)), "column_deposited.txt")
+    if os.path.exists(record):
+        shutil.copy(record, work)
+    else:
+        with open(os.path.join(work, "column_deposited.txt"), "w") as f:
+            f.write("0\n")
     with open(os.path.join(work, "in.bench"), "w") as f:
         f.write(f"modify_timing on\nvariable root index {REPOSITORY}\ninclude {REPOSITORY}/input_scripts/in.column\n")
     t_relax = PAPER_T_RELAX
@@ -139,9 +148,13 @@ def from_log(path, nlayers):
     dt = float(re.search(r"^in\.column: dt_SP (\S+),", out, re.M).group(1))
     starts = [m.start() for m in re.finditer(r"Loop time of", out)]
     relaxed = out.find("in.column relaxed at t")
+    # the deposition's runs: those before the deck's "in.column deposited at" line (a layer
+    # ended early by ke_layer runs in chunks); logs from before that line: the first 2 nlayers
+    deposited = re.search(r"^in\.column deposited at t", out, re.M)
     phase_of = []
     for k, pos in enumerate(starts):
-        phase_of.append("deposition" if k < 2 * nlayers else "relaxation" if relaxed < 0 or pos < relaxed else "walls moving")
+        in_deposition = pos < deposited.start() if deposited else k < 2 * nlayers
+        phase_of.append("deposition" if in_deposition else "relaxation" if relaxed < 0 or pos < relaxed else "walls moving")
     number = r"([0-9.eE+-]+)"  # (the echoed print command has the $(...) instead)
     clocks = re.search(rf"in\.column NSCD clocks: gather \+ detection {number} s, solve {number} s, "
                        rf"scatter \+ overlap projection {number} s", out)

@@ -46,9 +46,11 @@ def prepare(directory, restart):
     if os.path.lexists(link):
         os.remove(link)
     os.symlink(os.path.abspath(restart), link)
-    walls = os.path.join(os.path.dirname(os.path.abspath(restart)), "column_walls.txt")
-    if os.path.exists(walls):
-        shutil.copy(walls, directory)
+    # the deck's records beside the restart: the deposition's end, H0 and the walls' start
+    for record in ("column_deposited.txt", "column_walls.txt"):
+        path = os.path.join(os.path.dirname(os.path.abspath(restart)), record)
+        if os.path.exists(path):
+            shutil.copy(path, directory)
 
 
 def figures(log_text):

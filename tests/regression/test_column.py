@@ -202,9 +202,11 @@ class Column(DeckTestCase):
         # the deck's clock is t = step dt_SP and a restart file keeps no timestep: the
         # deposit (step 2000 at dt_SP 1e-3) read at 2e-3 would sit at t = 4, after t_relax
         for resume, message in ((2, "in.column: resume 2: column_deposited.restart is at step 2000, but the "
-                                    "deposition ends at step 1000 with dt_SP 2e-3: resume with the dt_SP"),
+                                    "deposition ended at t = 2 (column_deposited.txt), step 1000 with dt_SP 2e-3: "
+                                    "resume with the dt_SP"),
                                 (1, "in.column: resume 1: the restart is at step 2500, t = 5 with dt_SP 2e-3, "
-                                    "before the end of the deposition (step 1000) or after t_end 3.5")):
+                                    "before the end of the deposition (t = 2, column_deposited.txt: step 1000) "
+                                    "or after t_end 3.5")):
             resumed = run(COLUMN, variables=dict(TINY, resume=resume, dt_SP="2e-3"), workdir=self.straight.workdir)
             self.assertStopsWith(resumed, message)
 
@@ -299,6 +301,54 @@ class Column(DeckTestCase):
         self.assertIn("in.column relaxed at t = 2.5 ", never.output)
         a, b = final_observables(self.straight), final_observables(never)
         print(f"\nstraight {a}\nin chunks {b}")
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-12)
+
+    def test_early_end_of_the_layers(self):
+        # ke_layer far above any kinetic energy: each of the four layers (2 particle, 2
+        # wire) ends after t_quiet_layer = 0.2 (two checks of t_check = 0.1) instead of
+        # t_layer = t_wire = 0.5, the deposition at 4 x 0.2 = 0.8, written to
+        # column_deposited.txt; the relaxation starts there and runs to t_relax = 2.5
+        # (ke_relax 0)
+        quick = dict(TINY, ke_layer=1e9, t_quiet_layer=0.2, t_check=0.1, ke_relax=0)
+        early = run(COLUMN, variables=quick)
+        self.assertRanCleanly(early)
+        layers = re.findall(r"^in\.column layer (\d): (grains|wire) for (\S+) ", early.output, re.M)
+        self.assertEqual([(k, what) for k, what, _ in layers],
+                         [("1", "grains"), ("1", "wire"), ("2", "grains"), ("2", "wire")])
+        for _, _, duration in layers:
+            self.assertAlmostEqual(float(duration), 0.2, delta=1e-12)
+        deposited = re.search(r"(?m)^in\.column deposited at t = (\S+) \(nlayers \(t_layer \+ t_wire\) = 2; ",
+                              early.output)
+        self.assertIsNotNone(deposited)
+        self.assertAlmostEqual(float(deposited.group(1)), 0.8, delta=1e-12)
+        with open(early.path("column_deposited.txt")) as f:
+            self.assertAlmostEqual(float(f.read()), 0.8, delta=1e-12)
+        self.assertIn("in.column relaxed at t = 2.5 ", early.output)
+        self.assertEqual(final_times(early).group(2), "2.5")
+        # the relaxation again from its column_deposited.restart (resume 2): the deposition's
+        # end read back from column_deposited.txt, the same final observables as the run
+        # it came from (to the tolerance of test_continue_from_the_deposited_column); read
+        # at another dt_SP it is refused
+        resumed = run(COLUMN, variables=dict(quick, resume=2), workdir=early.workdir)
+        self.assertRanCleanly(resumed)
+        self.assertRegex(resumed.output, r"Loop time of \S+ on 1 procs for 1700 steps")
+        a, b = final_observables(early), final_observables(resumed)
+        for name in ("H_n", "phi_p", "z_wpc"):
+            self.assertEqual(a[name], b[name], name)
+        self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=3e-6)
+        self.assertStopsWith(run(COLUMN, variables=dict(quick, resume=2, dt_SP="2e-3"), workdir=early.workdir),
+                             "in.column: resume 2: column_deposited.restart is at step 800, but the deposition "
+                             "ended at t = 0.8")
+        # a threshold the falling layers never stay below (1e-6 m g a_max per grain): every
+        # layer runs its full time, in chunks of t_check, and the column is the straight
+        # run's (the chunks' run boundaries change the wire's energy by round-off only)
+        moving = run(COLUMN, variables=dict(TINY, ke_layer=1e-6, t_quiet_layer=0.2, t_check=0.1))
+        self.assertRanCleanly(moving)
+        self.assertIsNotNone(re.search(r"(?m)^in\.column deposited at t = 2 ", moving.output))
+        self.assertRegex(moving.output, r"Loop time of \S+ on 1 procs for 100 steps")  # the chunks
+        a, b = final_observables(self.straight), final_observables(moving)
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], b[name], name)
         self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-12)
@@ -431,6 +481,9 @@ class Column(DeckTestCase):
                                    ({"ke_relax": -1}, "in.column: ke_relax must be >= 0 (0: relax to t_relax), got -1"),
                                    ({"ke_relax": 1e-6, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_relax, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
+                                   ({"ke_layer": -1}, "in.column: ke_layer must be >= 0 (0: every layer its full t_layer and t_wire), got -1"),
+                                   ({"ke_layer": 1e-6, "t_quiet_layer": 0.1, "t_check": 0.5},
+                                    "in.column: with ke_layer, t_check must be > 0 and t_quiet_layer >= t_check, got 0.5 and 0.1"),
                                    ({"ke_walls": -1}, "in.column: ke_walls must be >= 0 (0: the walls move t_end - t_relax), got -1"),
                                    ({"ke_relax": 0, "t_quiet": 0.1, "t_check": 0.5},
                                     "in.column: with ke_walls, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
