@@ -430,6 +430,45 @@ TEST(ContactPenetration, RandomOverlapsMatchMinkowskiHull) {
 
 // Manifolds of random grains in contact: every point's core points lie on the cores, the
 // smallest point gap is the pair's gap, no point is deeper.
+// height_above_faces, the bound add_near_vertices leaves a vertex out by: never above the
+// point's distance to the core (brute force over the surface triangles), <= 0 inside, and
+// equal to it above a face's centroid.
+TEST(ContactGeometry, HeightAboveFacesBoundsThePointDistanceFromBelow) {
+  std::mt19937_64 rng(29);
+  int outside = 0, inside = 0, equal = 0;
+  for (int k = 0; k < 200; ++k) {
+    const ConvexShape shape = random_grain(rng, 0.05);
+    const Pose pose{Vector3d(uniform(rng, -5, 5), uniform(rng, -5, 5), uniform(rng, 0, 10)), random_orientation(rng)};
+    const PosedShape posed(shape, pose.x, pose.q);
+    const WorldCore core = world_core(shape, pose.x, pose.q);
+    for (int j = 0; j < 20; ++j) {
+      const Vector3d x = pose.x + uniform(rng, 0.0, 2.5) * random_unit(rng);
+      const double height = height_above_faces(posed, x), distance = point_core_distance(core, x);
+      if (distance > 0.0) {
+        ++outside;
+        EXPECT_LE(height, distance + 1e-12);
+        equal += std::abs(height - distance) < 1e-12;
+      } else {
+        ++inside;
+        EXPECT_LE(height, 1e-12);
+      }
+    }
+    for (int f = 0; f < static_cast<int>(shape.faces().size()); ++f) {
+      Vector3d centroid = Vector3d::Zero();
+      for (int v : shape.faces()[f].vertices) centroid += core.vertices[v];
+      centroid /= static_cast<double>(shape.faces()[f].vertices.size());
+      const double above = uniform(rng, 1e-3, 1.0);
+      const Vector3d x = centroid + above * core.normals[f];
+      EXPECT_NEAR(height_above_faces(posed, x), above, 1e-12);
+      EXPECT_NEAR(point_core_distance(core, x), above, 1e-12);
+    }
+  }
+  EXPECT_GT(outside, 1000);
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(equal, 100);  // the foot in a face: the bound is the distance
+  std::printf("  %d points outside (%d at their bound), %d inside\n", outside, equal, inside);
+}
+
 TEST(ContactManifold, RandomGrainsPointsOnSurfacesAndDeepestIsPairGap) {
   std::mt19937_64 rng(9);
   ErrorStats surface_err, gap_err;
