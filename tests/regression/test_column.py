@@ -346,8 +346,11 @@ class Column(DeckTestCase):
         # run's (the chunks' run boundaries change the wire's energy by round-off only)
         moving = run(COLUMN, variables=dict(TINY, ke_layer=1e-6, t_quiet_layer=0.2, t_check=0.1))
         self.assertRanCleanly(moving)
-        self.assertIsNotNone(re.search(r"(?m)^in\.column deposited at t = 2 ", moving.output))
-        self.assertRegex(moving.output, r"Loop time of \S+ on 1 procs for 100 steps")  # the chunks
+        deposited = re.search(r"(?m)^in\.column deposited at t = 2 ", moving.output)
+        self.assertIsNotNone(deposited)
+        # the four layers in chunks of t_check: 4 x 5 runs of 100 steps before that line
+        self.assertEqual(re.findall(r"Loop time of \S+ on 1 procs for (\d+) steps", moving.output[:deposited.start()]),
+                         ["100"] * 20)
         a, b = final_observables(self.straight), final_observables(moving)
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], b[name], name)
