@@ -33,7 +33,7 @@ OBSERVABLES = (("Hn", "H_n"), ("phi[1]", "phi_p"), ("Us", "U_s/L"), ("zwpc", "z_
 
 def chunks(text, ke_of="grains"):
     """The chunks of both phases: [(phase, end step, KE per grain, {column: value}, loop seconds)],
-    phase 'relax' (a run whose thermo has the KE but no Hn) or 'walls' (both): each run's
+    phase 'relax' (a run whose thermo has the KE but no Hn, nor the deposition's wtop) or 'walls' (both): each run's
     last thermo row before its "Loop time" line (warnings between the rows are skipped).
     The KE is the column ke_grain or ke_all (ke_of), or ke_rel (grains and wire) in the
     output of a deck from before ke_of."""
@@ -46,7 +46,8 @@ def chunks(text, ke_of="grains"):
             header, last = words, None
         elif words[:2] == ["Loop", "time"]:
             column = next((c for c in wanted if header is not None and c in header), None)
-            if column is not None and last is not None:
+            # (the deposition's thermo has the KE too since session 29, and the top of the wire: wtop)
+            if column is not None and last is not None and "wtop" not in header:
                 row = dict(zip(header, last))
                 found.append(("walls" if "Hn" in header else "relax", int(row["Step"]), row[column], row,
                               float(words[3])))
