@@ -428,8 +428,6 @@ TEST(ContactPenetration, RandomOverlapsMatchMinkowskiHull) {
               checked, depth_err.max, normal_err.max, normal_err.count);
 }
 
-// Manifolds of random grains in contact: every point's core points lie on the cores, the
-// smallest point gap is the pair's gap, no point is deeper.
 // height_above_faces, the bound add_near_vertices leaves a vertex out by: never above the
 // point's distance to the core (brute force over the surface triangles), <= 0 inside, and
 // equal to it above a face's centroid.
@@ -469,6 +467,8 @@ TEST(ContactGeometry, HeightAboveFacesBoundsThePointDistanceFromBelow) {
   std::printf("  %d points outside (%d at their bound), %d inside\n", outside, equal, inside);
 }
 
+// Manifolds of random grains in contact: every point's core points lie on the cores, the
+// smallest point gap is the pair's gap, no point is deeper.
 TEST(ContactManifold, RandomGrainsPointsOnSurfacesAndDeepestIsPairGap) {
   std::mt19937_64 rng(9);
   ErrorStats surface_err, gap_err;
