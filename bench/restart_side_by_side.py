@@ -16,7 +16,13 @@ NSCD clocks the deck prints, and the final observables, with whether they agree 
 last printed digit (a change meant to give the same bits must). The restart's clock is
 t = step × dt_SP (input_scripts/README.md, resume): give t_relax / t_end in it.
 Session 28's relaxation figures (README, fix wire/grain; docs/core_nscd.md) were measured
-this way."""
+this way.
+
+`--alternate R [--np N]` runs them one after the other instead, A B A B ... (R rounds),
+each on N ranks (`mpirun -np N`; default 2, the Table 1 run's), and prints every round's
+figures and the ratio of the sums: session 30 found the simultaneous runs' second slot
+4-9 % slower in every part, unrelated builds alike, which hides a change of a few per
+cent; alternating runs share the machine's drift instead."""
 
 import argparse
 import os
@@ -76,24 +82,27 @@ def main():
     parser.add_argument("--b-var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     parser.add_argument("--deck", default="input_scripts/in.column")
     parser.add_argument("--out", default="side_by_side")
+    parser.add_argument("--alternate", type=int, default=0, metavar="ROUNDS",
+                        help="run A and B one after the other, ROUNDS times each, on --np ranks")
+    parser.add_argument("--np", type=int, default=2)
     args = parser.parse_args()
 
-    env = dict(os.environ, OMPI_MCA_btl_vader_single_copy_mechanism="none")
-    processes = []
-    for label, binary, extra in (("A", args.a, []), ("B", args.b, args.b_var)):
-        directory = os.path.join(args.out, label)
+    env = dict(os.environ, OMPI_MCA_btl_vader_single_copy_mechanism="none", OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+    def start(label, binary, extra, directory, launcher):
         prepare(directory, args.restart)
-        command = [os.path.abspath(binary), "-in", args.deck, "-var", "root", ".", "-var", "resume", str(args.resume),
-                   "-log", "log.liggghts"]
+        command = launcher + [os.path.abspath(binary), "-in", args.deck, "-var", "root", ".", "-var", "resume",
+                              str(args.resume), "-log", "log.liggghts"]
         for name, value in extra + args.var:  # LIGGGHTS keeps the first -var of a name: B's win
             command += ["-var", name, value]
         with open(os.path.join(directory, "command.txt"), "w") as f:
             f.write(" ".join(command) + "\n")
         stdout = open(os.path.join(directory, "stdout.txt"), "w")
-        processes.append((label, directory, subprocess.Popen(command, cwd=directory, stdout=stdout,
-                                                             stderr=subprocess.STDOUT, env=env), stdout))
-    results = {}
-    for label, directory, process, stdout in processes:
+        return (label, directory, subprocess.Popen(command, cwd=directory, stdout=stdout, stderr=subprocess.STDOUT,
+                                                   env=env), stdout)
+
+    def finish(label, directory, process, stdout):
         code = process.wait()
         stdout.close()
         with open(os.path.join(directory, "log.liggghts")) as f:
@@ -101,7 +110,27 @@ def main():
         if code != 0 or "ERROR" in text:
             errors = [line for line in text.splitlines() if line.startswith("ERROR")]
             sys.exit(f"run {label} failed ({code}): {errors[:1]} (see {directory})")
-        results[label] = figures(text)
+        return figures(text)
+
+    runs = (("A", args.a, []), ("B", args.b, args.b_var))
+    results = {}
+    if args.alternate > 0:
+        launcher = ["mpirun", "-np", str(args.np)]
+        sums = {}
+        for r in range(args.alternate):
+            for label, binary, extra in runs:
+                got, final = finish(*start(label, binary, extra, os.path.join(args.out, f"{label}{r}"), launcher))
+                print(f"round {r} {label}: loop {got['loop']:.2f} s, "
+                      + ", ".join(f"{k} {v:.2f}" for k, v in got.items() if k.startswith("NSCD")), flush=True)
+                total = sums.setdefault(label, {})
+                for k, v in got.items():
+                    total[k] = total.get(k, 0.0) + v
+                results[label] = (total, final)
+        print(f"sums over {args.alternate} rounds, {args.np} ranks each:")
+    else:
+        processes = [start(label, binary, extra, os.path.join(args.out, label), []) for label, binary, extra in runs]
+        for process in processes:
+            results[process[0]] = finish(*process)
 
     (a, final_a), (b, final_b) = results["A"], results["B"]
     print(f"{'':28s} {'A [s]':>10s} {'B [s]':>10s} {'B / A':>7s}")

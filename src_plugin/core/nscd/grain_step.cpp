@@ -191,11 +191,24 @@ void restrict_rolling(std::vector<GrainContactPoint>& points, size_t begin) {
       [&](size_t i) -> NscdContact& { return points[begin + i].constraint; });
 }
 
-// Step 3: the points from the top down (descending z, ties in the order given), with
-// their rows and warm starts.
+// Step 3: the top-down order of `count` points (descending z, ties in the order given)
+template <class Height>
+std::vector<size_t> top_down_order(size_t count, const Height& z_of) {
+  return stable_order(count, [&](size_t c) { return -z_of(c); });
+}
+
+// The solver's rows, parallel to the points
+void set_step_contacts(GrainStepProblem& problem) {
+  problem.step.contacts.clear();
+  problem.step.contacts.reserve(problem.points.size());
+  for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
+}
+
+// Step 3 on points already made (grains woken within the step): the points from the top
+// down, with their rows and warm starts.
 void sort_top_down(GrainStepProblem& problem) {
   const std::vector<size_t> order =
-      stable_order(problem.points.size(), [&](size_t c) { return -problem.points[c].position.z(); });
+      top_down_order(problem.points.size(), [&](size_t c) { return problem.points[c].position.z(); });
   std::vector<GrainContactPoint> points;
   std::vector<Eigen::Vector3d> warm;
   std::vector<Eigen::Vector2d> warm_couples;
@@ -210,9 +223,7 @@ void sort_top_down(GrainStepProblem& problem) {
   problem.points = std::move(points);
   problem.warm_start = std::move(warm);
   problem.couple_warm_start = std::move(warm_couples);
-  problem.step.contacts.clear();
-  problem.step.contacts.reserve(problem.points.size());
-  for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
+  set_step_contacts(problem);
 }
 
 // Per grain, the impulse of every contact point on it (the solved ones and the frozen
@@ -772,45 +783,61 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, reuse ? contact_options : build_options);
   });
 
-  std::vector<GrainContactPoint>& points = problem.points;
-  size_t found_points = 0;
-  for (const NarrowPhaseResult& f : found) found_points += f.points.size();
-  points.reserve(found_points);
-  if (pairs && !reuse && n > 0) pairs->begin_build();
-  for (std::size_t i = 0; i < candidates.size(); i++) {
-    const NarrowPhaseCandidate& c = candidates[i];
-    if (c.wall >= 0) {
-      for (const ContactPoint& p : found[i].points)
-        points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
-                                    walls[c.wall].velocity, -c.wall - 1, problem));
-      continue;
+  if (pairs && !reuse && n > 0) {
+    pairs->begin_build();
+    for (std::size_t i = 0; i < candidates.size(); i++) {
+      const NarrowPhaseCandidate& c = candidates[i];
+      if (c.wall < 0 && (c.frozen || found[i].gap < activation + skin))
+        pairs->keep(c.a, c.b, c.frozen ? -std::numeric_limits<double>::infinity() : found[i].gap);
     }
-    if (pairs && !reuse && (c.frozen || found[i].gap < activation + skin))
-      pairs->keep(c.a, c.b, c.frozen ? -std::numeric_limits<double>::infinity() : found[i].gap);
-    for (const ContactPoint& p : found[i].points)
+    pairs->end_build(grains, library, activation);
+  }
+
+  // 3. the points made in top-down order (descending z, ties in detection order: the
+  // candidates' order, each one's points in the manifold's order), each written once in
+  // its place (they are large records: sorting them after was 3 % of the Table 1 wall
+  // phase, session 30)
+  std::vector<std::pair<int, int>> detected;  // (candidate, point of its manifold), detection order
+  for (std::size_t i = 0; i < candidates.size(); i++)
+    for (std::size_t k = 0; k < found[i].points.size(); k++) detected.emplace_back(static_cast<int>(i), static_cast<int>(k));
+  const auto found_point = [&](std::size_t d) -> const ContactPoint& { return found[detected[d].first].points[detected[d].second]; };
+  const std::vector<size_t> order = top_down_order(detected.size(), [&](size_t d) { return found_point(d).position.z(); });
+  std::vector<size_t> place(detected.size());  // detection index → top-down index
+  std::vector<GrainContactPoint>& points = problem.points;
+  points.reserve(detected.size());
+  for (size_t d : order) {
+    place[d] = points.size();
+    const NarrowPhaseCandidate& c = candidates[detected[d].first];
+    const ContactPoint& p = found_point(d);
+    if (c.wall >= 0)
+      points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
+                                  walls[c.wall].velocity, -c.wall - 1, problem));
+    else
       points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
                                   Eigen::Vector3d::Zero(), grains[c.a].tag, problem));
   }
-  if (pairs && !reuse && n > 0) pairs->end_build(grains, library, activation);
-  if (!problem.sweep_radius.empty()) restrict_rolling(points, 0);
+  if (!problem.sweep_radius.empty())  // each pair's points are consecutive in detection order
+    restrict_rolling(
+        detected.size(), [&](size_t d) { return points[place[d]].pair; }, [&](size_t d) { return points[place[d]].position; },
+        [&](size_t d) { return Eigen::Vector3d(points[place[d]].frame.col(0)); },
+        [&](size_t d) -> NscdContact& { return points[place[d]].constraint; });
 
   // 4. warm start from the nearest stored point of the same pair within R_max / 4,
-  // recalled before step 3 (in detection order, close to the memory's pair order)
+  // recalled in detection order (close to the memory's pair order)
   if (options.warm_start) {
     problem.warm_start.assign(points.size(), Eigen::Vector3d::Zero());
     if (!problem.sweep_radius.empty()) problem.couple_warm_start.assign(points.size(), Eigen::Vector2d::Zero());
     const double near2 = std::pow(0.25 * largest_radius, 2);
-    for (size_t c = 0; c < points.size(); c++)
+    for (size_t d = 0; d < detected.size(); d++) {
+      const size_t c = place[d];
       if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
         problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
         if (!problem.couple_warm_start.empty())
           problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
       }
+    }
   }
-
-  // 3. top-down order (descending z of the point, ties in detection order), the warm
-  // starts with them
-  sort_top_down(problem);
+  set_step_contacts(problem);
 
   // the frozen points: last step's points of the pairs that sleep now
   if (sleep) {
