@@ -87,6 +87,9 @@ configure_and_build() {
   if [ -n "${LIGGGHTS_SOURCE_DIR:-}" ]; then
     args+=("-DLIGGGHTS_SOURCE_DIR=$LIGGGHTS_SOURCE_DIR")
   fi
+  if [ -n "${WIREGRAIN_NATIVE:-}" ]; then
+    args+=("-DWIREGRAIN_NATIVE=$WIREGRAIN_NATIVE")
+  fi
   cmake "${args[@]}"
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }

@@ -230,6 +230,13 @@ class Column(DeckTestCase):
             self.assertEqual(a[name], b[name], name)
         self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
         self.assertIn("at t = 3.5 (t_end 3.5; walls moving since t = 2.5)", resumed.output)
+        # a wall phase that ends before the restart (t_walls + t_end - t_relax = 2.5 + 3.35
+        # - 2.6 = 3.25 < 3.3) is refused before any run (it stopped with LIGGGHTS' "Compute
+        # used in variable between runs is not current")
+        ended = run(COLUMN, variables=dict(TINY, resume=3, ke_walls=0, t_relax=2.6, t_end=3.35), workdir=straight.workdir)
+        self.assertStopsWith(ended, "nothing left to run (raise t_end)")
+        self.assertRegex(ended.output, r"ERROR: in\.column: resume 3: the restart is at t = 3\.3\d*, not before the "
+                                       r"end of the wall phase t_walls \+ t_end - t_relax = 2\.5 \+ 3\.35 - 2\.6 = 3\.2[45]\d*: ")
         # and those of the run without restarts (the chunks' run boundaries change the
         # wire's energy by round-off only, as in test_early_end_of_both_phases)
         c = final_observables(self.straight)
