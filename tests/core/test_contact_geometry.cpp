@@ -1598,3 +1598,124 @@ TEST(ContactManifold, NearlyAlignedStackedCubesGiveFiniteNormals) {
     EXPECT_NEAR(std::fabs(p.position.y()), 0.5, 1e-9);
   }
 }
+
+// GJK's warm start (GjkSimplex): pairs moving slowly, each queried every step with the
+// simplex of its last query, against a cold query of the same poses. Apart, nearly
+// touching and overlapping pairs of random grains, and cubes resting face on face (the
+// closest point on a face of the difference with more than three vertices, where the
+// simplex depends on the path). The answers agree to rounding (distance to 1e-12 of the
+// size, normal to 1e-9, the same method and manifold point count); an empty or unusable
+// simplex gives the cold answer to the bit; warm queries take less than half the GJK
+// iterations (measured: 4.07 → 0.02 per query; segments 3.46 → 0.00).
+TEST(ContactDistance, WarmStartedGjkAgreesWithColdAlongSlowMotions) {
+  std::mt19937_64 rng(20261127);
+  const ConvexShape cube = ConvexShape::cube(1.0);
+  int cold_iterations = 0, warm_iterations = 0, queries = 0, overlapping = 0;
+  double worst_distance = 0.0, worst_normal = 0.0;
+  for (int pair = 0; pair < 120; ++pair) {
+    const bool cubes = pair % 4 == 3;
+    const ConvexShape sa = cubes ? cube : random_grain(rng, 0.05), sb = cubes ? cube : random_grain(rng, 0.05);
+    Pose pa{Vector3d::Zero(), cubes ? Quaterniond::Identity() : random_orientation(rng)};
+    Pose pb{cubes ? Vector3d(uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3), 1.0 + uniform(rng, -1e-3, 1e-3))
+                  : Vector3d(uniform(rng, 0.9, 1.6) * random_unit(rng)),
+            cubes ? Quaterniond(AngleAxisd(1e-4, random_unit(rng))) : random_orientation(rng)};
+    const Vector3d drift = 1e-4 * random_unit(rng), spin_axis = random_unit(rng);
+    GjkSimplex simplex;
+    for (int step = 0; step < 30; ++step) {
+      pb.x += drift;
+      pb.q = (Quaterniond(AngleAxisd(2e-4, spin_axis)) * pb.q).normalized();
+      const PosedShape a(sa, pa.x, pa.q), b(sb, pb.x, pb.q);
+      const CoreDistance cold = core_distance(a, b);
+      const CoreDistance warm = core_distance(a, b, 0.0, &simplex);
+      const double size = 2.0;
+      worst_distance = std::max(worst_distance, std::fabs(warm.distance - cold.distance) / size);
+      worst_normal = std::max(worst_normal, (warm.normal - cold.normal).norm());
+      EXPECT_NEAR(warm.distance, cold.distance, 1e-12 * size) << "pair " << pair << " step " << step;
+      EXPECT_LT((warm.normal - cold.normal).norm(), 1e-9) << "pair " << pair << " step " << step;
+      EXPECT_EQ(warm.method, cold.method) << "pair " << pair << " step " << step;
+      EXPECT_GE(simplex.size, 1);
+      EXPECT_LE(simplex.size, 4);
+      overlapping += cold.distance < 0.0;
+      if (step > 0) {
+        cold_iterations += cold.gjk_iterations;
+        warm_iterations += warm.gjk_iterations;
+        ++queries;
+      }
+      // the manifold from the same simplex: the same points
+      GjkSimplex copy = simplex;
+      const ContactManifold m_cold = contact_manifold(a, b, 0.2);
+      const ContactManifold m_warm = contact_manifold(a, b, 0.2, ContactOptions(), &copy);
+      // (as sets: the witness points of a face–face contact depend on the simplex, and
+      // with them the polygon's first vertex)
+      ASSERT_EQ(m_warm.points.size(), m_cold.points.size()) << "pair " << pair << " step " << step;
+      for (const ContactPoint& p : m_cold.points) {
+        const ContactPoint* match = nullptr;
+        for (const ContactPoint& q : m_warm.points)
+          if (!match || (q.position - p.position).norm() < (match->position - p.position).norm()) match = &q;
+        EXPECT_LT((match->position - p.position).norm(), 1e-9 * size) << "pair " << pair << " step " << step;
+        EXPECT_NEAR(match->gap, p.gap, 1e-12 * size);
+        EXPECT_LT((match->normal - p.normal).norm(), 1e-9);
+      }
+    }
+    // an empty simplex, or one naming vertices the shapes do not have: the cold answer, bit for bit
+    const PosedShape a(sa, pa.x, pa.q), b(sb, pb.x, pb.q);
+    const CoreDistance cold = core_distance(a, b);
+    GjkSimplex empty, foreign;
+    foreign.size = 2;
+    foreign.a = {0, 1000, 0, 0};
+    for (GjkSimplex* s : {&empty, &foreign}) {
+      const CoreDistance d = core_distance(a, b, 0.0, s);
+      EXPECT_EQ(d.distance, cold.distance);
+      EXPECT_EQ(d.normal, cold.normal);
+      EXPECT_EQ(d.point_a, cold.point_a);
+      EXPECT_EQ(d.gjk_iterations, cold.gjk_iterations);
+    }
+  }
+  std::printf("  %d queries (%d overlapping): GJK iterations per query cold %.2f, warm %.2f; "
+              "max |d_warm - d_cold| / size %.1e, max |n_warm - n_cold| %.1e\n",
+              queries, overlapping, cold_iterations / double(queries), warm_iterations / double(queries),
+              worst_distance, worst_normal);
+  EXPECT_GT(overlapping, 100);
+  EXPECT_LT(warm_iterations, 0.5 * cold_iterations);
+}
+
+// The same for wire segments sliding slowly along random grains (touching, grazing, apart).
+TEST(SegmentPolyhedron, WarmStartedGjkAgreesWithColdAlongSlowMotions) {
+  std::mt19937_64 rng(27112026);
+  const double r_w = 0.1;
+  int cold_iterations = 0, warm_iterations = 0, queries = 0, touching = 0;
+  for (int pair = 0; pair < 150; ++pair) {
+    const ConvexShape s = random_grain(rng, 0.05);
+    const PosedShape grain(s, Vector3d::Zero(), random_orientation(rng));
+    const Vector3d u = random_unit(rng);
+    // a segment ⟂ u, its middle at the grain's support height along u plus an offset
+    const double height = grain.vertices()[grain.support_vertex(u)].dot(u) + uniform(rng, -0.1, 0.3);
+    Vector3d along = u.unitOrthogonal();
+    along = Eigen::AngleAxisd(uniform(rng, 0, 2 * kPi), u) * along;
+    Vector3d mid = height * u + uniform(rng, -0.3, 0.3) * along;
+    const double half = uniform(rng, 0.05, 0.3);
+    const Vector3d drift = 2e-4 * random_unit(rng);
+    GjkSimplex simplex;
+    for (int step = 0; step < 30; ++step) {
+      mid += drift;
+      const Vector3d p0 = mid - half * along, p1 = mid + half * along;
+      const SegmentContact cold = segment_contact(grain, p0, p1, r_w);
+      const SegmentContact warm = segment_contact(grain, p0, p1, r_w, ContactOptions(), &simplex);
+      EXPECT_NEAR(warm.distance, cold.distance, 1e-12) << "pair " << pair << " step " << step;
+      EXPECT_LT((warm.normal - cold.normal).norm(), 1e-9) << "pair " << pair << " step " << step;
+      EXPECT_EQ(warm.method, cold.method);
+      EXPECT_NEAR(warm.t_begin, cold.t_begin, 1e-9);
+      EXPECT_NEAR(warm.t_end, cold.t_end, 1e-9);
+      touching += cold.gap < 0.0;
+      if (step > 0) {
+        cold_iterations += cold.gjk_iterations;
+        warm_iterations += warm.gjk_iterations;
+        ++queries;
+      }
+    }
+  }
+  std::printf("  %d segment queries (%d touching): GJK iterations per query cold %.2f, warm %.2f\n", queries,
+              touching, cold_iterations / double(queries), warm_iterations / double(queries));
+  EXPECT_GT(touching, 300);
+  EXPECT_LT(warm_iterations, 0.5 * cold_iterations);
+}

@@ -92,6 +92,7 @@ void check_finite(const char* name, const Vector3d& value) {
 
 struct PolytopeSet {
   const PosedShape* shape;
+  int count() const { return static_cast<int>(shape->vertices().size()); }
   int support(const Vector3d& d) const { return shape->support_vertex(d); }
   const Vector3d& point(int i) const { return shape->vertices()[i]; }
 };
@@ -102,6 +103,7 @@ struct SuperquadricSet {
   explicit SuperquadricSet(const PosedSuperquadric& b) : body(&b) { points.reserve(kGjkMaxIterations + 2); }
   const PosedSuperquadric* body;
   mutable std::vector<Vector3d> points;
+  int count() const { return 0; }  // no warm simplex: its points are made anew by each query
   int support(const Vector3d& d) const {
     points.push_back(body->support(d));
     return static_cast<int>(points.size()) - 1;
@@ -111,6 +113,7 @@ struct SuperquadricSet {
 
 struct SegmentSet {
   std::array<Vector3d, 2> end;
+  int count() const { return 2; }
   int support(const Vector3d& d) const { return d.dot(end[1]) > d.dot(end[0]) ? 1 : 0; }
   const Vector3d& point(int i) const { return end[i]; }
 };
@@ -130,9 +133,22 @@ struct GjkResult {
   int iterations = 0;
 };
 
+// A warm simplex a set can take: 1–4 distinct index pairs within the sets' counts.
+template <class SetA, class SetB>
+bool usable_simplex(const GjkSimplex& s, const SetA& A, const SetB& B) {
+  if (s.size < 1 || s.size > 4) return false;
+  for (int j = 0; j < s.size; j++) {
+    if (s.a[j] < 0 || s.a[j] >= A.count() || s.b[j] < 0 || s.b[j] >= B.count()) return false;
+    for (int k = 0; k < j; k++)
+      if (s.a[k] == s.a[j] && s.b[k] == s.b[j]) return false;
+  }
+  return true;
+}
+
+// simplex (SetA and SetB with count()): the warm start and last simplex (GjkSimplex).
 template <class SetA, class SetB>
 GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, double size,
-              double early_exit_distance, double progress = kGjkProgress) {
+              double early_exit_distance, double progress = kGjkProgress, GjkSimplex* simplex = nullptr) {
   std::array<Vector3d, 4> w;
   std::array<int, 4> ia{}, ib{};
   std::array<double, 4> lambda{};
@@ -143,19 +159,54 @@ GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, d
     i_b = B.support(v);
     return Vector3d(A.point(i_a) - B.point(i_b));
   };
-
-  Vector3d dir = initial_direction;
-  if (!(dir.squaredNorm() > 0.0)) dir = Vector3d::UnitX();
-  int a0 = 0, b0 = 0;
-  w[0] = support(dir, a0, b0);
-  ia[0] = a0;
-  ib[0] = b0;
-  lambda[0] = 1.0;
-  n = 1;
-  Vector3d v = w[0];
+  // the simplex kept for the next query: the last one, or the tetrahedron that holds the
+  // origin
+  bool kept = false;
+  const auto keep_simplex = [&](int size_kept, const std::array<int, 4>& a, const std::array<int, 4>& b) {
+    kept = true;
+    if (!simplex) return;
+    simplex->size = size_kept;
+    simplex->a = a;
+    simplex->b = b;
+  };
 
   GjkResult result;
   const double origin_tol = kGjkOrigin * size;
+  Vector3d v;
+  if (simplex && usable_simplex(*simplex, A, B)) {
+    // warm: the old simplex's points now, reduced to the sub-simplex nearest the origin
+    const int m = simplex->size;
+    for (int j = 0; j < m; j++) w[j] = A.point(simplex->a[j]) - B.point(simplex->b[j]);
+    NearestSimplex r = m == 1   ? nearest_simplex_detail::single(w.data(), 0)
+                       : m == 2 ? nearest_on_segment(w.data(), 0, 1)
+                       : m == 3 ? nearest_on_triangle(w.data(), 0, 1, 2)
+                                : nearest_on_tetrahedron(w.data());
+    if (r.n == 4) {  // the origin inside: the cores overlap
+      result.touching = true;
+      keep_simplex(4, simplex->a, simplex->b);
+      return result;
+    }
+    const std::array<Vector3d, 4> start = w;
+    for (int j = 0; j < r.n; j++) {
+      w[j] = start[r.index[j]];
+      ia[j] = simplex->a[r.index[j]];
+      ib[j] = simplex->b[r.index[j]];
+      lambda[j] = r.lambda[j];
+    }
+    n = r.n;
+    v = r.v;
+  } else {
+    Vector3d dir = initial_direction;
+    if (!(dir.squaredNorm() > 0.0)) dir = Vector3d::UnitX();
+    int a0 = 0, b0 = 0;
+    w[0] = support(dir, a0, b0);
+    ia[0] = a0;
+    ib[0] = b0;
+    lambda[0] = 1.0;
+    n = 1;
+    v = w[0];
+  }
+
   int iteration = 0;
   for (; iteration < kGjkMaxIterations; ++iteration) {
     const double vv = v.squaredNorm();
@@ -189,16 +240,17 @@ GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, d
       r = nearest_on_triangle(trial.data(), 0, 1, 2);
     else
       r = nearest_on_tetrahedron(trial.data());
+    std::array<int, 4> trial_ia = ia, trial_ib = ib;
+    trial_ia[n] = i_a;
+    trial_ib[n] = i_b;
     if (r.n == 4) {
       result.touching = true;
       ++iteration;
+      keep_simplex(4, trial_ia, trial_ib);
       break;
     }
     if (!(r.v.squaredNorm() < vv)) break;  // no progress (rounding): keep the last simplex
 
-    std::array<int, 4> trial_ia = ia, trial_ib = ib;
-    trial_ia[n] = i_a;
-    trial_ib[n] = i_b;
     for (int j = 0; j < r.n; ++j) {
       w[j] = trial[r.index[j]];
       ia[j] = trial_ia[r.index[j]];
@@ -209,6 +261,7 @@ GjkResult gjk(const SetA& A, const SetB& B, const Vector3d& initial_direction, d
     v = r.v;
   }
   result.iterations = iteration;
+  if (!kept) keep_simplex(n, ia, ib);
   if (result.far) return result;
   for (int j = 0; j < n; ++j) {
     result.point_a += lambda[j] * A.point(ia[j]);
@@ -987,14 +1040,14 @@ double height_above_faces(const PosedShape& shape, const Vector3d& x) {
 }
 
 CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
-                           double early_exit_distance) {
+                           double early_exit_distance, GjkSimplex* simplex) {
   if (!(early_exit_distance >= 0.0))
     throw InvalidArgument("early_exit_distance",
                           "early_exit_distance must be >= 0, got " + number(early_exit_distance));
   if (std::isinf(early_exit_distance)) early_exit_distance = 0.0;  // never stop early
   const double size = configuration_size(a, b.position(), b.core_radius());
   const GjkResult g = gjk(PolytopeSet{&a}, PolytopeSet{&b}, a.position() - b.position(), size,
-                          early_exit_distance);
+                          early_exit_distance, kGjkProgress, simplex);
   CoreDistance out;
   out.gjk_iterations = g.iterations;
   if (g.far) {
@@ -1048,12 +1101,13 @@ CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
 // Contact manifold of two grains
 
 ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
-                                 double activation_distance, const ContactOptions& options) {
+                                 double activation_distance, const ContactOptions& options,
+                                 GjkSimplex* simplex) {
   check_not_nan("activation_distance", activation_distance);
   check_options(options);
   const double r_a = a.sweep_radius(), r_b = b.sweep_radius();
   const double reach = activation_distance + options.exit_beyond_activation + r_a + r_b;
-  const CoreDistance cd = core_distance(a, b, reach > 0.0 ? reach : 0.0);  // inf: never
+  const CoreDistance cd = core_distance(a, b, reach > 0.0 ? reach : 0.0, simplex);  // inf: never
 
   ContactManifold m;
   m.normal = cd.normal;
@@ -1178,7 +1232,7 @@ ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
 
 SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
                                const Vector3d& end1, double wire_radius,
-                               const ContactOptions& options) {
+                               const ContactOptions& options, GjkSimplex* simplex) {
   check_finite("end0", end0);
   check_finite("end1", end1);
   if (!(wire_radius >= 0.0) || !std::isfinite(wire_radius))
@@ -1193,7 +1247,7 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
   const double size = configuration_size(grain, mid, 0.5 * length);
   // the early exit on the cores' distance (0 to gjk: never)
   const double exit_distance = std::isinf(options.exit_gap) ? 0.0 : options.exit_gap + grain.sweep_radius() + wire_radius;
-  const GjkResult g = gjk(PolytopeSet{&grain}, S, grain.position() - mid, size, exit_distance);
+  const GjkResult g = gjk(PolytopeSet{&grain}, S, grain.position() - mid, size, exit_distance, kGjkProgress, simplex);
 
   SegmentContact out;
   out.gjk_iterations = g.iterations;

@@ -48,6 +48,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -141,11 +142,27 @@ double lowest_core_point(const ConvexShape& shape, const Eigen::Vector3d& positi
 // GJK of a segment apart stops within one or two iterations, cheaper than the face loop.)
 double height_above_faces(const PosedShape& shape, const Eigen::Vector3d& x);
 
+// GJK's simplex of a pair: the support indices of its 1–4 points of the Minkowski
+// difference A − B (a: A's vertex, b: B's vertex or the segment's end 0/1). A query given
+// one starts GJK from it (reduced to its nearest sub-simplex first) instead of from the
+// support along the centres, and leaves its own last simplex there (the tetrahedron when
+// the cores overlap): the warm start of a pair queried again a step later, whose closest
+// features rarely change. GJK converges to the closest point from any simplex of the
+// difference (Gilbert, Johnson & Keerthi 1988) with the same stopping rules, so the
+// answer is the same to GJK's tolerance, not to the bit: where the closest point lies on
+// a face of the difference with more than three vertices (face–face, edge–edge) the
+// simplex that holds it depends on the path. size 0 (or indices out of range): a cold
+// start, the same result to the bit as without a simplex. docs/core_contact.md.
+struct GjkSimplex {
+  std::array<int, 4> a{}, b{};
+  int size = 0;
+};
+
 // Distance of the cores of a and b. early_exit_distance: if > 0, GJK stops as soon as its
 // lower bound proves distance > early_exit_distance (method gjk_far); 0 or +inf: always
-// solve.
+// solve. simplex: GJK's warm start and last simplex (see GjkSimplex), or null.
 CoreDistance core_distance(const PosedShape& a, const PosedShape& b,
-                           double early_exit_distance = 0.0);
+                           double early_exit_distance = 0.0, GjkSimplex* simplex = nullptr);
 
 // Tolerances and limits of the contact manifold.
 struct ContactOptions {
@@ -217,9 +234,11 @@ struct ContactManifold {
 
 // Contact of two grains. Points are produced when gap < activation_distance (e.g. a
 // margin for gap anticipation in NSCD; +inf: always; NaN is rejected).
+// simplex: the core distance's GJK warm start and last simplex (GjkSimplex), or null.
 ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
                                  double activation_distance,
-                                 const ContactOptions& options = ContactOptions());
+                                 const ContactOptions& options = ContactOptions(),
+                                 GjkSimplex* simplex = nullptr);
 
 // An infinite wall: the plane through `point` with unit normal `normal` pointing out of
 // the wall, into the space the grains occupy.
@@ -254,9 +273,12 @@ struct SegmentContact {
   int gjk_iterations = 0;
 };
 
+// simplex: GJK's warm start and last simplex (GjkSimplex: a the grain's vertex, b the
+// segment's end), or null.
 SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& end0,
                                const Eigen::Vector3d& end1, double wire_radius,
-                               const ContactOptions& options = ContactOptions());
+                               const ContactOptions& options = ContactOptions(),
+                               GjkSimplex* simplex = nullptr);
 
 // The same against a superquadric (core/geometry/superquadric.h; no sweep radius: gap =
 // distance − wire_radius). Apart: GJK with the closed-form support point (stopped when
