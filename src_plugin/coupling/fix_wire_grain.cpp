@@ -116,12 +116,21 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       skin_ = args.value_nonnegative(key);
       continue;
     }
+    if (key == "warm_geometry") {
+      const std::string v = args.value_word(key);
+      if (v != "yes" && v != "no") args.fail("value of 'warm_geometry' must be yes or no, got '" + v + "'");
+      warm_geometry_ = v == "yes";
+      continue;
+    }
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_w", "nu_w", wire_given_)) continue;
     if (wiregrain_lmp::parse_material_keyword(args, key, "E_p", "nu_p", grain_given_)) continue;
     if (!wiregrain_lmp::parse_friction_keyword(args, key, friction_)) args.unknown_keyword(key);
   }
   wiregrain_lmp::check_friction(args, friction_);
-  if (skin_ > 0.0) core_->pairs.reset(new wiregrain::WireGrainPairCache(skin_));
+  if (skin_ > 0.0) {
+    core_->pairs.reset(new wiregrain::WireGrainPairCache(skin_));
+    core_->pairs->set_warm_geometry(warm_geometry_);
+  }
 
   restart_global = 1;
   vector_flag = 1;
@@ -273,6 +282,9 @@ void FixWireGrain::init() {
 // order of the fixes. Springs are not advanced; the grains get this step's force as is.
 void FixWireGrain::setup_pre_force(int /*vflag*/) {
   check_time_step();
+  // each run's GJKs start cold (restart files keep no simplex: a continued run repeats
+  // the straight one)
+  if (core_->pairs) core_->pairs->forget_simplices();
   hold_grains();
   evaluate(true);
 }
@@ -499,7 +511,8 @@ void FixWireGrain::evaluate(bool setup) {
                ", which is neither owned nor a ghost here");
     const wiregrain::WireSegmentState segment = segment_of(i, j);
     // the pair's contact; returns its gap (for the pair cache: exact below exact_gap_below)
-    const auto evaluate_pair = [&](int k, const Eigen::Vector3d &shift, double exact_gap_below) {
+    const auto evaluate_pair = [&](int k, const Eigen::Vector3d &shift, double exact_gap_below,
+                                   wiregrain::GjkSimplex *simplex) {
       evaluations++;
       const long grain_tag = held.grain(k).tag;
       const wiregrain::SoftContactLaw law = wiregrain::segment_contact_law(
@@ -514,7 +527,8 @@ void FixWireGrain::evaluate(bool setup) {
         if (found != core_->guesses.end()) guess = found->second;
         warm = &guess;
       }
-      const wiregrain::WireGrainContact c = held.contact(k, shift, law, segment, dt, advanced, exact_gap_below, warm);
+      const wiregrain::WireGrainContact c =
+          held.contact(k, shift, law, segment, dt, advanced, exact_gap_below, warm, simplex);
       if (warm && guess.normal.squaredNorm() > 0.0) core_->next_guesses[key] = guess;
       if (!c.touching) return -c.overlap;  // a pair apart forgets its spring
       history_->store(i, (int)grain_tag, setup ? h : advanced);
@@ -539,7 +553,7 @@ void FixWireGrain::evaluate(bool setup) {
         core_->pairs->for_each_pair(tag[i], held, segment.x0, segment.x1, segment.radius, evaluate_pair);
       else
         held.for_each_candidate(segment.x0, segment.x1, segment.radius, 0.0,
-                                [&](int k, const Eigen::Vector3d &shift) { evaluate_pair(k, shift, 0.0); });
+                                [&](int k, const Eigen::Vector3d &shift) { evaluate_pair(k, shift, 0.0, nullptr); });
     } catch (const std::exception &e) {  // InvalidArgument, NumericalFailure of the geometry
       fail_one("segment " + std::to_string(tag[i]) + "-" + std::to_string(next[i]) + ": " + e.what() +
                " (a segment that grew by a fifth of its reach within one NSCD step?)");

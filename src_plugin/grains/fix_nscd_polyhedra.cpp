@@ -135,6 +135,10 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       const std::string v = args.value_word(key);
       if (v != "yes" && v != "no") args.fail("value of 'warm_start' must be yes or no, got '" + v + "'");
       core_->options.warm_start = v == "yes";
+    } else if (key == "warm_geometry") {
+      const std::string v = args.value_word(key);
+      if (v != "yes" && v != "no") args.fail("value of 'warm_geometry' must be yes or no, got '" + v + "'");
+      core_->options.warm_geometry = v == "yes";
     } else if (key == "restitution") {
       core_->options.solver.restitution = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
     } else if (key == "convergence") {
@@ -393,6 +397,9 @@ void FixNSCDPolyhedra::setup(int /*vflag*/) {
   }
   run_end_known_ = false;
   run_end_velocities_.clear();
+  // each run's GJKs start cold (restart files keep no simplex: a continued run repeats
+  // the straight one to the bit)
+  if (core_->pairs) core_->pairs->forget_simplices();
   if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
   pose_version_++;
 }

@@ -131,7 +131,7 @@ TEST_F(PairCache, VisitsEveryTouchingPairInTagOrderWhileSegmentsAndGrainsMove) {
       const Segment& s = segments[key];
       std::vector<long> visited, touching;
       cache.for_each_pair(long(key), held, s.x0, s.x1, kWireRadius,
-                          [&](int k, const Vector3d& shift, double exact_gap_below) {
+                          [&](int k, const Vector3d& shift, double exact_gap_below, GjkSimplex*) {
                             EXPECT_EQ(shift, Vector3d::Zero());
                             visited.push_back(held.grain(k).tag);
                             const double gap = exact_gap(held, k, s);
@@ -178,7 +178,7 @@ TEST_F(PairCache, ATurnOfAGrainAboutItsCentreIsBoundedByItsBoundingRadius) {
     const HeldGrains held = hold();
     cache.hold(held);
     bool found = false;
-    cache.for_each_pair(1, held, s.x0, s.x1, kWireRadius, [&](int k, const Vector3d&, double) {
+    cache.for_each_pair(1, held, s.x0, s.x1, kWireRadius, [&](int k, const Vector3d&, double, GjkSimplex*) {
       const double gap = segment_contact(held.posed(k), s.x0, s.x1, kWireRadius).gap;
       found = found || gap <= 0.0;
       return gap;
@@ -202,7 +202,7 @@ TEST_F(PairCache, ASegmentAndAGrainClosingTheGapTogetherAreFound) {
   WireGrainPairCache cache(0.05);
   const auto touches = [&](const HeldGrains& held) {
     bool found = false;
-    cache.for_each_pair(1, held, s.x0, s.x1, kWireRadius, [&](int k, const Vector3d&, double) {
+    cache.for_each_pair(1, held, s.x0, s.x1, kWireRadius, [&](int k, const Vector3d&, double, GjkSimplex*) {
       const double gap = segment_contact(held.posed(k), s.x0, s.x1, kWireRadius).gap;
       found = found || gap <= 0.0;
       return gap;

@@ -83,7 +83,7 @@ void HeldGrains::check_reach(double reach) const {
 
 WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
                                      const WireSegmentState& segment, double dt, TangentialHistory& history,
-                                     double exact_gap_below, SmoothContactGuess* guess) const {
+                                     double exact_gap_below, SmoothContactGuess* guess, GjkSimplex* simplex) const {
   WireSegmentState moved = segment;
   moved.x0 -= shift;
   moved.x1 -= shift;
@@ -94,7 +94,7 @@ WireGrainContact HeldGrains::contact(int k, const Eigen::Vector3d& shift, const 
       : g.shape == HeldGrain::kSuperquadric
           ? wire_superquadric_contact(law, PosedSuperquadric(g.superquadric, g.position, g.orientation), g.motion,
                                       moved, dt, history, exact_gap_below, guess)
-          : wire_grain_contact(law, posed(k), g.motion, moved, dt, history, exact_gap_below);
+          : wire_grain_contact(law, posed(k), g.motion, moved, dt, history, exact_gap_below, simplex);
   c.point += shift;
   return c;
 }

@@ -106,10 +106,12 @@ class HeldGrains {
   // below exact_gap_below, else possibly a lower bound (polyhedra and superquadrics: see
   // wire_grain_contact, wire_superquadric_contact; a sphere's gap is always exact). guess: a
   // superquadric's warm start, in and out (wire_superquadric_contact); ignored otherwise.
+  // simplex: a polyhedron's GJK warm start, in and out (wire_grain_contact); ignored
+  // otherwise.
   WireGrainContact contact(int k, const Eigen::Vector3d& shift, const SoftContactLaw& law,
                            const WireSegmentState& segment, double dt, TangentialHistory& history,
                            double exact_gap_below = std::numeric_limits<double>::infinity(),
-                           SmoothContactGuess* guess = nullptr) const;
+                           SmoothContactGuess* guess = nullptr, GjkSimplex* simplex = nullptr) const;
 
  private:
   std::vector<HeldGrain> grains_;

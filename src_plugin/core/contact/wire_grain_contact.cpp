@@ -28,12 +28,13 @@ double load_point_parameter(const PosedShape& grain, const SegmentContact& g, co
 
 WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
                                     const GrainMotion& motion, const WireSegmentState& segment,
-                                    double dt, TangentialHistory& history, double exact_gap_below) {
+                                    double dt, TangentialHistory& history, double exact_gap_below,
+                                    GjkSimplex* simplex) {
   WireGrainContact out;
   ContactOptions only_touching;  // pairs apart need their gap only, farther ones a bound
   only_touching.feature_gap_limit = 0.0;
   only_touching.exit_gap = exact_gap_below;
-  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, only_touching);
+  out.geometry = segment_contact(grain, segment.x0, segment.x1, segment.radius, only_touching, simplex);
   const SegmentContact& g = out.geometry;
   out.overlap = -g.gap;
   out.normal = g.normal;

@@ -83,11 +83,13 @@ double load_point_parameter(const PosedShape& grain, const SegmentContact& g, co
 // the force without advancing the spring (a setup force call). exact_gap_below ≥ 0 (+inf:
 // always exact): the geometry's gap is exact while below it; a pair farther apart may get
 // a lower bound of its gap (GJK's early exit, ContactOptions::exit_gap). The force is the
-// same whatever the value: it needs only gap ≤ 0.
+// same whatever the value: it needs only gap ≤ 0. simplex: the geometry's GJK warm start,
+// in and out (GjkSimplex), or null.
 WireGrainContact wire_grain_contact(const SoftContactLaw& law, const PosedShape& grain,
                                     const GrainMotion& motion, const WireSegmentState& segment,
                                     double dt, TangentialHistory& history,
-                                    double exact_gap_below = std::numeric_limits<double>::infinity());
+                                    double exact_gap_below = std::numeric_limits<double>::infinity(),
+                                    GjkSimplex* simplex = nullptr);
 
 // The force of a touching pair whose overlap and normal are in `out`, loaded at t on the
 // axis (the part after the geometry above, for grains of any kind): the body's centre of

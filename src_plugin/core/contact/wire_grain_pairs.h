@@ -25,6 +25,10 @@
 // (D_k the bound above for grain k alone, ≤ D): it is still apart (its surfaces moved at
 // most that far towards each other), as its evaluation would find. Superquadric pairs are
 // always evaluated: their contact solve starts from the last evaluation's.
+// Each kept pair holds the GJK simplex of its last evaluation (GjkSimplex,
+// core/geometry/contact_geometry.h), handed to evaluate as its warm start and left there
+// with the next one (warm_geometry; null when off): the same contacts to GJK's tolerance,
+// not to the bit. An entry built anew starts its pairs cold.
 #pragma once
 
 #include <algorithm>
@@ -36,6 +40,7 @@
 
 #include "core/common/errors.h"
 #include "core/contact/held_grains.h"
+#include "core/geometry/contact_geometry.h"
 
 namespace wiregrain {
 
@@ -45,17 +50,27 @@ class WireGrainPairCache {
   explicit WireGrainPairCache(double skin);
 
   double skin() const { return skin_; }
+  // whether evaluate gets the pairs' simplices (on by default)
+  void set_warm_geometry(bool on) { warm_geometry_ = on; }
+  // every kept pair's next evaluation starts cold (fix wire/grain at the start of each
+  // run: a run continued from a restart file, which keeps no simplex, repeats the
+  // straight one)
+  void forget_simplices() {
+    for (auto& entry : entries_)
+      for (Pair& p : entry.second.pairs) p.simplex = GjkSimplex();
+  }
   // The grains as held now (after every new HeldGrains): updates D, resets the reference
   // when the grains changed or D ≥ skin / 2.
   void hold(const HeldGrains& held);
   // D of the last hold()
   double grain_motion_bound() const { return grain_bound_; }
 
-  // Calls evaluate(k, shift, exact_gap_below) for every grain of `held` (the set of the
-  // last hold()) that may touch the segment [x0, x1] of radius r_w, in the order of
+  // Calls evaluate(k, shift, exact_gap_below, simplex) for every grain of `held` (the set
+  // of the last hold()) that may touch the segment [x0, x1] of radius r_w, in the order of
   // HeldGrains' for_each_candidate; evaluate returns the pair's gap (≤ 0 touching), which
   // must be exact while below exact_gap_below (0 for an entry's pairs, the skin while the
-  // entry is being built; farther pairs may return a lower bound of their gap). key: the segment's identity (its first bead's tag).
+  // entry is being built; farther pairs may return a lower bound of their gap); simplex:
+  // the pair's GJK warm start, in and out, or null. key: the segment's identity (its first bead's tag).
   // Throws what for_each_candidate throws when the entry is rebuilt.
   template <class Evaluate>
   void for_each_pair(long key, const HeldGrains& held, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
@@ -66,13 +81,13 @@ class WireGrainPairCache {
     const double moved = motion_since_build(entry, x0, x1, wire_radius);
     if (moved < skin_) {  // the entry is valid
       const double moved_segment = std::max((x0 - entry.x0).norm(), (x1 - entry.x1).norm());
-      for (const Pair& p : entry.pairs) {
+      for (Pair& p : entry.pairs) {
         const int k = held.index_of(p.tag);
         if (p.gap > moved_segment + grain_moved_[k] + p.grain_moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
           ++skipped_;
           continue;
         }
-        evaluate(k, p.shift, 0.0);
+        evaluate(k, p.shift, 0.0, warm_geometry_ ? &p.simplex : nullptr);
       }
       return;
     }
@@ -84,8 +99,9 @@ class WireGrainPairCache {
     entry.radius = wire_radius;
     entry.pairs.clear();
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
-      const double gap = evaluate(k, shift, skin_);
-      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap, grain_moved_[k]});
+      GjkSimplex simplex;
+      const double gap = evaluate(k, shift, skin_, warm_geometry_ ? &simplex : nullptr);
+      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap, grain_moved_[k], simplex});
     });
   }
 
@@ -101,6 +117,7 @@ class WireGrainPairCache {
     Eigen::Vector3d shift;
     double gap;          // exact, at the entry's build
     double grain_moved;  // D_k at the entry's build
+    GjkSimplex simplex;  // of its last evaluation
   };
   struct Entry {
     long epoch = -1;           // the reference it was built against
@@ -116,6 +133,7 @@ class WireGrainPairCache {
     Eigen::Quaterniond orientation;
   };
   double skin_;
+  bool warm_geometry_ = true;
   long epoch_ = 0;
   double grain_bound_ = 0.0;
   std::vector<double> grain_moved_;           // D_k, in HeldGrains' order

@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/geometry/contact_geometry.h"
 #include "core/geometry/shape_library.h"
 
 namespace wiregrain {
@@ -42,6 +43,7 @@ class GrainPairCache {
   struct KeptPair {
     int a, b;    // grain indices, a < b
     double gap;  // at the build (exact below a_build + s); −∞: always evaluated
+    GjkSimplex simplex;  // of the pair's last narrow phase (GrainStepOptions::warm_geometry)
   };
 
   // Whether the pairs of the last build still hold every pair within `activation` of the
@@ -51,9 +53,19 @@ class GrainPairCache {
   // A build: start, keep each pair (a < b, grain indices) in visiting order with its gap,
   // end with the grains and the activation distance of the build.
   void begin_build();
-  void keep(int a, int b, double gap) { pairs_.push_back({a, b, gap}); }
+  void keep(int a, int b, double gap, const GjkSimplex& simplex = GjkSimplex()) {
+    pairs_.push_back({a, b, gap, simplex});
+  }
   void end_build(const std::vector<GrainState>& grains, const ShapeLibrary& library, double activation);
   const std::vector<KeptPair>& pairs() const { return pairs_; }
+  // the simplex of kept pair i (an index into pairs())
+  void set_simplex(std::size_t i, const GjkSimplex& simplex) { pairs_.at(i).simplex = simplex; }
+  // every kept pair's next narrow phase starts cold (fix nscd/polyhedra at the start of
+  // each run: a run continued from a restart file, which keeps no simplex, then repeats
+  // the run it continues to the bit)
+  void forget_simplices() {
+    for (KeptPair& p : pairs_) p.simplex = GjkSimplex();
+  }
   // After valid() returned true: whether the kept pair cannot have come within
   // `activation` (counted in skipped())
   bool still_apart(const KeptPair& pair, double activation) {

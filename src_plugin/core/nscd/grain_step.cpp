@@ -549,21 +549,28 @@ void update_sleep(const GrainStepProblem& problem, const std::vector<GrainState>
 struct NarrowPhaseCandidate {
   int a = -1, b = -1, wall = -1;
   bool frozen = false;
+  int kept = -1;        // its index in the pair cache's pairs() when it comes from there
+  GjkSimplex simplex;   // GJK's warm start (empty: cold)
 };
 
 struct NarrowPhaseResult {
   double gap = std::numeric_limits<double>::infinity();  // the manifold's (a lower bound when far)
   std::vector<ContactPoint> points;                      // position, normal and gap are used
+  GjkSimplex simplex;                                    // GJK's last (with `simplices`)
 };
 
 // The contact manifolds of the candidates (NarrowPhaseShare): this worker's block by
-// `compute`, the others' from the joined buffer. The buffer of a block: its status (0, or
-// the length + 1 of the message of an exception thrown in it, then the message's
-// characters), then per candidate its gap, its point count and 7 numbers per point. Every
-// worker throws when any block failed, with that block's message.
+// `compute(candidate, simplex)` (simplex: null, or GJK's warm start from the candidate's,
+// left with its last), the others' from the joined buffer. The buffer of a block: its
+// status (0, or the length + 1 of the message of an exception thrown in it, then the
+// message's characters), then per candidate its gap, its point count and 7 numbers per
+// point, and with `simplices` the simplex's size and its index pairs (every worker then
+// holds every pair's simplex, whoever computed it: the next step's warm start is the same
+// on any number of workers). Every worker throws when any block failed, with that block's
+// message.
 template <class Compute>
 std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandidate>& candidates,
-                                            const NarrowPhaseShare* share, const Compute& compute) {
+                                            const NarrowPhaseShare* share, bool simplices, const Compute& compute) {
   const std::size_t count = candidates.size();
   const int workers = share && share->workers > 1 ? share->workers : 1;
   const int me = workers > 1 ? share->worker : 0;
@@ -575,7 +582,8 @@ std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandida
   try {
     for (std::size_t i = block_begin(me); i < block_begin(me + 1); i++) {
       if (candidates[i].frozen) continue;
-      ContactManifold m = compute(candidates[i]);
+      found[i].simplex = candidates[i].simplex;
+      ContactManifold m = compute(candidates[i], simplices ? &found[i].simplex : nullptr);
       found[i].gap = m.gap;
       found[i].points = std::move(m.points);
     }
@@ -596,6 +604,11 @@ std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandida
       for (const ContactPoint& p : found[i].points) {
         mine.insert(mine.end(), {p.position.x(), p.position.y(), p.position.z(), p.normal.x(), p.normal.y(),
                                  p.normal.z(), p.gap});
+      }
+      if (simplices) {
+        const GjkSimplex& s = found[i].simplex;
+        mine.push_back(s.size);
+        for (int k = 0; k < s.size; k++) mine.insert(mine.end(), {double(s.a[k]), double(s.b[k])});
       }
     }
   const std::vector<double> all = share->all_gather(mine);
@@ -629,6 +642,15 @@ std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandida
         // (the step uses position, normal and gap only: the surface points are not sent)
         p.point_a = p.point_b = p.position;
         r.points.push_back(p);
+      }
+      if (simplices) {
+        r.simplex.size = static_cast<int>(next());
+        if (r.simplex.size < 0 || r.simplex.size > 4)
+          throw NumericalFailure("grain step: the joined narrow phase has a simplex of size " + std::to_string(r.simplex.size));
+        for (int k = 0; k < r.simplex.size; k++) {
+          r.simplex.a[k] = static_cast<int>(next());
+          r.simplex.b[k] = static_cast<int>(next());
+        }
       }
       if (w != me) found[i] = std::move(r);
     }
@@ -736,11 +758,15 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   std::vector<NarrowPhaseCandidate> candidates;
   const bool reuse = n > 0 && pairs && pairs->valid(grains, library, activation);
   const double skin = pairs && !reuse ? pairs->skin() : 0.0;
+  const bool warm_geometry = options.warm_geometry && pairs;
   if (reuse) {
     pairs->count_reuse();
-    for (const GrainPairCache::KeptPair& p : pairs->pairs())
+    const std::vector<GrainPairCache::KeptPair>& kept = pairs->pairs();
+    for (std::size_t i = 0; i < kept.size(); i++) {
+      const GrainPairCache::KeptPair& p = kept[i];
       if (!(asleep(p.a) && asleep(p.b)) && !pairs->still_apart(p, activation))
-        candidates.push_back({p.a, p.b, -1, false});
+        candidates.push_back({p.a, p.b, -1, false, static_cast<int>(i), warm_geometry ? p.simplex : GjkSimplex()});
+    }
   } else if (n > 0) {
     BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
     for (const GrainState& g : grains) grid.insert(g.position);
@@ -756,7 +782,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
       });
       std::sort(near.begin(), near.end());
       // a pair of sleepers is frozen: not computed, kept in the cache for when one wakes
-      for (int b : near) candidates.push_back({a, b, -1, asleep(a) && asleep(b)});
+      for (int b : near) candidates.push_back({a, b, -1, asleep(a) && asleep(b), -1, GjkSimplex()});
     }
   }
   for (int w = 0; w < (int)walls.size(); w++)
@@ -764,7 +790,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
       if (asleep(b)) continue;  // frozen (a moving wall within reach woke it above)
       if (walls[w].normal.dot(grains[b].position - walls[w].point) > library[grains[b].shape].bounding_radius + activation)
         continue;
-      candidates.push_back({-1, b, w, false});
+      candidates.push_back({-1, b, w, false, -1, GjkSimplex()});
     }
   ContactOptions build_options = contact_options;  // a cache build learns which pairs lie beyond activation + skin
   build_options.exit_beyond_activation = skin;
@@ -773,24 +799,29 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
     if (!posed[k]) posed[k].emplace(library[grains[k].shape].shape, grains[k].position, grains[k].orientation);
     return *posed[k];
   };
-  const std::vector<NarrowPhaseResult> found = narrow_phase(candidates, share, [&](const NarrowPhaseCandidate& c) {
+  const auto compute = [&](const NarrowPhaseCandidate& c, GjkSimplex* simplex) {
     if (c.wall >= 0) {
       Plane plane;
       plane.point = walls[c.wall].point;
       plane.normal = walls[c.wall].normal;
       return plane_contact(plane, posed_grain(c.b), activation, contact_options);
     }
-    return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, reuse ? contact_options : build_options);
-  });
+    return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, reuse ? contact_options : build_options,
+                            simplex);
+  };
+  const std::vector<NarrowPhaseResult> found = narrow_phase(candidates, share, warm_geometry, compute);
 
   if (pairs && !reuse && n > 0) {
     pairs->begin_build();
     for (std::size_t i = 0; i < candidates.size(); i++) {
       const NarrowPhaseCandidate& c = candidates[i];
       if (c.wall < 0 && (c.frozen || found[i].gap < activation + skin))
-        pairs->keep(c.a, c.b, c.frozen ? -std::numeric_limits<double>::infinity() : found[i].gap);
+        pairs->keep(c.a, c.b, c.frozen ? -std::numeric_limits<double>::infinity() : found[i].gap, found[i].simplex);
     }
     pairs->end_build(grains, library, activation);
+  } else if (warm_geometry && reuse) {
+    for (std::size_t i = 0; i < candidates.size(); i++)
+      if (candidates[i].kept >= 0) pairs->set_simplex(static_cast<std::size_t>(candidates[i].kept), found[i].simplex);
   }
 
   // 3. the points made in top-down order (descending z, ties in detection order: the

@@ -136,6 +136,11 @@ struct GrainStepOptions {
   // distance (ContactOptions::near_vertices; fix keyword `manifold near_vertices`), or the
   // closest features only (`manifold closest`)
   bool near_vertices = true;
+  // GJK of a pair kept by the pair cache starts from the simplex of the pair's last
+  // narrow phase (GjkSimplex, core/geometry/contact_geometry.h; fix keyword
+  // `warm_geometry`): the same contacts to GJK's tolerance, not to the bit. Without the
+  // cache (skin 0) every GJK starts cold.
+  bool warm_geometry = true;
   // rolling resistance μ_r ≥ 0 (not in the paper; fix keyword `rolling_friction`): each
   // contact point resists rolling with a couple of at most μ_r R r_n, R the sum of the
   // two sweep radii (a wall's is 0): the radius of the rounded edges the grains roll on,
