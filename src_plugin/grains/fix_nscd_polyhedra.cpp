@@ -56,7 +56,8 @@ constexpr int kGrainRecord = 25 + kSleepState;
 constexpr int kAtomRecord = 12 + kSleepState;
 // the first number of the fix's global restart data (older builds wrote 0 or 1 there);
 // -2: points without rolling couples (sessions 18–25), still read
-constexpr double kRestartLayout = -3.0;
+constexpr double kRestartLayout = -4.0;               // + the pair cache (session 31)
+constexpr double kRestartLayoutWithoutCache = -3.0;
 constexpr double kRestartLayoutWithoutCouples = -2.0;
 
 }  // namespace
@@ -397,9 +398,6 @@ void FixNSCDPolyhedra::setup(int /*vflag*/) {
   }
   run_end_known_ = false;
   run_end_velocities_.clear();
-  // each run's GJKs start cold (restart files keep no simplex: a continued run repeats
-  // the straight one to the bit)
-  if (core_->pairs) core_->pairs->forget_simplices();
   if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
   pose_version_++;
 }
@@ -817,7 +815,9 @@ double FixNSCDPolyhedra::compute_vector(int k) {
 
 // restart: a layout mark, whether a solve happened, the sub-cycle state (steps summed, a
 // pending move and its h), the wall positions, the warm-start impulses (with each point's
-// normal, gap and status: frozen points; and its rolling couple) and the stick-solve backoff
+// normal, gap and status: frozen points; and its rolling couple), the stick-solve backoff
+// and the pair cache (its kept pairs' GJK simplices are warm starts: without them the
+// continued run would differ from the straight one in the last bits)
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   if (comm->me != 0) return;
   std::vector<double> data = {kRestartLayout, solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
@@ -847,6 +847,9 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
   }
   data.push_back(core_->impulses.backoff.skip);
   data.push_back(core_->impulses.backoff.wait);
+  const std::vector<double> cache = core_->pairs ? core_->pairs->serialize() : std::vector<double>();
+  data.push_back(double(cache.size()));  // 0: no cache
+  data.insert(data.end(), cache.begin(), cache.end());
   const int size = (int)(data.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(data.data(), sizeof(double), data.size(), fp);
@@ -854,7 +857,8 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
 
 void FixNSCDPolyhedra::restart(char *buf) {
   const double *d = reinterpret_cast<const double *>(buf);
-  if (d[0] != kRestartLayout && d[0] != kRestartLayoutWithoutCouples) {  // a file of a build before sleeping
+  if (d[0] != kRestartLayout && d[0] != kRestartLayoutWithoutCache &&
+      d[0] != kRestartLayoutWithoutCouples) {  // a file of a build before sleeping
     if (comm->me == 0)
       error->warning(FLERR, ("fix nscd/polyhedra (id " + std::string(id) +
                              "): the restart file comes from an older build: the grains start without warm start")
@@ -869,7 +873,7 @@ void FixNSCDPolyhedra::restart(char *buf) {
   const size_t nwalls = (size_t)d[k++];
   for (size_t w = 0; w < nwalls; w++, k += 3)
     if (w < core_->walls.size()) core_->walls[w].point = vec3(d + k);
-  const size_t point_record = d[0] == kRestartLayout ? 14 : 11;
+  const size_t point_record = d[0] == kRestartLayoutWithoutCouples ? 11 : 14;
   const size_t entries = (size_t)d[k++];
   core_->impulses.clear();
   for (size_t e = 0; e < entries; e++) {
@@ -888,4 +892,12 @@ void FixNSCDPolyhedra::restart(char *buf) {
   core_->impulses.commit();
   core_->impulses.backoff.skip = (int)d[k++];
   core_->impulses.backoff.wait = (int)d[k++];
+  const size_t cache_numbers = d[0] == kRestartLayout ? (size_t)d[k++] : 0;
+  if (cache_numbers > 0 && core_->pairs) {
+    try {
+      core_->pairs->restore(d + k, cache_numbers);
+    } catch (const std::exception &e) {
+      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, std::string("restart file: ") + e.what());
+    }
+  }
 }

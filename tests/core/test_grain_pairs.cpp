@@ -120,7 +120,8 @@ void expect_problem_within_rounding(const GrainStepProblem& a, const GrainStepPr
 // step, and so is the detection shared by 3 workers (every 25th step: each worker's cache
 // is built then, and reused when still valid). On: the cache's problem is the full
 // search's to rounding, and the shared detection's (every step, each worker with its own
-// cache) is the single cache's to the bit: every worker holds every pair's simplex.
+// cache) is the single cache's to the bit: every worker holds every pair's simplex. A
+// cache restored from its restart record goes on as the one it was written from.
 void pour_and_compare(bool warm_geometry) {
   std::mt19937_64 rng(915);
   ShapeLibrary library;
@@ -149,6 +150,7 @@ void pour_and_compare(bool warm_geometry) {
   GrainImpulseMemory memory, memory_cached;
   GrainPairCache cache(0.1);
   std::vector<GrainPairCache> worker_caches(3, GrainPairCache(0.1));
+  GrainPairCache restored(0.1);
   int shared_checks = 0;
   int with_points = 0;
   const int steps = 3000;
@@ -164,6 +166,17 @@ void pour_and_compare(bool warm_geometry) {
       for (const GrainStepProblem& shared : assemble_shared(3, grains, library, walls, h, options, memory, worker_caches))
         expect_same_problem(warm_geometry ? cached : full, shared, step);
       shared_checks += !full.points.empty();
+    }
+    // a cache restored from the numbers of a restart file at step 1500 goes on as the one
+    // it was written from, to the bit (its simplices too)
+    if (step == 1500) {
+      const std::vector<double> record = cache.serialize();
+      restored.restore(record.data(), record.size());
+      EXPECT_EQ(restored.serialize(), record);
+    }
+    if (step >= 1500) {
+      GrainImpulseMemory unused = memory_cached;
+      expect_same_problem(cached, assemble_grain_step(grains, library, walls, h, options, unused, &restored), step);
     }
     if (::testing::Test::HasFailure()) return;
     with_points += !full.points.empty();
@@ -195,6 +208,37 @@ void pour_and_compare(bool warm_geometry) {
 TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) { pour_and_compare(false); }
 
 TEST(GrainPairCache, WithWarmGeometryGivesTheFullSearchToRoundingOnAnyNumberOfWorkers) { pour_and_compare(true); }
+
+TEST(GrainPairCache, RestoreRefusesABrokenRecordAndIgnoresAnotherSkin) {
+  ShapeLibrary library;
+  library.add(ConvexShape::cube(1.0, 0.0));
+  std::vector<GrainState> grains = grain_column(2, 0.0, 1.05);
+  GrainPairCache cache(0.1);
+  cache.begin_build();
+  GjkSimplex simplex;
+  simplex.size = 2;
+  simplex.a = {3, 5, 0, 0};
+  simplex.b = {1, 2, 0, 0};
+  cache.keep(0, 1, 0.05, simplex);
+  cache.end_build(grains, library, 0.01);
+  const std::vector<double> record = cache.serialize();
+  GrainPairCache same(0.1), other(0.2), broken(0.1);
+  EXPECT_EQ(same.restore(record.data(), record.size()), record.size());
+  ASSERT_EQ(same.pairs().size(), 1u);
+  EXPECT_EQ(same.pairs()[0].simplex.size, 2);
+  EXPECT_EQ(same.pairs()[0].simplex.a[1], 5);
+  EXPECT_TRUE(same.valid(grains, library, 0.01));
+  EXPECT_EQ(other.restore(record.data(), record.size()), record.size());  // read, not taken
+  EXPECT_TRUE(other.pairs().empty());
+  EXPECT_FALSE(other.valid(grains, library, 0.01));
+  try {
+    broken.restore(record.data(), record.size() - 1);
+    FAIL() << "a record one number short was taken";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.argument(), "data");
+    EXPECT_NE(std::string(e.what()).find("ends early"), std::string::npos) << e.what();
+  }
+}
 
 TEST(GrainPairCache, ATurnAboutTheCentreInvalidatesIt) {
   // two cubes 0.3 apart face to face; turning one by 20° about the axis through both

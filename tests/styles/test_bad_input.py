@@ -268,6 +268,7 @@ class NscdKeywords(Table):
     P = "fix nscd/polyhedra (id nscd): "
     CASES = (
         (NSCD + "warm_start maybe\nrun 1", P + "value of 'warm_start' must be yes or no, got 'maybe'"),
+        (NSCD + "warm_geometry 1\nrun 1", P + "value of 'warm_geometry' must be yes or no, got '1'"),
         (NSCD + "convergence fast\nrun 1", P + "value of 'convergence' must be natural_map, increment or both, got 'fast'"),
         (NSCD + "manifold all\nrun 1", P + "value of 'manifold' must be near_vertices or closest, got 'all'"),
         (NSCD + "manifold\nrun 1", P + "missing value after 'manifold'"),

@@ -448,12 +448,15 @@ class PairReuse(DeckTestCase):
     def test_the_pair_cache_gives_the_forces_of_a_search_every_step(self):
         # keyword skin: the (segment, grain) pairs kept while nothing moved more than the
         # skin; the pairs it evaluates include every touching one, in the same order, so
-        # the trajectory is that of skin 0 (a full search every sub-step) to the last bit.
+        # the trajectory is that of skin 0 (a full search every sub-step) to the last bit
+        # (warm_geometry no; with the default yes the cached pairs' GJK starts from their
+        # last simplex: the same to GJK's tolerance, checked below).
         # The cubes slide and tumble under the falling wire, contacts open and close.
         made = three_cube_scene()
         states, evaluations = {}, {}
-        for skin in (0, 0.05, 0.3):
-            r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact=f"skin {skin}") + f"""
+        for skin in (0, 0.05, 0.3, "0.05 warm"):
+            contact = f"skin {skin} warm_geometry no" if skin != "0.05 warm" else "skin 0.05"
+            r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact=contact) + f"""
 set             group grains vx 0.4
 set             group grains vy -0.2
 variable        evaluations equal f_wg[7]
@@ -474,6 +477,9 @@ run             1200
             for column in ("x", "y", "z", "vx", "vy", "vz"):
                 np.testing.assert_array_equal(states[skin][column], states[0][column], err_msg=f"skin {skin} {column}")
         self.assertLess(evaluations[0.05], evaluations[0])
+        warm = max(np.max(np.abs(states["0.05 warm"][c] - states[0][c])) for c in ("x", "y", "z"))
+        print(f"warm_geometry yes against the full search: positions within {warm:.2e}")
+        self.assertLess(warm, 1e-10)
 
 
 class Warnings(DeckTestCase):
@@ -543,6 +549,10 @@ class Errors(DeckTestCase):
                    "fix wire/grain (id wg): value of 'max_stretch' must be > 0, got 0")
         self.check(nscd + "fix wg wire wire/grain grains skin -0.1",
                    "fix wire/grain (id wg): value of 'skin' must be >= 0, got -0.1")
+        self.check(nscd + "fix wg wire wire/grain grains warm_geometry on",
+                   "fix wire/grain (id wg): value of 'warm_geometry' must be yes or no, got 'on'")
+        self.check(nscd + "fix wg wire wire/grain grains warm_geometry",
+                   "fix wire/grain (id wg): missing value after 'warm_geometry'")
         self.check(nscd + "fix wg wire wire/grain grains stiffness 3",
                    "fix wire/grain (id wg): unknown keyword 'stiffness'")
         self.check(nscd + "fix wg wire wire/grain grains mu_d",

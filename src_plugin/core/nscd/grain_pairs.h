@@ -60,12 +60,15 @@ class GrainPairCache {
   const std::vector<KeptPair>& pairs() const { return pairs_; }
   // the simplex of kept pair i (an index into pairs())
   void set_simplex(std::size_t i, const GjkSimplex& simplex) { pairs_.at(i).simplex = simplex; }
-  // every kept pair's next narrow phase starts cold (fix nscd/polyhedra at the start of
-  // each run: a run continued from a restart file, which keeps no simplex, then repeats
-  // the run it continues to the bit)
-  void forget_simplices() {
-    for (KeptPair& p : pairs_) p.simplex = GjkSimplex();
-  }
+  // The state a run continued from a restart file needs to repeat the straight run to
+  // the bit (the simplices are warm starts: a cache built anew would start them cold):
+  // the skin, the build's activation distance, reference poses and kept pairs with their
+  // simplices, as numbers (fix nscd/polyhedra's restart file). restore() takes them back
+  // from `data` (`count` numbers available) and returns how many it read; a cache of
+  // another skin, or not built, is left to build anew (still reading its numbers).
+  // InvalidArgument("data", ...) when the numbers are not such a record.
+  std::vector<double> serialize() const;
+  std::size_t restore(const double* data, std::size_t count);
   // After valid() returned true: whether the kept pair cannot have come within
   // `activation` (counted in skipped())
   bool still_apart(const KeptPair& pair, double activation) {
