@@ -282,9 +282,10 @@ void FixWireGrain::init() {
 // order of the fixes. Springs are not advanced; the grains get this step's force as is.
 void FixWireGrain::setup_pre_force(int /*vflag*/) {
   check_time_step();
-  // each run's GJKs start cold (restart files keep no simplex: a continued run repeats
-  // the straight one)
-  if (core_->pairs) core_->pairs->forget_simplices();
+  // each run starts with the pair cache empty (it is per rank and not in restart files:
+  // a continued run then does what the straight one does; its pairs' GJK simplices are
+  // warm starts)
+  if (core_->pairs) core_->pairs->clear();
   hold_grains();
   evaluate(true);
 }

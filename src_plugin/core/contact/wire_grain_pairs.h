@@ -52,12 +52,14 @@ class WireGrainPairCache {
   double skin() const { return skin_; }
   // whether evaluate gets the pairs' simplices (on by default)
   void set_warm_geometry(bool on) { warm_geometry_ = on; }
-  // every kept pair's next evaluation starts cold (fix wire/grain at the start of each
-  // run: a run continued from a restart file, which keeps no simplex, repeats the
-  // straight one)
-  void forget_simplices() {
-    for (auto& entry : entries_)
-      for (Pair& p : entry.second.pairs) p.simplex = GjkSimplex();
+  // Drops every entry and the reference poses: the next hold() resets, every segment's
+  // entry is built anew, its pairs' GJKs start cold (fix wire/grain at the start of each
+  // run: a run continued from a restart file, which keeps no cache, then does what the
+  // straight run does; the entries are per rank, not in the restart file).
+  void clear() {
+    reference_.clear();
+    entries_.clear();
+    grain_moved_.clear();
   }
   // The grains as held now (after every new HeldGrains): updates D, resets the reference
   // when the grains changed or D ≥ skin / 2.
