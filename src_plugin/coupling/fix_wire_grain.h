@@ -122,7 +122,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   double segment_reach_;         // largest half segment stretched by max_stretch_ + r_w
   double max_stretch_;           // keyword max_stretch: the strain the contact search allows
   double skin_;                  // keyword skin: pairs kept while nothing moved more (0: search every step)
-  bool warm_geometry_ = true;    // keyword warm_geometry: GJK from each kept pair's last simplex
+  bool warm_geometry_ = false;   // keyword warm_geometry: GJK from each kept pair's last simplex
   bool stretch_warned_;          // the warning of a segment beyond max_stretch was given
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains

@@ -524,8 +524,8 @@ class RanksAndRestart(DeckTestCase):
     # restart comes at t = 1.2, when the heap has settled and its stick solves are being
     # skipped: without the backoff in the restart file the runs differed by 2.9e-11. With
     # rolling_friction the restart file carries the warm-start couples too. The pair cache
-    # (with warm_geometry, the default, its pairs' GJK simplices) is in the restart file:
-    # without it the runs differed by 8.0e-12 (1.8e-10 with rolling_friction).
+    # (with warm_geometry yes, its pairs' GJK simplices) is in the restart file: without it
+    # the runs with warm_geometry differed by 8.0e-12 (1.8e-10 with rolling_friction).
     BODY = """
 fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra tolerance 1e-6 EXTRA wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
@@ -536,8 +536,11 @@ dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
     def test_same_state(self):
         self.check_same_state("")
 
-    def test_same_state_with_rolling_friction(self):
-        self.check_same_state("rolling_friction 0.2")
+    def test_same_state_with_warm_geometry(self):
+        self.check_same_state("warm_geometry yes")
+
+    def test_same_state_with_rolling_friction_and_warm_geometry(self):
+        self.check_same_state("rolling_friction 0.2 warm_geometry yes")
 
     def check_same_state(self, extra):
         made = heap_of_30()
@@ -573,7 +576,7 @@ class PairReuse(DeckTestCase):
     # among them, visited in the same order, and a kept pair is skipped only while its gap
     # minus how far its grains moved stays beyond the activation distance, so a pour into
     # a box follows the trajectory of a search every step (skin 0) to the last bit, with 1
-    # or 2 ranks (warm_geometry no: with the default yes the cached pairs' GJK starts from
+    # or 2 ranks (warm_geometry no, the default: with yes the cached pairs' GJK starts from
     # their last simplex, the same to GJK's tolerance, not to the bit; RanksAndRestart)
     def test_pour_follows_the_full_search_to_the_bit(self):
         made = heap_of_30()

@@ -449,13 +449,13 @@ class PairReuse(DeckTestCase):
         # keyword skin: the (segment, grain) pairs kept while nothing moved more than the
         # skin; the pairs it evaluates include every touching one, in the same order, so
         # the trajectory is that of skin 0 (a full search every sub-step) to the last bit
-        # (warm_geometry no; with the default yes the cached pairs' GJK starts from their
+        # (warm_geometry no, the default; with yes the cached pairs' GJK starts from their
         # last simplex: the same to GJK's tolerance, checked below).
         # The cubes slide and tumble under the falling wire, contacts open and close.
         made = three_cube_scene()
         states, evaluations = {}, {}
         for skin in (0, 0.05, 0.3, "0.05 warm"):
-            contact = f"skin {skin} warm_geometry no" if skin != "0.05 warm" else "skin 0.05"
+            contact = f"skin {skin} warm_geometry no" if skin != "0.05 warm" else "skin 0.05 warm_geometry yes"
             r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact=contact) + f"""
 set             group grains vx 0.4
 set             group grains vy -0.2

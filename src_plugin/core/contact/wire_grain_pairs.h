@@ -50,7 +50,7 @@ class WireGrainPairCache {
   explicit WireGrainPairCache(double skin);
 
   double skin() const { return skin_; }
-  // whether evaluate gets the pairs' simplices (on by default)
+  // whether evaluate gets the pairs' simplices (off by default: fix wire/grain's keyword)
   void set_warm_geometry(bool on) { warm_geometry_ = on; }
   // Drops every entry and the reference poses: the next hold() resets, every segment's
   // entry is built anew, its pairs' GJKs start cold (fix wire/grain at the start of each
@@ -135,7 +135,7 @@ class WireGrainPairCache {
     Eigen::Quaterniond orientation;
   };
   double skin_;
-  bool warm_geometry_ = true;
+  bool warm_geometry_ = false;
   long epoch_ = 0;
   double grain_bound_ = 0.0;
   std::vector<double> grain_moved_;           // D_k, in HeldGrains' order
