@@ -209,18 +209,30 @@ TEST(GrainPairCache, GivesTheProblemOfAFullSearchWhileGrainsArePouredAndSettle) 
 
 TEST(GrainPairCache, WithWarmGeometryGivesTheFullSearchToRoundingOnAnyNumberOfWorkers) { pour_and_compare(true); }
 
-TEST(GrainPairCache, RestoreRefusesABrokenRecordAndIgnoresAnotherSkin) {
+// Two unit cubes (tags 1, 2) on the z axis `dz` apart and a cache (skin 0.1) built over
+// them at activation 0.01, keeping their pair with `simplex` when one is given.
+struct TwoCubes {
   ShapeLibrary library;
-  library.add(ConvexShape::cube(1.0, 0.0));
-  std::vector<GrainState> grains = grain_column(2, 0.0, 1.05);
-  GrainPairCache cache(0.1);
-  cache.begin_build();
+  std::vector<GrainState> grains;
+  GrainPairCache cache{0.1};
+  explicit TwoCubes(double dz, const GjkSimplex* simplex = nullptr) {
+    library.add(ConvexShape::cube(1.0, 0.0));
+    grains = grain_column(2, 0.0, dz);
+    cache.begin_build();
+    if (simplex) cache.keep(0, 1, 0.05, *simplex);
+    cache.end_build(grains, library, 0.01);
+  }
+};
+
+TEST(GrainPairCache, RestoreRefusesABrokenRecordAndIgnoresAnotherSkin) {
   GjkSimplex simplex;
   simplex.size = 2;
   simplex.a = {3, 5, 0, 0};
   simplex.b = {1, 2, 0, 0};
-  cache.keep(0, 1, 0.05, simplex);
-  cache.end_build(grains, library, 0.01);
+  TwoCubes two(1.05, &simplex);
+  ShapeLibrary& library = two.library;
+  std::vector<GrainState>& grains = two.grains;
+  GrainPairCache& cache = two.cache;
   const std::vector<double> record = cache.serialize();
   GrainPairCache same(0.1), other(0.2), broken(0.1);
   EXPECT_EQ(same.restore(record.data(), record.size()), record.size());
@@ -243,12 +255,10 @@ TEST(GrainPairCache, RestoreRefusesABrokenRecordAndIgnoresAnotherSkin) {
 TEST(GrainPairCache, ATurnAboutTheCentreInvalidatesIt) {
   // two cubes 0.3 apart face to face; turning one by 20° about the axis through both
   // centres moves no centre, but its corners sweep 2 R sin(10°) ≈ 0.3 > skin/2
-  ShapeLibrary library;
-  library.add(ConvexShape::cube(1.0, 0.0));
-  std::vector<GrainState> grains = grain_column(2, 0.0, 1.3);
-  GrainPairCache cache(0.1);
-  cache.begin_build();
-  cache.end_build(grains, library, 0.01);
+  TwoCubes two(1.3);
+  ShapeLibrary& library = two.library;
+  std::vector<GrainState>& grains = two.grains;
+  GrainPairCache& cache = two.cache;
   EXPECT_TRUE(cache.valid(grains, library, 0.01));
   EXPECT_FALSE(cache.valid(grains, library, 0.2));  // a larger activation distance
   grains[1].orientation = Quaterniond(Eigen::AngleAxisd(20.0 * M_PI / 180.0, Vector3d::UnitZ()));
