@@ -1,0 +1,29 @@
+#!/usr/bin/python3
+# Session 32, warm_geometry again. 1: new seeds 20020-25025, warm_geometry no and yes run
+# side by side (new_seeds.csv; seed 20020's warm run is session 31's,
+# ../warm_geometry_s31/new_seeds.csv). 2: every seed with both arms (sessions 28, 31, 32).
+# 3: a rounding-only control: session 30's -march=native build (the same code, FMA's last
+# bits) against session 28's portable-build runs of the same seeds (control.csv).
+import os
+import sys
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from paired_arms import compare, load
+RUNS = os.path.dirname(HERE)
+shipped = load(os.path.join(RUNS, 'early_end_s28', 'summary.csv'), '1e-6')
+s31 = os.path.join(RUNS, 'warm_geometry_s31')
+warm31, cold31, warm31_new = (load(os.path.join(s31, 'summary.csv'), 'yes'), load(os.path.join(s31, 'new_seeds.csv'), 'no'),
+                              load(os.path.join(s31, 'new_seeds.csv'), 'yes'))
+new = os.path.join(HERE, 'new_seeds.csv')
+cold32, warm32 = load(new, 'no'), load(new, 'yes')
+print("1. seeds 20020-25025 (new): warm_geometry no against yes")
+compare(cold32, {**warm31_new, **warm32}, 'cold', 'warm')
+print("2. every seed with both arms")
+cold_all, warm_all = {**shipped, **cold31, **cold32}, {**warm31, **warm31_new, **warm32}
+seeds = compare(cold_all, warm_all, 'cold', 'warm')
+up = sum(float(warm_all[s]['H_n']) > float(cold_all[s]['H_n']) for s in seeds)
+print(f"   H_n higher warm than cold in {up} of {len(seeds)} seeds")
+control = os.path.join(HERE, 'control.csv')
+if os.path.exists(control):
+    print("3. rounding-only control: the portable build (session 28's runs) against -march=native")
+    compare(shipped, load(control, '1e-6'), 'portable', 'native')
