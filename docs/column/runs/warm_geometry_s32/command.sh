@@ -16,3 +16,9 @@ postprocess/sweep.py warm_geometry yes --seeds 21021 22022 23023 24024 25025 $V 
 #    session 30's tree (its deck has no warm_geometry), beside the two lanes above
 postprocess/sweep.py ke_relax 1e-6 --seeds 8008 9009 10010 11011 12012 13013 $V --liggghts NATIVE_BUILD/liggghts --jobs 1 --out control &
 wait
+# 3. the cold build with a rounding-size noise that changes from call to call
+#    (jitter.patch applied to a5dadca: gaps +-3e-17, normals +-3e-15 per component, on the
+#    grain pairs' points and the touching segment-grain pairs), jitter.csv
+WG_JITTER=3e-17 postprocess/sweep.py warm_geometry no --seeds 8008 10010 12012 14014 16016 18018 $V --jobs 1 --out jitter_a &
+WG_JITTER=3e-17 postprocess/sweep.py warm_geometry no --seeds 9009 11011 13013 15015 17017 19019 $V --jobs 1 --out jitter_b &
+wait

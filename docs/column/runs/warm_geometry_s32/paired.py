@@ -27,3 +27,12 @@ control = os.path.join(HERE, 'control.csv')
 if os.path.exists(control):
     print("3. rounding-only control: the portable build (session 28's runs) against -march=native")
     compare(shipped, load(control, '1e-6'), 'portable', 'native')
+jitter = os.path.join(HERE, 'jitter.csv')
+if os.path.exists(jitter):
+    print("4. the cold build with a rounding-size noise that changes from call to call (jitter.patch,")
+    print("   WG_JITTER=3e-17) against the cold runs of the same seeds")
+    noisy = load(jitter, 'no')
+    compare({**shipped, **cold31}, noisy, 'cold', 'jitter')
+    seeds = sorted(set(noisy) & set({**shipped, **cold31}))
+    up = sum(float(noisy[s]['H_n']) > float({**shipped, **cold31}[s]['H_n']) for s in seeds)
+    print(f"   H_n higher with the noise in {up} of {len(seeds)} seeds")
