@@ -476,10 +476,7 @@ void FixNSCDPolyhedra::solve_step() {
   try {
     // detection shared: each rank computes a block of the candidate pairs, the blocks are
     // all-gathered (the same problem on every rank, to the bit)
-    wiregrain::NarrowPhaseShare share;
-    share.worker = comm->me;
-    share.workers = comm->nprocs;
-    share.all_gather = [this](const std::vector<double> &mine) { return wiregrain_lmp::all_gather_records(world, mine); };
+    const wiregrain::WorkShare share = rank_share();
     problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses,
                                              core_->pairs.get(), share_detection_ ? &share : nullptr);
   } catch (const std::exception &e) {  // the same on every rank (replicated solve)
@@ -512,6 +509,16 @@ void FixNSCDPolyhedra::solve_step() {
   summed_steps_ = 0;
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 6; k++) force_sum_[i][k] = 0.0;
+}
+
+// The ranks as workers of the shared detection (detection shared): each computes a block
+// of the candidate pairs, the blocks are all-gathered.
+wiregrain::WorkShare FixNSCDPolyhedra::rank_share() {
+  wiregrain::WorkShare share;
+  share.worker = comm->me;
+  share.workers = comm->nprocs;
+  share.all_gather = [this](const std::vector<double> &mine) { return wiregrain_lmp::all_gather_records(world, mine); };
+  return share;
 }
 
 // The walls defined by a fix wire/wall (wall_fix): its plane and velocity at this step.

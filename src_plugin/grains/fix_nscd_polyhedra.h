@@ -82,6 +82,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #include <vector>
 
 #include "common/contact_publisher.h"
+#include "core/common/work_share.h"
 #include "fix.h"
 
 namespace wiregrain {
@@ -174,6 +175,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
+  wiregrain::WorkShare rank_share();
   void project_overlaps(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepProblem &,
                         const wiregrain::GrainStepResult &);
   void record_stats(const wiregrain::GrainStepResult &);

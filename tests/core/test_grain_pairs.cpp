@@ -7,17 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <condition_variable>
 #include <limits>
-#include <mutex>
 #include <random>
 #include <string>
-#include <thread>
 
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
 #include "core/nscd/grain_pairs.h"
 #include "core/nscd/grain_step.h"
+#include "threaded_workers.h"
 
 using namespace wiregrain;
 using Eigen::Quaterniond;
@@ -60,36 +58,15 @@ std::vector<GrainState> grain_column(int count, double z0, double dz) {
 }
 
 // The step assembled by `workers` workers on threads with the detection shared
-// (NarrowPhaseShare): all_gather joins their blocks in worker order; each worker has its
-// own pair cache, as each MPI rank has.
+// (threaded_workers.h); each worker has its own pair cache, as each MPI rank has.
 std::vector<GrainStepProblem> assemble_shared(int workers, const std::vector<GrainState>& grains,
                                               const ShapeLibrary& library, const std::vector<PlaneWall>& walls,
                                               double h, const GrainStepOptions& options,
                                               const GrainImpulseMemory& memory, std::vector<GrainPairCache>& caches) {
-  std::mutex mutex;
-  std::condition_variable all_arrived;
-  std::vector<std::vector<double>> blocks(workers);
-  int arrived = 0;
   std::vector<GrainStepProblem> problems(workers);
-  std::vector<std::thread> threads;
-  for (int w = 0; w < workers; ++w)
-    threads.emplace_back([&, w] {
-      NarrowPhaseShare share;
-      share.worker = w;
-      share.workers = workers;
-      share.all_gather = [&, w](const std::vector<double>& mine) {
-        std::unique_lock<std::mutex> lock(mutex);
-        blocks[w] = mine;
-        ++arrived;
-        all_arrived.notify_all();
-        all_arrived.wait(lock, [&] { return arrived == workers; });
-        std::vector<double> all;
-        for (const std::vector<double>& b : blocks) all.insert(all.end(), b.begin(), b.end());
-        return all;
-      };
-      problems[w] = assemble_grain_step(grains, library, walls, h, options, memory, &caches[w], &share);
-    });
-  for (std::thread& t : threads) t.join();
+  run_threaded_workers(workers, [&](const WorkShare& share, int w) {
+    problems[w] = assemble_grain_step(grains, library, walls, h, options, memory, &caches[w], &share);
+  });
   return problems;
 }
 
@@ -277,7 +254,7 @@ TEST(GrainPairCache, ASharedDetectionWithABadJoinIsRefused) {
   const std::vector<GrainState> grains = grain_column(2, 0.6, 1.15);
   GrainStepOptions options;
   GrainImpulseMemory memory;
-  NarrowPhaseShare share;
+  WorkShare share;
   share.workers = 2;
   share.all_gather = [](const std::vector<double>& mine) { return mine; };  // the other block missing
   EXPECT_THROW(assemble_grain_step(grains, library, box_walls(3.0), 1e-3, options, memory, nullptr, &share),

@@ -559,103 +559,64 @@ struct NarrowPhaseResult {
   GjkSimplex simplex;                                    // GJK's last (with `simplices`)
 };
 
-// The contact manifolds of the candidates (NarrowPhaseShare): this worker's block by
+// The contact manifolds of the candidates, shared out (share_out, core/common/work_share.h):
 // `compute(candidate, simplex)` (simplex: null, or GJK's warm start from the candidate's,
-// left with its last), the others' from the joined buffer. The buffer of a block: its
-// status (0, or the length + 1 of the message of an exception thrown in it, then the
-// message's characters), then per candidate its gap, its point count and 7 numbers per
-// point, and with `simplices` the simplex's size and its index pairs (every worker then
-// holds every pair's simplex, whoever computed it: the next step's warm start is the same
-// on any number of workers). Every worker throws when any block failed, with that block's
-// message.
+// left with its last). The numbers of a candidate: its gap, its point count and 7 numbers
+// per point, and with `simplices` the simplex's size and its index pairs (every worker
+// then holds every pair's simplex, whoever computed it: the next step's warm start is the
+// same on any number of workers).
 template <class Compute>
 std::vector<NarrowPhaseResult> narrow_phase(const std::vector<NarrowPhaseCandidate>& candidates,
-                                            const NarrowPhaseShare* share, bool simplices, const Compute& compute) {
-  const std::size_t count = candidates.size();
-  const int workers = share && share->workers > 1 ? share->workers : 1;
-  const int me = workers > 1 ? share->worker : 0;
-  if (me < 0 || me >= workers)
-    throw InvalidArgument("share", "grain step: worker " + std::to_string(me) + " of " + std::to_string(workers));
-  const auto block_begin = [&](int w) { return count * static_cast<std::size_t>(w) / static_cast<std::size_t>(workers); };
-  std::vector<NarrowPhaseResult> found(count);
-  std::string failure;
-  try {
-    for (std::size_t i = block_begin(me); i < block_begin(me + 1); i++) {
-      if (candidates[i].frozen) continue;
-      found[i].simplex = candidates[i].simplex;
-      ContactManifold m = compute(candidates[i], simplices ? &found[i].simplex : nullptr);
-      found[i].gap = m.gap;
-      found[i].points = std::move(m.points);
+                                            const WorkShare* share, bool simplices, const Compute& compute) {
+  std::vector<NarrowPhaseResult> found(candidates.size());
+  const auto compute_one = [&](std::size_t i, std::vector<double>& out) {
+    if (candidates[i].frozen) {
+      out.insert(out.end(), {found[i].gap, 0.0});
+      if (simplices) out.push_back(0.0);
+      return;
     }
-  } catch (const std::exception& e) {
-    if (workers == 1) throw;
-    failure = e.what();
-    if (failure.empty()) failure = "narrow phase failed";
-  }
-  if (workers == 1) return found;
-
-  std::vector<double> mine{failure.empty() ? 0.0 : double(failure.size() + 1)};
-  if (!failure.empty())
-    for (char ch : failure) mine.push_back(static_cast<unsigned char>(ch));
-  else
-    for (std::size_t i = block_begin(me); i < block_begin(me + 1); i++) {
-      mine.push_back(found[i].gap);
-      mine.push_back(static_cast<double>(found[i].points.size()));
-      for (const ContactPoint& p : found[i].points) {
-        mine.insert(mine.end(), {p.position.x(), p.position.y(), p.position.z(), p.normal.x(), p.normal.y(),
-                                 p.normal.z(), p.gap});
-      }
-      if (simplices) {
-        const GjkSimplex& s = found[i].simplex;
-        mine.push_back(s.size);
-        for (int k = 0; k < s.size; k++) mine.insert(mine.end(), {double(s.a[k]), double(s.b[k])});
-      }
+    found[i].simplex = candidates[i].simplex;
+    ContactManifold m = compute(candidates[i], simplices ? &found[i].simplex : nullptr);
+    found[i].gap = m.gap;
+    found[i].points = std::move(m.points);
+    out.push_back(found[i].gap);
+    out.push_back(static_cast<double>(found[i].points.size()));
+    for (const ContactPoint& p : found[i].points)
+      out.insert(out.end(), {p.position.x(), p.position.y(), p.position.z(), p.normal.x(), p.normal.y(), p.normal.z(), p.gap});
+    if (simplices) {
+      const GjkSimplex& s = found[i].simplex;
+      out.push_back(s.size);
+      for (int k = 0; k < s.size; k++) out.insert(out.end(), {double(s.a[k]), double(s.b[k])});
     }
-  const std::vector<double> all = share->all_gather(mine);
-  std::size_t at = 0;
-  const auto next = [&]() {
-    if (at >= all.size()) throw NumericalFailure("grain step: the joined narrow phase is shorter than its candidates");
-    return all[at++];
   };
-  std::string failed_block;
-  for (int w = 0; w < workers; w++) {
-    const double status = next();
-    if (status != 0.0) {
-      std::string message;
-      for (std::size_t k = 0; k + 1 < static_cast<std::size_t>(status); k++) message.push_back(static_cast<char>(next()));
-      if (failed_block.empty()) failed_block = message;
-      continue;
+  const auto read_one = [&](std::size_t i, SharedNumbers& in) {
+    NarrowPhaseResult& r = found[i];
+    r.gap = in.next();
+    const double points = in.next();
+    for (int k = 0; k < static_cast<int>(points); k++) {
+      ContactPoint p;
+      p.position.x() = in.next();
+      p.position.y() = in.next();
+      p.position.z() = in.next();
+      p.normal.x() = in.next();
+      p.normal.y() = in.next();
+      p.normal.z() = in.next();
+      p.gap = in.next();
+      // (the step uses position, normal and gap only: the surface points are not sent)
+      p.point_a = p.point_b = p.position;
+      r.points.push_back(p);
     }
-    for (std::size_t i = block_begin(w); i < block_begin(w + 1); i++) {
-      NarrowPhaseResult r;
-      r.gap = next();
-      const double points = next();
-      for (int k = 0; k < static_cast<int>(points); k++) {
-        ContactPoint p;
-        p.position.x() = next();
-        p.position.y() = next();
-        p.position.z() = next();
-        p.normal.x() = next();
-        p.normal.y() = next();
-        p.normal.z() = next();
-        p.gap = next();
-        // (the step uses position, normal and gap only: the surface points are not sent)
-        p.point_a = p.point_b = p.position;
-        r.points.push_back(p);
+    if (simplices) {
+      r.simplex.size = static_cast<int>(in.next());
+      if (r.simplex.size < 0 || r.simplex.size > 4)
+        throw NumericalFailure("grain step: the joined narrow phase has a simplex of size " + std::to_string(r.simplex.size));
+      for (int k = 0; k < r.simplex.size; k++) {
+        r.simplex.a[k] = static_cast<int>(in.next());
+        r.simplex.b[k] = static_cast<int>(in.next());
       }
-      if (simplices) {
-        r.simplex.size = static_cast<int>(next());
-        if (r.simplex.size < 0 || r.simplex.size > 4)
-          throw NumericalFailure("grain step: the joined narrow phase has a simplex of size " + std::to_string(r.simplex.size));
-        for (int k = 0; k < r.simplex.size; k++) {
-          r.simplex.a[k] = static_cast<int>(next());
-          r.simplex.b[k] = static_cast<int>(next());
-        }
-      }
-      if (w != me) found[i] = std::move(r);
     }
-  }
-  if (!failed_block.empty()) throw NumericalFailure(failed_block);
+  };
+  share_out(candidates.size(), share, compute_one, read_one);
   return found;
 }
 
@@ -688,7 +649,7 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double h, const GrainStepOptions& options,
                                      const GrainImpulseMemory& memory, GrainPairCache* pairs,
-                                     const NarrowPhaseShare* share) {
+                                     const WorkShare* share) {
   options.validate();
   check_inputs(grains, library, walls, h);
   const int n = static_cast<int>(grains.size());

@@ -61,6 +61,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/common/work_share.h"
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
 #include "core/nscd/grain_pairs.h"
@@ -210,18 +211,6 @@ struct GrainContactPoint {
   Eigen::Matrix3d frame;              // columns (n, t1, t2); n from a to b
 };
 
-// The narrow phase of a step shared out over workers (the MPI ranks of fix
-// nscd/polyhedra, which all hold every grain): the candidate pairs, in their fixed order,
-// are cut into `workers` contiguous blocks; worker k computes the contact points of block
-// k, `all_gather` joins the blocks in worker order (every worker calls it once per step
-// with its own block as a flat buffer and gets the concatenation of all), and every worker
-// assembles the same problem from them: the same points, to the bit, as one worker
-// computing every pair.
-struct NarrowPhaseShare {
-  int worker = 0, workers = 1;
-  std::function<std::vector<double>(const std::vector<double>&)> all_gather;
-};
-
 // Steps 1–4: the problem to solve.
 struct GrainStepProblem {
   NscdStep step;                              // bodies = grains (same order), contacts top-down
@@ -274,10 +263,15 @@ struct GrainStepResult {
 
 // InvalidArgument("time_step" | "grains" | "walls" | options keywords, ...) on bad input
 // (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data).
+// With `share` (several workers holding the same grains: fix nscd/polyhedra's MPI ranks)
+// the narrow phase is shared out (core/common/work_share.h): the candidate pairs (grain
+// pairs in their fixed order, then the wall pairs) in one block per worker, the contact
+// points joined, and every worker assembles the same problem from them: the same points,
+// to the bit, as one worker computing every pair.
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double time_step,
                                      const GrainStepOptions& options, const GrainImpulseMemory& memory,
-                                     GrainPairCache* pairs = nullptr, const NarrowPhaseShare* share = nullptr);
+                                     GrainPairCache* pairs = nullptr, const WorkShare* share = nullptr);
 // Step 5; replaces `memory` by this step's impulses. Sleeping grains that wake within
 // the step join `problem` (their frozen points become its contact points). NumericalFailure
 // or InvalidArgument from the solver.
