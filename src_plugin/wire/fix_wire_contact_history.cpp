@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "atom.h"
 #include "error.h"
@@ -76,12 +77,13 @@ void FixWireContactHistory::store(int i, int partner, const wiregrain::Tangentia
   new_count_[i] = k + 1;
 }
 
+// The two lists trade places (both are grown together, and the one that becomes this
+// step's is emptied by begin_step): copying every bead's rows took 1.5 % of a rank's
+// samples in the Table 1 wall phase (session 33).
 void FixWireContactHistory::end_step() {
-  for (int i = 0; i < atom->nlocal; i++) {
-    count_[i] = new_count_[i];
-    std::memcpy(partner_[i], new_partner_[i], count_[i] * sizeof(int));
-    std::memcpy(value_[i], new_value_[i], count_[i] * kValues * sizeof(double));
-  }
+  std::swap(count_, new_count_);
+  std::swap(partner_, new_partner_);
+  std::swap(value_, new_value_);
 }
 
 int FixWireContactHistory::stored_count() const {
