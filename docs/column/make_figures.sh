@@ -1,7 +1,7 @@
 #!/bin/sh
-# The README's column figures from the runs kept in docs/column/runs (final observables,
-# column.obs and final VTK of every finished run of the reduced column,
-# input_scripts/in.column_reduced). Run from the repository's top directory:
+# The column figures of docs/results.md from the runs kept in docs/column/runs (final
+# observables, column.obs and final VTK of the reduced and the tall column's runs;
+# column.obs of the Table 1 run). Run from the repository's top directory:
 #   docs/column/make_figures.sh
 # To add runs: postprocess/sweep.py ... --out /some/dir, then copy each run's final.json,
 # column.obs, command.txt and post/*_final* under docs/column/runs/SWEEP/ and tabulate them:
@@ -22,7 +22,7 @@ P=postprocess
 /usr/bin/python3 $P/plot_columns.py "$R/wire/wire=0/seed=1001" "$R/mu_w/mu_w=0.6/seed=1001" \
     "$R/E_w/E_w=1000/seed=1001" "$R/E_w/E_w=10000/seed=1001" -o docs/column/final_columns_E_w.png \
     --legend "no wire" "E_w = 100" "E_w = 1000" "E_w = 10000"
-# grain models side by side (issue 15): NSCD spheropolyhedra against stock Hertz spheres
+# grain models side by side: NSCD spheropolyhedra against stock Hertz spheres
 # and stock superquadrics (blockiness 3), the same deck, seeds, mu_w 0.6
 G=$R/grains
 /usr/bin/python3 $P/plot_column.py "$G/grains=nscd/seed=1001" "$G/grains=nscd/seed=2002" "$G/grains=nscd/seed=3003" \
@@ -34,7 +34,7 @@ G=$R/grains
 /usr/bin/python3 $P/plot_columns.py "$G/grains=nscd/seed=1001" "$G/grains=spheres/seed=1001" \
     "$G/grains=superquadrics/seed=1001" \
     -o docs/column/final_columns_grain_models.png --legend "NSCD polyhedra" "stock spheres" "stock superquadrics"
-# the tall column from rest to rest (session 17, input_scripts/in.column_tall): no wire
+# the tall column from rest to rest (input_scripts/in.column_tall): no wire
 # against μ_w = 0.1, 0.3, 0.6 (the μ_w = 0.6 runs are the wire=1 runs of `sweep.py wire 0 1
 # --var mu_w 0.6`, relabelled); H_n and the wire energy against time, the final columns
 T=$R/tall_rest
@@ -47,3 +47,7 @@ T=$R/tall_rest
 /usr/bin/python3 $P/plot_columns.py "$T/wire/wire=0/seed=1001" "$T/mu_w/mu_w=0.1/seed=1001" \
     "$T/mu_w/mu_w=0.3/seed=1001" "$T/mu_w/mu_w=0.6/seed=1001" -o docs/column/tall_final_columns.png \
     --legend "no wire" "μ_w = 0.1" "μ_w = 0.3" "μ_w = 0.6"
+# the Table 1 column at in.column's defaults (input_scripts/in.column, seed 4242): H_n and
+# the wire energy during wall removal
+/usr/bin/python3 $P/plot_column.py $R/table1_2026-12-04 -o docs/column/table1_wall_removal_2026-12-04.png \
+    --legend "Table 1 at the defaults, seed 4242"

@@ -1,9 +1,0 @@
-#!/bin/sh
-# session 30: fix nscd/polyhedra's step Δt_NSCD = 3e-3 (the deck's dt_SP 0 keeps the wire's
-# step 1e-3: N = 3) on the reduced column with the paper's proportions, seeds 8008-14014,
-# the build of 08b47ea (session 29's last; session 30's changes leave the column's bits), two runs at a time; the shipped
-# arm (2e-3) is session 28's runs of the defaults (../early_end_s28/summary.csv)
-S="--seeds 8008 9009 10010 11011 12012 13013 14014"
-V="--var mu_w 0.6 --var t_relax 75 --var t_end 145 --var v_wall 0.1 --deck input_scripts/in.column_reduced"
-postprocess/sweep.py dt_NSCD 3e-3 $S $V --jobs 2 --out dt3_study
-docs/column/runs/dt_NSCD_s30/paired.py
