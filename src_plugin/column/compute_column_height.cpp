@@ -21,7 +21,7 @@ using namespace LAMMPS_NS;
 
 ComputeColumnHeight::ComputeColumnHeight(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg), quantile_(0.98), grains_(atom) {
-  wiregrain_lmp::StyleArgs args(error, "compute", "column/height", id, narg, arg, iarg);
+  wiregrain_lmp::StyleArgs args(error, "compute", "column/height", id, narg, arg, iarg, {"quantile"});
   std::string why;
   if (!grains_.available(why)) args.fail(why);
   while (!args.done()) {

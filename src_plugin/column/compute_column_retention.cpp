@@ -21,11 +21,11 @@ using namespace LAMMPS_NS;
 
 ComputeColumnRetention::ComputeColumnRetention(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg), grains_(atom), wire_groupbit_(0), axis_given_(false), fixed_radius_(0.0) {
-  wiregrain_lmp::StyleArgs args(error, "compute", "column/retention", id, narg, arg, iarg);
+  wiregrain_lmp::StyleArgs args(error, "compute", "column/retention", id, narg, arg, iarg, {"axis"});
   std::string why;
   if (!grains_.available(why)) args.fail(why);
   if (args.done()) args.fail("expected the wire group or 'radius r' after 'column/retention'");
-  const std::string first = args.next_keyword();
+  const std::string first = args.next_word();
   if (first == "radius") {
     fixed_radius_ = args.value_positive(first);
   } else {

@@ -1,5 +1,5 @@
-/* The springs and dashpots the contacts of one step put on each bead (session 21; the
-   formula: core/contact/contact_time_step.h, BeadContactLoad), kept as a row of doubles
+/* The springs and dashpots the contacts of one step put on each bead (the formula:
+   core/contact/contact_time_step.h, BeadContactLoad), kept as a row of doubles
    per bead by atom_style wire (contact_load: the six entries xx, yy, zz, xy, xz, yz of K,
    the same of Γ, then the count of contacts). The contact styles (pair wire/contact, fix
    wire/wall, fix wire/grain) form each contact's entries once and add them to its beads

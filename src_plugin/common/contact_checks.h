@@ -25,7 +25,7 @@
    the threshold (the reduced column presses beads 0.5 r_w into the floor and grains
    again and again); kMaxOverlapWarnings per style and rank in all.
 
-   Per bead, per step (session 21): common/bead_contact_load.h. */
+   Per bead, per step: common/bead_contact_load.h. */
 
 #ifndef WIREGRAIN_CONTACT_CHECKS_H
 #define WIREGRAIN_CONTACT_CHECKS_H

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <algorithm>
+#include <utility>
 
 #include <mpi.h>
 
@@ -17,15 +19,35 @@ namespace wiregrain_lmp {
 
 namespace {
 std::string make_prefix(const std::string& kind, const std::string& style, const std::string& id) {
+  if (id.empty()) return kind + " " + style + ": ";
   return kind + " " + style + " (id " + id + "): ";
 }
 }  // namespace
 
-StyleArgs::StyleArgs(LAMMPS_NS::Error* error, std::string kind, std::string style,
-                     std::string id, int narg, char** arg, int first)
-    : error_(error), prefix_(make_prefix(kind, style, id)), narg_(narg), arg_(arg), pos_(first) {}
+KeywordList concat(KeywordList a, const KeywordList& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
 
-std::string StyleArgs::next_keyword() { return std::string(arg_[pos_++]); }
+StyleArgs::StyleArgs(LAMMPS_NS::Error* error, std::string kind, std::string style,
+                     std::string id, int narg, char** arg, int first, KeywordList keywords)
+    : error_(error),
+      prefix_(make_prefix(kind, style, id)),
+      narg_(narg),
+      arg_(arg),
+      pos_(first),
+      keywords_(std::move(keywords)) {}
+
+std::string StyleArgs::next_word() {
+  if (pos_ >= narg_) fail("missing argument at the end of the line");
+  return std::string(arg_[pos_++]);
+}
+
+std::string StyleArgs::next_keyword() {
+  const std::string word = next_word();
+  if (std::find(keywords_.begin(), keywords_.end(), word) == keywords_.end()) unknown_keyword(word);
+  return word;
+}
 
 std::string StyleArgs::value_word(const std::string& keyword) {
   if (pos_ >= narg_) fail("missing value after '" + keyword + "'");
@@ -84,7 +106,12 @@ double StyleArgs::value_in_range(const std::string& keyword, double lo, double h
 }
 
 void StyleArgs::unknown_keyword(const std::string& keyword) const {
-  fail("unknown keyword '" + keyword + "'");
+  if (std::find(keywords_.begin(), keywords_.end(), keyword) != keywords_.end())
+    fail("keyword '" + keyword + "' is accepted but not handled (a defect of the plugin: please report it)");
+  if (keywords_.empty()) fail("unknown keyword '" + keyword + "'; this style takes no keywords");
+  std::string accepted;
+  for (const std::string& k : keywords_) accepted += (accepted.empty() ? "" : ", ") + k;
+  fail("unknown keyword '" + keyword + "'; accepted: " + accepted);
 }
 
 void StyleArgs::fail(const std::string& what) const {

@@ -5,6 +5,7 @@
 #define WIREGRAIN_PLUGIN_ARGS_H
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 class Error;
@@ -14,14 +15,28 @@ class LAMMPS;
 
 namespace wiregrain_lmp {
 
+// The optional keywords a style's line accepts, in the order of the keyword table of its
+// page in docs/commands/. The list is the style's contract: StyleArgs::next_keyword refuses
+// any other word and names these in its message, which the documentation test reads to
+// compare each page's table with the code.
+using KeywordList = std::vector<std::string>;
+
+// a followed by b, for a style that accepts a shared family of keywords (plugin_material.h)
+KeywordList concat(KeywordList a, const KeywordList& b);
+
 class StyleArgs {
  public:
-  // kind: "fix", "pair", "compute", ...; style and id as the user gave them.
+  // kind: "fix", "pair", "compute", ...; style and id as the user gave them (an empty id:
+  // messages read "<kind> <style>: ...", for atom styles); keywords: the optional keywords
+  // the style accepts (none when empty).
   StyleArgs(LAMMPS_NS::Error* error, std::string kind, std::string style, std::string id,
-            int narg, char** arg, int first);
+            int narg, char** arg, int first, KeywordList keywords = {});
 
   bool done() const { return pos_ >= narg_; }
-  // the next word, for keyword dispatch
+  // the next word as it is, for a positional argument (a group, a mode, a layout)
+  std::string next_word();
+  // the next word as an optional keyword: one of the style's keywords, else stops with
+  // "unknown keyword 'x'; accepted: a, b, c" (or "...; this style takes no keywords")
   std::string next_keyword();
   // the value following `keyword`; stops with "missing value after 'keyword'"
   std::string value_word(const std::string& keyword);
@@ -38,7 +53,10 @@ class StyleArgs {
   // "value of 'theta' must be in [0.5, 1], got 0.4"; lo and hi given as the user reads them
   double value_in_range(const std::string& keyword, double lo, double hi, const std::string& range_text);
 
+  // the end of a keyword dispatch: a keyword of the list that no branch handled is a defect of
+  // the style ("keyword 'x' is accepted but not handled"), any other word an unknown keyword
   [[noreturn]] void unknown_keyword(const std::string& keyword) const;
+  const KeywordList& keywords() const { return keywords_; }
   [[noreturn]] void fail(const std::string& what) const;
   const std::string& prefix() const { return prefix_; }
 
@@ -48,6 +66,7 @@ class StyleArgs {
   int narg_;
   char** arg_;
   int pos_;
+  KeywordList keywords_;
 };
 
 // The whole word as a finite double (no trailing characters, no inf/nan, no overflow such as

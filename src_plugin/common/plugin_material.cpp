@@ -110,6 +110,8 @@ bool parse_friction_keyword(StyleArgs &args, const std::string &key, wiregrain::
   return true;
 }
 
+KeywordList friction_keywords() { return {"mu_s", "mu_d", "restitution", "damping_ratio", "limit_force"}; }
+
 void check_friction(const StyleArgs &args, const wiregrain::ContactFriction &friction) {
   if (friction.dynamic_friction > friction.static_friction)
     args.fail("mu_d (" + std::to_string(friction.dynamic_friction) + ") must not exceed mu_s (" +

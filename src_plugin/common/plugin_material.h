@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/contact/contact_materials.h"
+#include "plugin_args.h"
 
 namespace LAMMPS_NS {
 class LAMMPS;
@@ -52,6 +53,8 @@ bool parse_material_keyword(StyleArgs &args, const std::string &key, const char 
 // Parses the value of `key` when it is mu_s, mu_d (≥ 0), restitution (in [0, 1], turned
 // into ζ), damping_ratio (≥ 0) or limit_force (yes|no); returns false for any other key.
 bool parse_friction_keyword(StyleArgs &args, const std::string &key, wiregrain::ContactFriction &friction);
+// The keywords parse_friction_keyword takes, for a style's KeywordList.
+KeywordList friction_keywords();
 // Stops with "mu_d (x) must not exceed mu_s (y)" when μ_d > μ_s.
 void check_friction(const StyleArgs &args, const wiregrain::ContactFriction &friction);
 // Table 1's contact: μ_s = μ_d = 0.5, restitution 0.5, no force limit.

@@ -94,14 +94,16 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       deepest_grain_(0),
       deepest_overlap_(0.0),
       deepest_radius_(1.0) {
-  wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/grain", id, narg, arg, 3,
+                                wiregrain_lmp::concat({"max_stretch", "skin", "warm_geometry", "E_w", "nu_w", "E_p", "nu_p"},
+                                                      wiregrain_lmp::friction_keywords()));
   wire_ = AtomVecWire::of(atom);
   grains_ = AtomVecPolyhedron::of(atom);
   if (!wire_ || !(grains_ || atom->sphere_flag || atom->superquadric_flag))
     args.fail("needs atom_style hybrid with wire and polyhedron (or sphere, granular, superquadric), not '" +
               std::string(atom->atom_style) + "'");
   if (args.done()) args.fail("expected the grain group after 'wire/grain'");
-  grain_group_ = args.next_keyword();
+  grain_group_ = args.next_word();
   const int igroup = group->find(grain_group_.c_str());
   if (igroup < 0) args.fail("grain group '" + grain_group_ + "' does not exist");
   grain_groupbit_ = group->bitmask[igroup];

@@ -1,5 +1,5 @@
 /* fix wire/grain: soft frictional contact between the wire and the grains, with the
-   grains held during the wire's sub-steps (paper Sec. 2.3–2.4, Fig. 5; docs/coupling.md).
+   grains held during the wire's sub-steps (paper Sec. 2.3–2.4, Fig. 5; docs/design.md, "Wire–grain contacts").
 
    fix ID wire-group wire/grain grain-group [E_w 100] [nu_w 0] [E_p 1000] [nu_p 0.3]
        [mu_s 0.5] [mu_d 0.5] [restitution 0.5 | damping_ratio z] [limit_force no|yes]

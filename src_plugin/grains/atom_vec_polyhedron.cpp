@@ -66,23 +66,20 @@ AtomVecPolyhedron *AtomVecPolyhedron::of(Atom *atom) {
 }
 
 void AtomVecPolyhedron::settings(int narg, char **arg) {
-  int k = 0;
-  while (k < narg) {
-    const std::string key = arg[k];
-    if (key != "mass") error->all(FLERR, ("atom_style polyhedron: unknown keyword '" + key + "'").c_str());
-    if (k + 1 >= narg) error->all(FLERR, "atom_style polyhedron: missing value after 'mass'");
-    const std::string value = arg[k + 1];
+  wiregrain_lmp::StyleArgs args(error, "atom_style", "polyhedron", "", narg, arg, 0, {"mass"});
+  while (!args.done()) {
+    const std::string key = args.next_keyword();
+    const std::string value = args.value_word(key);
     if (value == "dilated") library_.reset(new wiregrain::ShapeLibrary(wiregrain::MassModel::dilated));
     else if (value == "sharp")
       library_.reset(new wiregrain::ShapeLibrary(wiregrain::MassModel::sharp_polyhedron));
     else
-      error->all(FLERR, ("atom_style polyhedron: value of 'mass' must be dilated or sharp, got '" + value + "'").c_str());
-    k += 2;
+      args.fail("value of 'mass' must be dilated or sharp, got '" + value + "'");
   }
   // fix nscd/polyhedra and fix wire/grain find grains by tag: the array map unless the user
   // chose one (atom_modify map hash). Called by read_restart too, which does not keep the
-  // map style: a deck continuing a restart without atom_modify map had no map, and the fix
-  // found none of its grains when it handed back their new velocities (session 22).
+  // map style: a deck continuing a restart without atom_modify map would have no map, and
+  // the fix would find none of its grains when it hands back their new velocities.
   if (atom->map_style == 0) atom->map_style = 1;
 }
 

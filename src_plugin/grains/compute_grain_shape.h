@@ -1,5 +1,5 @@
 /* compute grain/shape: per grain, what a post-processor needs to redraw it from a dump
-   (issue 15: dump custom for existing DEM post-processing).
+   (through dump custom, for existing DEM post-processing).
 
    compute ID group grain/shape
 

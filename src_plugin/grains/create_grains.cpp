@@ -178,7 +178,9 @@ CreateGrains::CreateGrains(LAMMPS *lmp) : Pointers(lmp) {}
 
 void CreateGrains::command(int narg, char **arg) {
   const std::string id = "-";
-  wiregrain_lmp::StyleArgs args(error, "command", "create_grains", id, narg, arg, 0);
+  wiregrain_lmp::StyleArgs args(error, "command", "create_grains", id, narg, arg, 0,
+                                {"seed", "a_min", "a_max", "b_over_a", "c_over_a", "vertices", "sweep", "density", "spacing",
+                                 "attempts", "blockiness", "write_shapes", "shape"});
   if (domain->box_exist == 0) args.fail("create a simulation box first");
   AtomVecPolyhedron *poly = AtomVecPolyhedron::of(atom);
   // without atom_style polyhedron: LIGGGHTS' superquadrics standing in for the grains, or
@@ -195,7 +197,7 @@ void CreateGrains::command(int narg, char **arg) {
   if (type < 1 || type > atom->ntypes)
     args.fail("atom type " + std::to_string(type) + " is outside 1.." + std::to_string(atom->ntypes));
   const long n_grains = args.value_int_in_range("N", 1, 100000000L);
-  const std::string mode = args.next_keyword();
+  const std::string mode = args.next_word();
   if (mode != "layer" && mode != "random") args.fail("unknown mode '" + mode + "' (layer or random)");
   const bool layer = mode == "layer";
   const std::string region_id = args.value_word("region-ID");

@@ -55,8 +55,8 @@ constexpr int kGrainRecord = 25 + kSleepState;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
 constexpr int kAtomRecord = 12 + kSleepState;
 // the first number of the fix's global restart data (older builds wrote 0 or 1 there);
-// -2: points without rolling couples (sessions 18–25), still read
-constexpr double kRestartLayout = -4.0;               // + the pair cache (session 31)
+// -2: points without rolling couples, -3: without the pair cache; both still read
+constexpr double kRestartLayout = -4.0;               // + the pair cache
 constexpr double kRestartLayoutWithoutCache = -3.0;
 constexpr double kRestartLayoutWithoutCouples = -2.0;
 
@@ -96,7 +96,13 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       step_start_velocity_(NULL),
       force_sum_(NULL),
       sleep_state_(NULL) {
-  wiregrain_lmp::StyleArgs args(error, "fix", "nscd/polyhedra", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(
+      error, "fix", "nscd/polyhedra", id, narg, arg, 3,
+      {"friction", "rolling_friction", "damping", "restitution", "theta", "every", "timestep", "tolerance",
+       "max_iterations", "convergence", "method", "order", "seed", "freeze", "subspace_regularization",
+       "subspace_closing", "warm_start", "warm_geometry", "overlap_recovery", "overlap_speed", "project",
+       "project_passes", "margin", "skin", "detection", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
+       "wall_velocity", "write_problems"});
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
@@ -781,7 +787,7 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
     return 0;
   const int used = key == "sleep" ? 3 : 2;
   wiregrain_lmp::StyleArgs args(error, "fix_modify", "nscd/polyhedra", id, std::min(narg, used), arg, 0);
-  args.next_keyword();
+  args.next_word();
   if (key == "sleep") {
     core_->options.sleep.speed = args.value_nonnegative(key);
     core_->options.sleep.time = args.value_positive(key);

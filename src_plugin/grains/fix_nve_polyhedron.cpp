@@ -23,7 +23,7 @@ using namespace FixConst;
 
 FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), fourth_order_(false), grains_(NULL) {
-  wiregrain_lmp::StyleArgs args(error, "fix", "nve/polyhedron", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(error, "fix", "nve/polyhedron", id, narg, arg, 3, {"rotation"});
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");

@@ -43,7 +43,7 @@ const char *const kStyle = "polyhedron/vtk";
 
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
     : DumpVtp(lmp, narg, arg, kStyle), sweep_(false), grains_(NULL), warned_shapeless_(false) {
-  wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5);
+  wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5, {"format", "sweep"});
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");
 #endif

@@ -68,8 +68,9 @@ int AtomVecWire::linked_bead(int link_tag) const {
 
 // Beads find their chain neighbours by tag, so the style needs an atom map; it turns
 // the array map on unless the user chose one (atom_modify map hash).
-void AtomVecWire::settings(int narg, char ** /*arg*/) {
-  if (narg != 0) error->all(FLERR, "atom_style wire: takes no arguments");
+void AtomVecWire::settings(int narg, char **arg) {
+  wiregrain_lmp::StyleArgs args(error, "atom_style", "wire", "", narg, arg, 0);
+  if (!args.done()) args.unknown_keyword(args.next_keyword());
   if (atom->map_style == 0) atom->map_style = 1;
 }
 

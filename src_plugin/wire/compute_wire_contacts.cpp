@@ -21,7 +21,7 @@ using namespace LAMMPS_NS;
 
 ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg), kind_(0), smallest_radius_(0.0), segments_(0) {
-  wiregrain_lmp::StyleArgs args(error, "compute", "wire/contacts", id, narg, arg, iarg);
+  wiregrain_lmp::StyleArgs args(error, "compute", "wire/contacts", id, narg, arg, iarg, {"kind"});
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "kind") {

@@ -19,7 +19,7 @@ using namespace LAMMPS_NS;
 
 ComputeWireEnergy::ComputeWireEnergy(LAMMPS *lmp, int &iarg, int narg, char **arg)
     : Compute(lmp, iarg, narg, arg), fix_id_(NULL), source_(NULL), bead_values_(NULL), nmax_(0) {
-  wiregrain_lmp::StyleArgs args(error, "compute", "wire/energy", id, narg, arg, iarg);
+  wiregrain_lmp::StyleArgs args(error, "compute", "wire/energy", id, narg, arg, iarg, {"fix"});
   iarg = narg;
   while (!args.done()) {
     const std::string key = args.next_keyword();

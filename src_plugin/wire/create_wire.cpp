@@ -27,7 +27,7 @@ CreateWire::CreateWire(LAMMPS *lmp) : Pointers(lmp) {}
 
 void CreateWire::command(int narg, char **arg) {
   const std::string id = "-";
-  wiregrain_lmp::StyleArgs args(error, "command", "create_wire", id, narg, arg, 0);
+  wiregrain_lmp::StyleArgs args(error, "command", "create_wire", id, narg, arg, 0, {"segment", "radius", "density"});
   if (domain->box_exist == 0) args.fail("create a simulation box first");
   AtomVecWire *wire = AtomVecWire::of(atom);
   if (!wire) args.fail("needs atom_style wire (or hybrid with wire), not '" +
@@ -37,7 +37,7 @@ void CreateWire::command(int narg, char **arg) {
   const long type = args.value_int("type");
   if (type < 1 || type > atom->ntypes)
     args.fail("atom type " + std::to_string(type) + " is outside 1.." + std::to_string(atom->ntypes));
-  const std::string layout = args.next_keyword();
+  const std::string layout = args.next_word();
   std::vector<double> geometry;
   std::string polyline_file;
   if (layout == "line") {

@@ -45,7 +45,7 @@ FixNVEGear::FixNVEGear(LAMMPS *lmp, int narg, char **arg)
       unstable_steps_(0),
       largest_ratio_(0.0),
       load_warnings_(0) {
-  wiregrain_lmp::StyleArgs args(error, "fix", "nve/gear", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(error, "fix", "nve/gear", id, narg, arg, 3, {"scheme", "forces", "check_every"});
   while (!args.done()) {
     const std::string key = args.next_keyword();
     if (key == "scheme") {

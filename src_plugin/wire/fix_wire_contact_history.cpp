@@ -8,6 +8,7 @@
 #include "error.h"
 #include "memory.h"
 
+#include "plugin_args.h"
 #include "plugin_comm.h"
 #include "core/contact/soft_contact.h"
 
@@ -23,7 +24,8 @@ FixWireContactHistory::FixWireContactHistory(LAMMPS *lmp, int narg, char **arg)
       value_(NULL),
       new_value_(NULL),
       nmax_(0) {
-  if (narg != 3) error->all(FLERR, ("fix wire/contact/history (id " + std::string(id) + "): takes no arguments").c_str());
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/contact/history", id, narg, arg, 3);
+  if (!args.done()) args.unknown_keyword(args.next_keyword());
   restart_peratom = 1;
   create_attribute = 1;
   grow_arrays(atom->nmax);
@@ -77,9 +79,8 @@ void FixWireContactHistory::store(int i, int partner, const wiregrain::Tangentia
   new_count_[i] = k + 1;
 }
 
-// The two lists trade places (both are grown together, and the one that becomes this
-// step's is emptied by begin_step): copying every bead's rows took 1.5 % of a rank's
-// samples in the Table 1 wall phase (session 33).
+// The two lists trade places instead of copying every bead's rows (both are grown
+// together, and the one that becomes this step's is emptied by begin_step).
 void FixWireContactHistory::end_step() {
   std::swap(count_, new_count_);
   std::swap(partner_, new_partner_);

@@ -56,7 +56,7 @@ FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
       sums_step_(-1),
       forces_step_(-1),
       reported_time_step_(false) {
-  wiregrain_lmp::StyleArgs args(error, "fix", "wire/elastic", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/elastic", id, narg, arg, 3, {"E", "m_elo", "m_rot"});
   wire_ = AtomVecWire::of(atom);
   if (!wire_)
     args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");

@@ -38,11 +38,12 @@ FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
       contacts_(new wiregrain::ContactList),
       stats_step_(-1) {
   friction_ = wiregrain_lmp::table1_friction();
-  wiregrain_lmp::StyleArgs args(error, "fix", "wire/wall", id, narg, arg, 3);
+  wiregrain_lmp::StyleArgs args(error, "fix", "wire/wall", id, narg, arg, 3,
+                                wiregrain_lmp::concat({"velocity", "E", "nu"}, wiregrain_lmp::friction_keywords()));
   wire_ = AtomVecWire::of(atom);
   if (!wire_)
     args.fail("needs atom_style wire (or hybrid with wire), not '" + std::string(atom->atom_style) + "'");
-  if (args.done() || args.next_keyword() != "plane") args.fail("expected 'plane px py pz nx ny nz'");
+  if (args.done() || args.next_word() != "plane") args.fail("expected 'plane px py pz nx ny nz'");
   for (int d = 0; d < 3; d++) point_[d] = args.value_double("plane");
   for (int d = 0; d < 3; d++) normal_[d] = args.value_double("plane");
   const double length = std::sqrt(normal_[0] * normal_[0] + normal_[1] * normal_[1] + normal_[2] * normal_[2]);
@@ -169,7 +170,7 @@ void FixWireWall::reset_dt() { rereference(); }
 int FixWireWall::modify_param(int narg, char **arg) {
   if (narg < 1 || std::string(arg[0]) != "velocity") return 0;
   wiregrain_lmp::StyleArgs args(error, "fix_modify", "wire/wall", id, std::min(narg, 4), arg, 0);
-  args.next_keyword();
+  args.next_word();
   rereference();
   for (int d = 0; d < 3; d++) velocity_[d] = args.value_double("velocity");
   return 4;

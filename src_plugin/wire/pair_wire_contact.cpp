@@ -97,10 +97,14 @@ void PairWireContact::allocate() {
 }
 
 void PairWireContact::parse(int narg, char **arg, int first, Coefficients &c, const char *kind) {
-  wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first);
+  const bool style_line = std::string(kind) == "pair_style";
+  wiregrain_lmp::StyleArgs args(error, kind, "wire/contact", "-", narg, arg, first,
+                                wiregrain_lmp::concat(style_line ? wiregrain_lmp::KeywordList{"cache", "E", "nu"}
+                                                                 : wiregrain_lmp::KeywordList{"E", "nu"},
+                                                      wiregrain_lmp::friction_keywords()));
   while (!args.done()) {
     const std::string key = args.next_keyword();
-    if (key == "cache" && std::string(kind) == "pair_style") {
+    if (key == "cache") {
       const std::string v = args.value_word(key);
       if (v != "yes" && v != "no") args.fail("value of 'cache' must be yes or no, got '" + v + "'");
       cache_ = v == "yes";
@@ -277,8 +281,8 @@ void PairWireContact::compute(int eflag, int vflag) {
   // (segments_may_touch with the neighbour skin), chosen when the list is built. Always at
   // a run's setup: LIGGGHTS' Verlet::setup sorts and exchanges the atoms, builds the list
   // and then resets neighbor->ncalls to 0, so after a run without a rebuild the count is
-  // the same while the local and ghost indices are not (a 10 000-bead coil with the
-  // default atom sorting crashed on the stale pairs; bench/wire_scaling.py)
+  // the same while the local and ghost indices are not (stale pairs would crash a
+  // 10 000-bead coil with the default atom sorting; bench/wire_scaling.py)
   if (!cache_ || setup || neighbor->ncalls != candidates_built_at_) {
     candidates_.clear();
     candidates_built_at_ = neighbor->ncalls;

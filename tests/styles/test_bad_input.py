@@ -6,6 +6,15 @@ silent acceptance, a misleading or generic message) say so in a comment."""
 from liggghts_run import DeckTestCase, main, run
 
 
+# the keywords fix nscd/polyhedra accepts, as its unknown-keyword message lists them
+NSCD_KEYWORDS = ", ".join([
+    "friction", "rolling_friction", "damping", "restitution", "theta", "every", "timestep", "tolerance",
+    "max_iterations", "convergence", "method", "order", "seed", "freeze", "subspace_regularization",
+    "subspace_closing", "warm_start", "warm_geometry", "overlap_recovery", "overlap_speed", "project",
+    "project_passes", "margin", "skin", "detection", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
+    "wall_velocity", "write_problems"])
+
+
 def head(style):
     """The first lines of every deck here: LJ units, the atom style, no sorting, non-periodic."""
     return (f"units           lj\natom_style      {style}\natom_modify     map array sort 0 0.0\n"
@@ -83,9 +92,9 @@ class Table(DeckTestCase):
 
 
 class WireLinks(Table):
-    # A link to a bead ID beyond the largest atom ID used to read past the end of
-    # LIGGGHTS' array map: bead 99 was taken as some other atom and the run went on
-    # silently; bead 7 gave "the segment from bead 1 to bead 7 has zero length".
+    # A link to a bead ID beyond the largest atom ID must be refused: unchecked, it reads past
+    # the end of LIGGGHTS' array map (bead 99 taken as some other atom, the run going on
+    # silently; bead 7 giving "the segment from bead 1 to bead 7 has zero length").
     CASES = (
         (READ_WIRE + "fix el all wire/elastic\nrun 0", "fix wire/elastic (id el): bead 3 links to bead 99, "
          "which is neither owned nor a ghost here", chain_with(2, "3 1 2 99 0.2 0.1 1.0 0.4 0 0")),
@@ -97,10 +106,10 @@ class WireLinks(Table):
 
 
 class NscdCounts(Table):
-    # Counts beyond an int used to wrap: max_iterations 3000000000 stopped at the first
-    # solve with "max_iterations must be >= 1, got -1294967296", every 3000000000 with
-    # "h must be > 0", write_problems 3000000000 was accepted (and never wrote), and a
-    # 'timestep' of more than 2^31 LIGGGHTS steps silently solved every step.
+    # Counts beyond an int must be refused, not wrapped: wrapped, max_iterations 3000000000
+    # stops at the first solve with "max_iterations must be >= 1, got -1294967296", every
+    # 3000000000 with "h must be > 0", write_problems 3000000000 is accepted (and never
+    # writes), and a 'timestep' of more than 2^31 LIGGGHTS steps silently solves every step.
     NSCD = ONE_CUBE + "fix nscd all nscd/polyhedra "
     CASES = (
         (NSCD + "max_iterations 3000000000\nrun 1",
@@ -117,10 +126,10 @@ class NscdCounts(Table):
 
 
 class GrainShapesFile(Table):
-    # A non-finite vertex coordinate used to be reported as "too few vertex coordinates"; a
-    # negative shape count was read as an empty library; reading a library while grains
-    # exist replaced the shapes under them (grains 1 and 2 kept indices beyond the new
-    # one-shape library: out-of-bounds reads, the run went on).
+    # Guards against: a non-finite vertex coordinate reported as "too few vertex
+    # coordinates"; a negative shape count read as an empty library; a library read while
+    # grains exist replacing the shapes under them (grains 1 and 2 keeping indices beyond
+    # the new one-shape library: out-of-bounds reads, the run going on).
     READ = POLY + "grain_shapes read s.shapes\n"
     CASES = (
         (READ, "command grain_shapes (id -): 's.shapes': shape 0: vertex coordinate 'nan' must be a finite number",
@@ -136,7 +145,7 @@ class GrainShapesFile(Table):
 
 
 class PairCoeffTypes(Table):
-    # Ranges used to pass unchecked: '3*' of 2 types selected nothing and stopped with
+    # Ranges are checked: unchecked, '3*' of 2 types selects nothing and stops with
     # LIGGGHTS' "All pair coeffs are not set", '*5' with "Numeric index is out of bounds".
     PAIR = WIRE_LINE + "pair_style wire/contact\n"
     CASES = (
@@ -187,7 +196,7 @@ class CreateWire(Table):
         (WIRE + "create_wire 1 line 0 0 0 1 0 nan", CW + "value of 'z1' must be a finite number, got 'nan'"),
         (WIRE + "create_wire 1 loop 0 0 0 -1 2 0.3", CW + "value of 'R' must be > 0, got -1"),
         (WIRE + "create_wire 1 loop 0 0 0 1 0 0.3", CW + "value of 'turns' must be > 0, got 0"),
-        (WIRE + "create_wire 1 line 0 0 0 1 0 0 colour red", CW + "unknown keyword 'colour'"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 colour red", CW + "unknown keyword 'colour'; accepted: segment, radius, density"),
         (WIRE + "create_wire 1 line 0 0 0 1 0 0 segment 1e400",
          CW + "value of 'segment' must be a finite number, got '1e400'"),
         (WIRE + "create_wire 1 line 0 0 0 0.1 0 0",
@@ -245,7 +254,7 @@ class PairWireContact(Table):
 class WireComputes(Table):
     THERMO = "\nthermo_style custom step c_e[1]\nrun 0"
     CASES = (
-        (WIRE_LINE + "compute e all wire/energy colour red\nrun 0", "compute wire/energy (id e): unknown keyword 'colour'"),
+        (WIRE_LINE + "compute e all wire/energy colour red\nrun 0", "compute wire/energy (id e): unknown keyword 'colour'; accepted: fix"),
         (WIRE_LINE + "compute e all wire/energy fix\nrun 0", "compute wire/energy (id e): missing value after 'fix'"),
         (WIRE_LINE + "compute e all wire/energy fix nope" + THERMO,
          "compute wire/energy (id e): fix ID 'nope' is not a fix wire/elastic"),
@@ -255,7 +264,7 @@ class WireComputes(Table):
         (WIRE_LINE + "fix a all wire/elastic\nfix b all wire/elastic\ncompute e all wire/energy" + THERMO,
          "compute wire/energy (id e): several fix wire/elastic are defined: name one with 'fix ID'"),
         (WIRE_LINE + "compute e all wire/contacts kind\nrun 0", "compute wire/contacts (id e): missing value after 'kind'"),
-        (WIRE_LINE + "compute e all wire/contacts colour red\nrun 0", "compute wire/contacts (id e): unknown keyword 'colour'"),
+        (WIRE_LINE + "compute e all wire/contacts colour red\nrun 0", "compute wire/contacts (id e): unknown keyword 'colour'; accepted: kind"),
         (WIRE_LINE + "compute e all wire/contacts kind wire_wall" + THERMO,
          "compute wire/contacts (id e): kind wire_wall needs a fix wire/wall"),
         (WIRE_LINE + "compute e all wire/contacts" + THERMO, "compute wire/contacts (id e): needs pair_style wire/contact"),
@@ -281,7 +290,7 @@ class NscdKeywords(Table):
         (NSCD + "wall 0 0 -2 0 0 1 wall_velocity 1 0 abc\nrun 1", P + "value of 'wall_velocity' must be a finite number, got 'abc'"),
         (NSCD + "margin -1\nrun 1", P + "value of 'margin' must be >= 0, got -1"),
         (NSCD + "skin -0.1\nrun 1", P + "value of 'skin' must be >= 0, got -0.1"),
-        (NSCD + "colour red\nrun 1", P + "unknown keyword 'colour'"),
+        (NSCD + "colour red\nrun 1", P + "unknown keyword 'colour'; accepted: " + NSCD_KEYWORDS),
         (NSCD + "write_problems 10\nrun 1", P + "missing value after 'write_problems'"),
         (NSCD + "wall_fix\nrun 1", P + "missing value after 'wall_fix'"),
         (NSCD + "\nfix_modify nscd tolerance 0\nrun 1", "fix_modify nscd/polyhedra (id nscd): value of 'tolerance' must be > 0, got 0"),
@@ -292,11 +301,11 @@ class NscdKeywords(Table):
 
 class Grains(Table):
     CASES = (
-        (ONE_CUBE + "fix int all nve/polyhedron colour red\nrun 1", "fix nve/polyhedron (id int): unknown keyword 'colour'"),
+        (ONE_CUBE + "fix int all nve/polyhedron colour red\nrun 1", "fix nve/polyhedron (id int): unknown keyword 'colour'; accepted: rotation"),
         (ONE_CUBE + "fix int all nve/polyhedron rotation\nrun 1", "fix nve/polyhedron (id int): missing value after 'rotation'"),
         (ONE_CUBE + "fix a all nve/polyhedron\nfix b all nscd/polyhedra\nrun 1",
          "fix nve/polyhedron (id a): 1 grains are also integrated by fix b (nscd/polyhedra)"),
-        (ONE_CUBE + "compute r all grain/rotation extra\nrun 1", "compute grain/rotation (id r): unknown keyword 'extra'"),
+        (ONE_CUBE + "compute r all grain/rotation extra\nrun 1", "compute grain/rotation (id r): unknown keyword 'extra'; this style takes no keywords"),
         (ONE_CUBE + "compute h all column/height quantile abc\nrun 0",
          "compute column/height (id h): value of 'quantile' must be a finite number, got 'abc'"),
         (ONE_CUBE + "compute h all column/height quantile -0.1\nrun 0",
@@ -309,14 +318,14 @@ class Grains(Table):
         (ONE_CUBE + "compute p all column/retention radius nan\nrun 0",
          "compute column/retention (id p): value of 'radius' must be a finite number, got 'nan'"),
         (ONE_CUBE + "compute p all column/retention radius 1 colour red\nrun 0",
-         "compute column/retention (id p): unknown keyword 'colour'"),
+         "compute column/retention (id p): unknown keyword 'colour'; accepted: axis"),
         (WIRE + "compute p all column/retention radius 1\nrun 0",
          "compute column/retention (id p): needs atom_style polyhedron, sphere (granular) or superquadric, plain or "
          "in a hybrid, not 'wire'"),
         (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron mass"),
          "atom_style polyhedron: missing value after 'mass'"),
         (POLY.replace("atom_style      polyhedron", "atom_style      polyhedron colour red"),
-         "atom_style polyhedron: unknown keyword 'colour'"),
+         "atom_style polyhedron: unknown keyword 'colour'; accepted: mass"),
         (READ_GRAIN, "atom_style polyhedron: Atoms section of data file: shape '5' is not in the shape library (1 shapes",
          grain_data("1 1 5 1.5 1 0 0 0 0 0 0")),
         (READ_GRAIN, "atom_style polyhedron: Atoms section of data file: the quaternion qw qi qj qk must not be zero",

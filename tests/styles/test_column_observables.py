@@ -142,7 +142,7 @@ class Errors(DeckTestCase):
         self.check("compute h grains column/height quantile 1.5",
                    "compute column/height (id h): value of 'quantile' must be in [0, 1], got 1.5")
         self.check("compute h grains column/height level 2",
-                   "compute column/height (id h): unknown keyword 'level'")
+                   "compute column/height (id h): unknown keyword 'level'; accepted: quantile")
         self.check("compute h wire column/height\nthermo_style custom step c_h",
                    "compute column/height (id h): group 'wire' has no grains")
         self.check("compute phi grains column/retention",

@@ -708,7 +708,8 @@ class Errors(DeckTestCase):
         self.check("create_grains 1 0 random cont seed 1", "value of 'N' must be >= 1, got 0")
         self.check("create_grains 2 10 random cont seed 1", "atom type 2 is outside 1..1")
         self.check("create_grains 1 10 pile cont seed 1", "unknown mode 'pile' (layer or random)")
-        self.check(base + "colour red", "unknown keyword 'colour'")
+        self.check(base + "colour red", "unknown keyword 'colour'; accepted: "
+                   "seed, a_min, a_max, b_over_a, c_over_a, vertices, sweep, density, spacing, attempts, blockiness, write_shapes, shape")
         self.check("create_grains 1 500 random cont seed 1 attempts 5", "could only place ",
                    pattern=r"could only place \d+ of 500 grains in region 'cont' \(5 attempts for grain \d+\)")
         self.check("create_grains 1 10 layer cont 20 seed 1", "region too small for the layer: 10 grains asked, 0 sites")

@@ -394,7 +394,7 @@ create_box 1 box
 
     def test_unknown_keyword(self):
         self.check("dump d all polyhedron/vtk 10 g_*.vtp colour red",
-                   "unknown keyword 'colour'")
+                   "unknown keyword 'colour'; accepted: format, sweep")
 
     def test_missing_value(self):
         self.check("dump d all polyhedron/vtk 10 g_*.vtp sweep", "missing value after 'sweep'")

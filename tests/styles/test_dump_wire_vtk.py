@@ -342,7 +342,7 @@ class Errors(DeckTestCase):
 
     def test_unknown_keyword(self):
         self.check("dump d all wire/vtk 10 wire_*.vtp colour red",
-                   "dump wire/vtk (id d): unknown keyword 'colour'")
+                   "dump wire/vtk (id d): unknown keyword 'colour'; accepted: energy, grains, format")
 
     def test_bad_format(self):
         self.check("dump d all wire/vtk 10 wire_*.vtp format hex",

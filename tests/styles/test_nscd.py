@@ -78,8 +78,8 @@ class Incline(DeckTestCase):
     # it sticks for θ < atan μ and slides with a = g (sin θ − μ cos θ) above. The θ = 1
     # scheme gains h a per step, starting with the solve at the run's setup, and moves with
     # the end-of-step velocity, so after n steps it has travelled h² a n(n+1)/2, not the
-    # continuum a t²/2 (1/n = 5e-4 less at the end). Solver tolerance 1e-10: since
-    # overlap_recovery 0 is the default (session 22) an overlap the first solve leaves
+    # continuum a t²/2 (1/n = 5e-4 less at the end). Solver tolerance 1e-10: with
+    # overlap_recovery 0 (the default) an overlap the first solve leaves
     # within its tolerance is kept, not pushed out (7.8e-14 at 1e-8, which put the
     # travelled distance 1.0e-12 off; 1.8e-14 at 1e-10).
     def motion(self, theta):
@@ -217,7 +217,7 @@ run             5000
             travelled = self.stop(fix_line, before_run)
             # the θ = 1 scheme's distance (Launch): v0²/(2 μ g) − h v0/2. The velocity is set
             # between runs (after `run 0`): the second run starts from it as the first run
-            # would (before the fix: + h v0/2, the set velocity moved with for one step)
+            # would (guards against + h v0/2: the set velocity moved with for one step)
             h, v0, decel = 1e-3, 1.0, mu * G
             steps = round(v0 / (decel * h))
             discrete = h * sum(v0 - k * decel * h for k in range(1, steps + 1))
@@ -446,9 +446,9 @@ run             {steps}
         return r.thermo()
 
     def test_overlap_speed(self):
-        # the default push-out speed cap 0.1 with overlap_recovery 1 (off by default since
-        # session 22): a cube created 0.05 into the floor leaves at 0.1 (not 0.05 / h = 50)
-        # and is out after 0.5 time units; then it rests (no gravity: at 0.1) (the
+        # the default push-out speed cap 0.1 with overlap_recovery 1 (off by default): a
+        # cube created 0.05 into the floor leaves at 0.1 (not 0.05 / h = 50) and is out
+        # after 0.5 time units; then it rests (no gravity: at 0.1) (the
         # projection off: it would remove the overlap at the first solve, next test)
         t = self.cube_sunk_into_the_floor("project 0 overlap_recovery 1", "", every=100, steps=600)
         print(f"overlap_speed 0.1: overlaps {t['nscd[4]']}, vz {t['vz1'][-1]:.12f}")
@@ -460,8 +460,8 @@ run             {steps}
         # project (default 5e-5 of the pair's size): the same cube, 0.05 into the floor, is
         # lifted at the end of the first solve to half the tolerance inside (the gap of a
         # flat face is linear in the height: one pass), so the second step starts with an
-        # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 (the default since
-        # session 22) nothing else moves it: the pose is corrected, the velocity stays 0
+        # overlap of ½ 5e-5 (√3/2) = 2.17e-5; with overlap_recovery 0 (the default)
+        # nothing else moves it: the pose is corrected, the velocity stays 0
         t = self.cube_sunk_into_the_floor("", "v_z1 f_nscd[17] f_nscd[18]", every=1, steps=3)
         size = 3 ** 0.5 / 2
         print(f"project 5e-5: overlaps {t['nscd[4]']}, z {t['z1']}, vz {t['vz1']}, corrections {t['nscd[17]']}")
@@ -791,9 +791,9 @@ read_restart    one.restart
 
     def test_restart_without_atom_modify_map(self):
         # read_restart does not keep the atom map; atom_style polyhedron turns it on, so a
-        # deck without atom_modify map continues the run. Before session 22 the fix found
-        # none of its grains when it handed back their velocities: a cube dropped 0.3 onto
-        # the floor kept the speed of the restart step (z 0.616 instead of 0.5 at the end).
+        # deck without atom_modify map continues the run. Guards against the fix finding
+        # none of its grains when it hands back their velocities: a cube dropped 0.3 onto
+        # the floor would keep the speed of the restart step (z 0.616 instead of 0.5 at the end).
         made = grains_data("cube 1.0", [(0, 0, 0.8, 1, 0, 0, 0)])
         self.assertRanCleanly(made)
         # the height by a compute (an indexed z[1] in a variable would need the map too)

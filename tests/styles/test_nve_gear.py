@@ -222,7 +222,7 @@ def groove_bead_limit():
 
 
 class BeadContactLoads(DeckTestCase):
-    """The per-bead time-step check (session 21): a bead loaded by several contacts at once
+    """The per-bead time-step check: a bead loaded by several contacts at once
     is unstable at a step that each contact alone allows (it rattles at the contact
     frequency instead of coming to rest)."""
 
@@ -301,7 +301,7 @@ class BadInput(DeckTestCase):
         self.assertStopsWith(r, message)
 
     def test_unknown_keyword(self):
-        self.check("schme gear5", "fix nve/gear (id integr): unknown keyword 'schme'")
+        self.check("schme gear5", "fix nve/gear (id integr): unknown keyword 'schme'; accepted: scheme, forces, check_every")
 
     def test_missing_value(self):
         self.check("scheme", "fix nve/gear (id integr): missing value after 'scheme'")

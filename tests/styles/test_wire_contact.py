@@ -464,8 +464,8 @@ class PairCacheAcrossRuns(DeckTestCase):
     # so a run that builds no list (here `run 0`) leaves the count where the next setup
     # finds it while the atoms' local indices change. The coil falls for 3000 steps, a
     # `run 0`, the whole wire lifted by 0.5 (most beads change sort bins), 2000 steps more:
-    # the same trajectory to the bit with cache yes and no. The build before this test kept
-    # the pairs of the old indices (a 10 000-bead coil crashed on them).
+    # the same trajectory to the bit with cache yes and no. Guards against a cache that keeps
+    # the pairs of the old indices (a 10 000-bead coil crashes on them).
     DECK = COIL.format(top=8, turns=12.5, pair="cache {cache}", skin=0.1) + """thermo_style    custom step c_c[1]
 thermo          1000
 run             3000
@@ -517,7 +517,7 @@ run             10
                                             "the lightest bead", 0.0, True)
         found = warning_lines(r.output, "")
         print("\n".join(found))
-        # the run-start checks; fix nve/gear's per-bead check (session 21), made at every
+        # the run-start checks; fix nve/gear's per-bead check, made at every
         # step here (check_every 1), warns too, and for a bead on the floor alone gives the
         # wall's own limit
         per_bead = [w for w in found if w.startswith("fix nve/gear")]
@@ -641,7 +641,8 @@ class BadInput(DeckTestCase):
 
     def test_pair_coeff_keyword(self):
         self.check("pair_style wire/contact\npair_coeff 1 2 stiffness 4",
-                   "pair_coeff wire/contact (id -): unknown keyword 'stiffness'")
+                   "pair_coeff wire/contact (id -): unknown keyword 'stiffness'; accepted: E, nu, "
+                   "mu_s, mu_d, restitution, damping_ratio, limit_force")
 
     def test_wall_zero_normal(self):
         self.check("fix w all wire/wall plane 0 0 0 0 0 0",

@@ -409,7 +409,7 @@ class BadInput(DeckTestCase):
 
     def test_unknown_keyword(self):
         self.check("create_wire 1 line 0 0 0 1 0 0\nfix el all wire/elastic stiffness 3",
-                   "fix wire/elastic (id el): unknown keyword 'stiffness'")
+                   "fix wire/elastic (id el): unknown keyword 'stiffness'; accepted: E, m_elo, m_rot")
 
     def test_polyline_with_repeated_point(self):
         self.check("create_wire 1 polyline path.txt",

@@ -352,8 +352,8 @@ run             12000
         # whose far bead is thrown outwards at 20: it stretches to twice its length (0.40
         # measured) within the first NSCD step, beyond the room the grains were held with
         # (a quarter of its half length, + r_w + the skin: 0.35): the fix holds
-        # them again, wider, with its warning once, instead of stopping the run (it stopped
-        # with "a segment reaches ... beyond the allowed ..." before session 18)
+        # them again, wider, with its warning once, instead of stopping the run with "a
+        # segment reaches ... beyond the allowed ..." (the case this guards against)
         made = scene([resting_cube(0.0, 0.0)], ["line 1.5 0 1.1 1.7 0 1.1 segment 0.2 radius 0.1"])
         r = run(deck("""
 fix             elastic wire wire/elastic
@@ -554,7 +554,8 @@ class Errors(DeckTestCase):
         self.check(nscd + "fix wg wire wire/grain grains warm_geometry",
                    "fix wire/grain (id wg): missing value after 'warm_geometry'")
         self.check(nscd + "fix wg wire wire/grain grains stiffness 3",
-                   "fix wire/grain (id wg): unknown keyword 'stiffness'")
+                   "fix wire/grain (id wg): unknown keyword 'stiffness'; accepted: max_stretch, skin, warm_geometry, "
+                   "E_w, nu_w, E_p, nu_p, mu_s, mu_d, restitution, damping_ratio, limit_force")
         self.check(nscd + "fix wg wire wire/grain grains mu_d",
                    "fix wire/grain (id wg): missing value after 'mu_d'")
         self.check(nscd + "fix wg wire wire/grain",

@@ -1,6 +1,6 @@
 """fix wire/grain against stock LIGGGHTS granular spheres (atom_style hybrid wire sphere,
 fix nve/sphere, pair_style gran): static forces against the analytic sphere geometry, the
-capstan ratio, momentum, 1 vs 2 ranks, restart, error messages (issue 15)."""
+capstan ratio, momentum, 1 vs 2 ranks, restart, error messages."""
 
 import os
 

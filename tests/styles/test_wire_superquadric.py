@@ -2,7 +2,7 @@
 superquadric, fix nve/superquadric; a LIGGGHTS built with WIREGRAIN_SUPERQUADRIC, the
 default): an ellipsoid on two wires lying on the floor against the ellipse geometry worked
 out here, a wire lying on a fixed rounded box at rest and carried whole, momentum, 1 vs 2 ranks,
-restart in contact, the top of a superquadric in compute column/height (issue 15)."""
+restart in contact, the top of a superquadric in compute column/height."""
 
 import math
 

@@ -1,7 +1,7 @@
 // Contact laws from materials: the one place that turns the materials of the two sides of
 // a soft contact into its SoftContactLaw (k_n, k_t, ζ, μ_s, μ_d, limit_force), in the
 // manner of the sub-models of LAMMPS' GRANULAR package. Pairings and equations (the
-// paper's section 2.2 and DESIGN.md sections 4–5; docs/core_contact_laws.md):
+// paper's section 2.2 and docs/design.md, "The wire: bead chain with soft contacts"):
 //   effective modulus E*:
 //     wire–wire   E_ww = E_w / (2(1−ν_w²))                  (two sides of one material)
 //                 1/E* = (1−ν_a²)/E_a + (1−ν_b²)/E_b        (two wire materials)

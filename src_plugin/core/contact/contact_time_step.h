@@ -50,9 +50,10 @@ ContactTimeStep contact_time_step(const SoftContactLaw& law, double effective_ma
 // m_a m_b / (m_a + m_b); m_b = ∞ (a wall, a held grain) gives m_a.
 double reduced_mass(double mass_a, double mass_b);
 
-// The springs and dashpots all the contacts of a step put on ONE bead (session 21: a bead
-// wedged between grains, loaded by the contacts of both its segments, rattled at the
-// contact frequency at Δt_SP = 1e-3 although each contact alone was within its limit).
+// The springs and dashpots all the contacts of a step put on ONE bead (a bead wedged
+// between grains, loaded by the contacts of both its segments, can rattle at the contact
+// frequency although each contact alone is within its limit: the Table 1 column's beads at
+// Δt_SP = 1e-3 under Gear-5).
 // A contact with normal n, springs k_n, k_t and dashpots γ_n = 2ζ√(k_n m_eff), γ_t =
 // 2ζ√(k_t m_eff) (its law's), whose force reaches the bead with the weight w (1 − t or t of
 // the load point on the segment, 1 for a wall), adds

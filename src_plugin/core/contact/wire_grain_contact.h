@@ -16,11 +16,11 @@
 //   so a flat-lying segment is loaded at its middle, and as it tilts the load moves
 //   continuously to the deeper end, where the geometry puts the single closest point
 //   beyond θ_tol. The paper's closest point (Sec. 2.3) is undefined for a flat-lying
-//   segment; the middle of the interval, switched to its end at θ_tol, made a wire lying
+//   segment; the middle of the interval, switched to its end at θ_tol, makes a wire lying
 //   on faces chatter between the two bead shares and never come to rest. (Loading at
-//   the centroid of the overlap profile instead was tried: with the force k_n ξ_n from
-//   the closest point applied elsewhere, the contact is no longer conservative and a
-//   resting wire kept vibrating; measured in tests/styles/test_wire_grain.py.)
+//   the centroid of the overlap profile instead applies the force k_n ξ_n from the
+//   closest point elsewhere: the contact is then not conservative and a resting wire
+//   keeps vibrating; measured in tests/styles/test_wire_grain.py.)
 //   contact point p = x(t) − (r_w − ξ_n/2) n (halfway through the overlap);
 //   relative velocity of the wire with respect to the grain at p:
 //       u = (1 − t) v_0 + t v_1 − (v_g + ω_g × (p − x_g));
@@ -112,9 +112,9 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 // geometry of segment_contact(PosedSuperquadric, ...) (GJK with the closed-form support
 // point; core/geometry/contact_geometry.h), overlap r_w − d (the body has no sweep), the
 // load point the closest point, the force as against a polyhedron. (The rule that shares
-// the load of a segment lying on a polyhedron's face, load_point_parameter, was tried in
-// its smooth form on blocky superquadrics and changed nothing measurable: the residual
-// motion of a wire lying on their tops goes away with a smaller time step, README.)
+// the load of a segment lying on a polyhedron's face, load_point_parameter, in its smooth
+// form changes nothing measurable on blocky superquadrics: the residual motion of a wire
+// lying on their tops goes away with a smaller time step, README.)
 // exact_gap_below ≥ 0: the geometry's gap is exact while below it; a pair farther apart
 // gets a lower bound of its gap (GJK's early exit, far cheaper than the closest points of
 // a smooth body). The force is the same whatever the value: it needs only gap ≤ 0.

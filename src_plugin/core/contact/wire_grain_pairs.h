@@ -1,8 +1,7 @@
-// Reuse of the wire–grain pairs between sub-steps and NSCD steps (issue 14, "contact
-// detection reuse"), as LIGGGHTS reuses its neighbour lists while nothing moved more
-// than a skin, but exact: the pairs evaluated are a superset of the touching ones, so
-// the forces are those of a full search, to the last bit (the pairs are visited in the
-// same order, HeldGrains' tag order).
+// Reuse of the wire–grain pairs between sub-steps and NSCD steps, as LIGGGHTS reuses its
+// neighbour lists while nothing moved more than a skin, but exact: the pairs evaluated are
+// a superset of the touching ones, so the forces are those of a full search, to the last
+// bit (the pairs are visited in the same order, HeldGrains' tag order).
 //
 // A segment's entry is built by the broad phase with the candidates grown by the skin s:
 // every grain whose exact gap to the segment (between the surfaces, sweeps included) is

@@ -1,6 +1,6 @@
 // Contact geometry of spheropolyhedra, walls and wire segments: GJK distance with the
 // signed-volumes sub-simplex solver, separating-axis penetration depth, closest-feature
-// contact manifolds. See contact_geometry.h and docs/core_contact.md.
+// contact manifolds. See contact_geometry.h and docs/design.md, "Contact geometry".
 #include "core/geometry/contact_geometry.h"
 #include "core/geometry/nearest_simplex.h"
 #include "core/geometry/segment_distance.h"
@@ -1308,8 +1308,7 @@ SegmentContact segment_contact(const PosedShape& grain, const Vector3d& end0,
   // (for an edge axis the segment is ⟂ n: the closest points of edge and segment).
   // The feature is looked up only where it is used, the SAT's points and a segment ⟂ n
   // within the tolerance (the interval below): a segment touching with one of its ends
-  // needs none (session 30: the lookup was a quarter of segment_contact's time on the
-  // Table 1 wall phase).
+  // needs none.
   const double sin_tol = std::sin(options.angle_tolerance);
   const bool across = length > 0.0 && std::abs(s.dot(n)) <= sin_tol * length;
   if (out.method != DistanceMethod::sat && !across) {

@@ -12,7 +12,7 @@
 // translation of B that separates the cores; n is its direction). So g < 0 means
 // interpenetration of the dilated grains, whatever its depth.
 //
-// Algorithms (details and measured accuracy in docs/core_contact.md):
+// Algorithms (details and measured accuracy in docs/design.md, "Contact geometry"):
 //   - distance of disjoint cores: GJK (Gilbert, Johnson & Keerthi, IEEE J. Robot. Autom.
 //     4 (1988) 193) on the Minkowski difference A − B, with the signed-volumes
 //     sub-simplex solver of Montanari, Petrinic & Barbieri, ACM Trans. Graph. 36 (2017)
@@ -36,7 +36,7 @@
 // Spheres (ConvexShape::is_sphere(): the core is one point, no edges, no faces) go
 // through the same code: their support point is the centre, their contact feature the
 // vertex, so every manifold with a sphere has one point. Where the SAT would need a
-// face of the sphere (details in contact_geometry.cpp, docs/core_contact.md):
+// face of the sphere (details in contact_geometry.cpp, docs/design.md, "Contact geometry"):
 //   - sphere–polytope: the polytope's faces are the whole candidate set (exact);
 //   - sphere–sphere with coincident centres: depth 0, normal +x (fixed choice);
 //   - segment through a sphere's centre: depth 0, the normal a fixed unit vector ⟂ the
@@ -137,9 +137,8 @@ double lowest_core_point(const ConvexShape& shape, const Eigen::Vector3d& positi
 // the core's face planes, max_f (n_f·x − o_f) (the core is the intersection of the
 // half-spaces n_f·y <= o_f, so |x − y| >= n_f·(x − y) >= n_f·x − o_f for every y in it;
 // equal to the distance when x's foot on that plane lies in the face; <= 0 inside).
-// (Tried for the wire segments' early exit as well, session 29: settled 98 % of the early
-// exits without GJK but made fix wire/grain 9–13 % slower on the Table 1 wall phase: the
-// GJK of a segment apart stops within one or two iterations, cheaper than the face loop.)
+// (Not used for the wire segments' early exit: the GJK of a segment apart stops within one
+// or two iterations, cheaper than the face loop.)
 double height_above_faces(const PosedShape& shape, const Eigen::Vector3d& x);
 
 // GJK's simplex of a pair: the support indices of its 1–4 points of the Minkowski
@@ -152,7 +151,7 @@ double height_above_faces(const PosedShape& shape, const Eigen::Vector3d& x);
 // answer is the same to GJK's tolerance, not to the bit: where the closest point lies on
 // a face of the difference with more than three vertices (face–face, edge–edge) the
 // simplex that holds it depends on the path. size 0 (or indices out of range): a cold
-// start, the same result to the bit as without a simplex. docs/core_contact.md.
+// start, the same result to the bit as without a simplex. docs/design.md, "Contact geometry".
 struct GjkSimplex {
   std::array<int, 4> a{}, b{};
   int size = 0;
@@ -183,7 +182,7 @@ struct ContactOptions {
   // every other vertex of a core whose own gap is below the activation distance (its
   // closest point on the other core, its own normal along the two; for a wall the wall
   // normal). Without them a grain tumbling onto another (or a wall) closes its next vertex
-  // one step late: overlaps of ~1e-3 a_max in deposits (docs/core_contact.md).
+  // one step late: overlaps of ~1e-3 a_max in deposits (docs/design.md, "Contact geometry").
   bool near_vertices = false;
   // contact_manifold: GJK may stop once the gap is known to exceed activation_distance +
   // this (≥ 0, +inf: never early); the
@@ -197,7 +196,7 @@ struct ContactOptions {
   // A pair with gap ≤ exit_gap gets exactly the result it gets without it (its lower
   // bounds never exceed it). The wire–grain contact passes the gap below which it needs
   // exact values (0 for a touching test, the pair cache's skin at a build): most of its
-  // evaluated pairs are apart (session 28).
+  // evaluated pairs are apart.
   double exit_gap = std::numeric_limits<double>::infinity();
 };
 
@@ -285,7 +284,7 @@ SegmentContact segment_contact(const PosedShape& grain, const Eigen::Vector3d& e
 // the distance bound gains less than 1e-16 of the size), then a Newton polish of the
 // closest points in the normal and the segment parameter; the nearest of the genuine
 // pairs (support point c(n), its projection on the segment) built from GJK's direction,
-// the polished one and GJK's own body point (docs/core_geometry.md). Closer than 1e-8 of
+// the polished one and GJK's own body point (docs/design.md, "Contact geometry"). Closer than 1e-8 of
 // the size: the surface normal (∇F) at GJK's body point. An axis that touches or crosses
 // the body (overlap ≥ r_w): the normal is ∇F at the segment point nearest the body's
 // centre, the distance minus the overlap of body and segment along it (a

@@ -12,9 +12,8 @@
 // Rounding: a facet is passed over only when the origin is beyond its plane by more than a
 // bound on the rounding error of its signed volume (64 ε L^d, L the largest coordinate, d
 // the dimension of the simplex); with the total's sign not that certain (a flat simplex)
-// every facet is solved. So a misclassified sign cannot lose the minimum. (Until session 18
-// every facet was always solved; the same minimum, at about half of GJK's sub-simplex cost:
-// core test NearestSimplex.* against a brute-force enumeration of all sub-simplices.)
+// every facet is solved. So a misclassified sign cannot lose the minimum (core test
+// NearestSimplex.*: against a brute-force enumeration of all sub-simplices).
 #pragma once
 
 #include <Eigen/Dense>

@@ -30,7 +30,7 @@
 //          (a double root, or two roots closer than the sampling), by Newton from each
 //          local minimum of |g| among the samples. The paper solves this case
 //          with a Newton iteration from GSL (our own Newton measured faster, see
-//          docs/core_nscd.md); the 1-D reduction makes u_n = 0 and
+//          docs/design.md, "The local solve"); the 1-D reduction makes u_n = 0 and
 //          ‖r_t‖ = μ r_n hold by construction, so only u_t ∥ −r_t is iterated.
 // μ = 0 (frictionless): r = (−q_n / W_nn, 0, 0) when q_n < 0, counted as slide.
 //
@@ -163,7 +163,7 @@ bool slide_newton_unbracketed(const SlideEquation& equation, Eigen::Vector2d& di
 // gsl_root_fsolver_brent), stopping when the bracket is below 1e-14 rad (at most 100
 // iterations). `iterations` is increased by the number of Brent iterations (each one
 // evaluation of g, plus two at the start). Chosen over a safeguarded Newton–bisection by
-// bench/local_slide_gsl (docs/core_nscd.md, "GSL and the slide case").
+// bench/local_slide_gsl (docs/design.md, "The local solve").
 double slide_root_in_bracket(const SlideEquation& equation, double lo, double hi,
                              int& iterations);
 

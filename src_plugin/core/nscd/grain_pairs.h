@@ -1,8 +1,8 @@
-// Reuse of the grain–grain pairs of the NSCD detection between steps (issue 14, "contact
-// detection reuse"), as LIGGGHTS keeps its neighbour lists while nothing moved more than
-// a skin, and exact: the pairs evaluated always include every pair within the activation
-// distance, so the contact points are those of a full search (the pairs are visited in
-// the same order, a ascending then b ascending, grains in tag order).
+// Reuse of the grain–grain pairs of the NSCD detection between steps, as LIGGGHTS keeps
+// its neighbour lists while nothing moved more than a skin, and exact: the pairs evaluated
+// always include every pair within the activation distance, so the contact points are
+// those of a full search (the pairs are visited in the same order, a ascending then b
+// ascending, grains in tag order).
 //
 // At a build the broad phase runs with its reach grown by the skin s, and every pair
 // whose gap (contact_manifold with exit_beyond_activation = s: exact below a + s, a lower
@@ -18,8 +18,8 @@
 // bound taken grain by grain: its gap at the build g_build minus how far each of its two
 // grains has moved since, g_build − D_a − D_b > a (+ 1e-9 (R_a + R_b) for rounding), its
 // evaluation would find its gap beyond this step's activation and return no point, so
-// skipping it leaves the problem the same to the last bit (session 28: in a settled pile
-// most kept pairs are a skin apart, not touching).
+// skipping it leaves the problem the same to the last bit (in a settled pile most kept
+// pairs are a skin apart, not touching).
 #pragma once
 
 #include <vector>

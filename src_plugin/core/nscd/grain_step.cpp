@@ -23,13 +23,13 @@ NscdOptions grain_solver_defaults() {
   options.measure = ConvergenceMeasure::natural_map;
   options.method = SolverMethod::subspace;
   // Overlaps are kept from growing, not pushed out by a velocity: a push-out speed is
-  // real kinetic energy, and at rest it is what kept a pile creeping. Each step leaves
+  // real kinetic energy, and at rest it keeps a pile creeping. Each step leaves
   // overlaps of 1e-7–1e-6 a_max (the gap is linearised at the step start); pushed out at
   // |g|/h they gave the grains of the undamped 500-grain deposit speeds of ~4e-4 and a
   // kinetic energy of 1e-7 m g a_max per grain, the pile sinking 8.6e-5 a_max per time
   // unit (4.8 times that at h = 5e-4) for as long as it ran; with β = 0 the same pile
-  // came to rest within 2 time units (kinetic energy 3e-37; docs/core_nscd.md, session
-  // 22). Deeper overlaps are removed by the fix's position projection (`project`).
+  // came to rest within 2 time units (kinetic energy 3e-37; 2026-11-26, commit 4a7021c;
+  // docs/design.md, "Position update and overlap projection"). Deeper overlaps are removed by the fix's position projection (`project`).
   options.overlap_recovery = 0.0;
   options.overlap_speed = 0.1;
   return options;
@@ -787,8 +787,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
 
   // 3. the points made in top-down order (descending z, ties in detection order: the
   // candidates' order, each one's points in the manifold's order), each written once in
-  // its place (they are large records: sorting them after was 3 % of the Table 1 wall
-  // phase, session 30)
+  // its place (they are large records, not to be copied by a sort after)
   std::vector<std::pair<int, int>> detected;  // (candidate, point of its manifold), detection order
   for (std::size_t i = 0; i < candidates.size(); i++)
     for (std::size_t k = 0; k < found[i].points.size(); k++) detected.emplace_back(static_cast<int>(i), static_cast<int>(k));

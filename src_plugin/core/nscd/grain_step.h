@@ -23,8 +23,8 @@
 // The position update that follows the step is advance_grain_pose, then the projection of
 // the overlaps it leaves (core/nscd/overlap_projection.h).
 //
-// Sleeping (issue 14; not in the paper; off unless SleepOptions::speed > 0; the design and
-// its measurements: docs/core_nscd.md, "Sleeping grains"). A grain whose speed
+// Sleeping (not in the paper; off unless SleepOptions::speed > 0; the design and
+// its measurements: docs/design.md, "Sleeping grains"). A grain whose speed
 // |v| + |ω| R (R its bounding radius) stays below v_sleep for t_sleep falls asleep once
 // every grain supporting it (a contact impulse on it against its external force) sleeps
 // or falls asleep in the same step: its velocities are set to zero and it is held. A
@@ -116,10 +116,10 @@ struct SleepOptions {
 // the couples with μ_r R r_n; e is left to the couples where w_e ≤ μ_r R (`arm`). So a
 // single point keeps both axes, an edge on a face (points on a line) the axis along the
 // edge, a face on a face none. Couples about an axis the points also hold are redundant
-// with the normal impulses, and Gauss–Seidel drifts along that redundancy: a box resting
-// face down hit the 1000-sweep cap on every step, and the 500-grain deposit did on some
-// steps from t = 3, until the couples were restricted (docs/core_nscd.md, "Session 26:
-// rolling resistance at the cost of the friction it sits beside"). The axes are the
+// with the normal impulses, and Gauss–Seidel drifts along that redundancy: with couples
+// about every tangent axis a box resting face down hits the 1000-sweep cap on every step,
+// and the 500-grain deposit does on some steps from t = 3 (2026-11-27, commit b774b66;
+// docs/design.md, "Rolling resistance"). The axes are the
 // principal axes of the points' spread in the plane normal to `normal`.
 struct RollingAxes {
   int count = 2;                                   // free axes: 0, 1 or 2
@@ -141,8 +141,8 @@ struct GrainStepOptions {
   // narrow phase (GjkSimplex, core/geometry/contact_geometry.h; fix keyword
   // `warm_geometry`): the same contacts to GJK's tolerance, not to the bit. Without the
   // cache (skin 0) every GJK starts cold. Off by default: over 18 paired seeds of the
-  // reduced column it moved H_n by +2.85 and φ_p by +2.40 standard errors (README,
-  // "Work against precision", sessions 31 and 32).
+  // reduced column it moved H_n by +2.85 and φ_p by +2.40 standard errors (2026-11-28,
+  // commit a5dadca).
   bool warm_geometry = false;
   // rolling resistance μ_r ≥ 0 (not in the paper; fix keyword `rolling_friction`): each
   // contact point resists rolling with a couple of at most μ_r R r_n, R the sum of the

@@ -148,10 +148,10 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
   // resting stack or pile: the same contacts step after step), and the factorisation too
   // while its values are the same to the bit (a pile at rest: the same poses; the same
   // factors as a new factorisation would give, so the results do not change). Kept
-  // factors of a W_SS that changed, refined on the current one, were tried (session 25):
-  // a coupled column at rest changes W_SS by 5e-8 of its largest entry per step, and
-  // factors 1e-6 or 1e-4 old made some stick solves harmful (the near-null directions
-  // that ε holds move), so they are not kept.
+  // factors of a W_SS that changed are not kept, even refined on the current one: a
+  // coupled column at rest changes W_SS by 5e-8 of its largest entry per step, and
+  // factors 1e-6 or 1e-4 old make some stick solves harmful (the near-null directions
+  // that ε holds move).
   struct FactorCache {
     std::vector<int> outer, inner;
     std::vector<double> values;  // of the matrix last factorised (empty: none usable)

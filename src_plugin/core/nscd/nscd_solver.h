@@ -13,7 +13,7 @@
 // Contact law, per contact point c (gap g_c ≥ 0 open, < 0 overlap, at the step start):
 // the predicted end-of-step gap g_c + h((1 − θ) u_n^k + θ u_n^{k+1}) must be ≥ 0, i.e.
 //     u_n^{k+1} + s_c ≥ 0,   s_c = (g_c / h + (1 − θ) u_n^k) / θ,
-// (for θ = 1: g + h u_n ≥ 0, the gap anticipation of the issue). An overlap (g < 0) is
+// (for θ = 1: g + h u_n ≥ 0, the gap anticipated at the step end). An overlap (g < 0) is
 // removed only in part per step: g is replaced by max(β g, −v_o h), β = overlap_recovery
 // ∈ [0, 1] (1: the whole overlap in one step; 0: overlaps are only kept from growing),
 // v_o = overlap_speed ≥ 0 the largest push-out speed. The push-out speed is a real
@@ -84,7 +84,7 @@
 // contacts every step, the exactness does not last: a coupled column at rest comes out of
 // its single sweep at an error of ~1e-6 each step (the wire's forces change), the closing
 // solve takes it to 3e-18 and the next step is back at 1e-6; there the closing solve is
-// most of the step's cost (in.column leaves it out in its relaxation, docs/core_nscd.md).
+// most of the step's cost (in.column leaves it out in its relaxation, docs/design.md, "Subspace correction").
 // Across solves (StickSolveBackoff, carried by the caller from one time step to the
 // next): a pile whose contacts slide and creep is not a structure that sticks, and its
 // stick solves make the error worse (9e-7 → 6e-5 on a 500-grain pile; W_SS of a pile is
@@ -117,11 +117,10 @@
 //     sqrt(Σ_c |m_c/R_c − proj_{D_c}(m_c/R_c − R_c w_c)|²) ≤ tolerance × max(‖q‖, ‖r‖),
 // D_c the disc of radius μ_r r_n; with `increment`, the couples' increment in the last
 // sweep at most tolerance × the bounds' norm. (Measured against |m| itself the test
-// never passed where the couples are ~0: a box at rest hit the sweep cap every step;
-// relative to the bounds' norm it asked 1/μ_r times the accuracy of Coulomb's law: the
-// 500-grain deposit took 180–370 sweeps per step while it landed, against 8–15 now;
-// docs/core_nscd.md, "Session 26: rolling resistance at the cost of the friction it sits
-// beside".) Stick
+// never passes where the couples are ~0: a box at rest hits the sweep cap every step;
+// relative to the bounds' norm it asks 1/μ_r times the accuracy of Coulomb's law: the
+// 500-grain deposit takes 180–370 sweeps per step while it lands, against 8–15 with the
+// form above; 2026-11-27, commit b774b66; docs/design.md, "Rolling resistance".) Stick
 // solves hold couples as they are and would leave them one update behind, so method
 // subspace makes none when any contact has a rolling resistance. A sphere (a point swept
 // by r, R = r) on a plane decelerates at (5/7) μ_r g while it rolls and rests on an
@@ -161,7 +160,7 @@ enum class ConvergenceMeasure { increment, natural_map, increment_then_natural_m
 enum class SolverMethod { gauss_seidel, subspace };
 
 // Defaults: random order and the increment-then-natural-map measure. Measured on a
-// column of 20 frictional cubes (4 points per interface, docs/core_nscd.md): to a Siconos
+// column of 20 frictional cubes (4 points per interface, docs/design.md, "The sweep"): to a Siconos
 // error of 1e-6 the forward order needs ~230000 sweeps, alternating ~17000, random ~6500;
 // with the forward order the increment sat near 4e-6 per sweep while the interface loads
 // were still 2e-4 off, so the tolerance is checked on the Siconos error before stopping.

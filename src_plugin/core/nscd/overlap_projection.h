@@ -1,9 +1,9 @@
-// Post-step projection of the grains' overlaps (issue 16; not in the paper, keyword
+// Post-step projection of the grains' overlaps (not in the paper, keyword
 // `project` of fix nscd/polyhedra). Moreau–Jean constrains the gap linearised at the
 // step start, g + h u_n ≥ 0; a grain tumbling onto another, a rounded edge whose closest
 // point slides along it or a feature switch within the step close the true gap by more
 // than the linear term, and the overlap left at the next step start was measured up to
-// 7e-4 a_max in the 500-grain deposit (docs/core_contact.md), then pushed out only at the
+// 7e-4 a_max in the 500-grain deposit (docs/design.md, "Position update and overlap projection"), then pushed out only at the
 // overlap_speed cap. The projection corrects the positions at the end of the step, never
 // the velocities (post-stabilisation, Cline & Pai 2003):
 //

@@ -27,7 +27,7 @@ struct GearCoefficients {
 
 // The 6-value corrector with c0 = 3/16 is stable on a harmonic mode of frequency ω only
 // for ω·dt below this (spectral radius of its one-step map ≤ 1; measured, see
-// tests/core/test_gear_integrator.cpp and docs/core_wire.md). Velocity Verlet's bound is 2.
+// tests/core/test_gear_integrator.cpp and docs/design.md, "Wire forces and integration"). Velocity Verlet's bound is 2.
 constexpr double kGear5StableOmegaDt = 0.313;
 
 // Per-particle Gear history: unscaled derivatives a = x'', j = x''', s = x^(4), c = x^(5),

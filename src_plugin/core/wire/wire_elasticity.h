@@ -1,7 +1,7 @@
 // Elasticity of the wire: a chain of point masses joined by axial springs, with a
 // rotational (bending) spring at every inner node; no torsion (paper Sec. 2.2, Fig. 3).
 // Stateless force kernels in the manner of LAMMPS bond/angle styles, so the LIGGGHTS
-// adapter only loops over its bonds and angles. Formulas and sources: docs/core_wire.md.
+// adapter only loops over its bonds and angles. Formulas and sources: docs/design.md, "Wire forces and integration".
 #pragma once
 
 #include <Eigen/Core>
@@ -121,7 +121,7 @@ double wire_bending_frequency_max(const WireMaterial& material);
 // the elastic forces alone (contacts add their own stiffness). Run at a fraction of it:
 // the fifth-order Gear predictor–corrector (c0 = 3/16) is stable on a harmonic mode only
 // for ω dt < 0.313, i.e. dt < 0.156 dt_crit, so use dt ≤ 0.1 dt_crit with Gear
-// (docs/core_wire.md). +infinity when m_elo = m_rot = 0.
+// (docs/design.md, "Wire forces and integration"). +infinity when m_elo = m_rot = 0.
 double wire_critical_time_step(const WireMaterial& material);
 
 }  // namespace wiregrain
