@@ -7,9 +7,9 @@ as the transient of a change of setting).
 
     bench/bead_speeds.py DUMP --interval DT [--top 6]
 
-DT: the time between two dumps (N × timestep). Used for the rattling beads of README
-"Rattling beads (session 21)": in.column resumed from a restart with the dump above added,
-once per setting."""
+DT: the time between two dumps (N × timestep). Used to find the beads that rattle under
+damped contacts in the Table 1 column: in.column resumed from a restart with the dump above
+added, once per setting."""
 
 import argparse
 

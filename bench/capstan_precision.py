@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Work-precision benchmark on a case with a known answer (issue 14): the capstan.
+"""Work-precision benchmark on a case with a known answer: the capstan.
 
     bench/capstan_precision.py [--liggghts build/liggghts] [--wrap 3.14159] [--out capstan_precision.png]
         [--steps 1e-4 2e-4 5e-4 1e-3 2e-3] [--schemes gear5 verlet]

@@ -43,9 +43,10 @@ Other only). Measured, not extrapolated.
 --relaxed RESTART: the complete column's cost per step measured instead on a relaxed
 column from a real run (its column_relaxed.restart, continued with in.column's resume 1
 for --sample steps with the walls moving). The quick deposit packs looser than the
-paper's (session 16: 1775 contact points per step against 3375 in the Table 1 column
-deposited for t_layer = 10, 9.9 against 19-20 ms per step on 2 ranks), so without it the
-relaxation and wall removal, most of the run, are underestimated about twofold. The
+paper's (1775 contact points per step against 3375 in the Table 1 column deposited for
+t_layer = 10, 9.9 against 19-20 ms per step on 2 ranks; 2026-11-25, commit bc5ab83), so
+without it the relaxation and wall removal, most of the run, are underestimated about
+twofold. The
 deposition is still extrapolated from the quick deposit's layers, and the NSCD split
 from its sample."""
 
@@ -111,8 +112,8 @@ def relaxed_sample(args, dt):
     work = tempfile.mkdtemp(prefix="wiregrain-column-bench-relaxed-")
     shutil.copy(args.relaxed, os.path.join(work, "column_relaxed.restart"))
     # the deposition's end, which in.column's resume checks the restart's step against: the
-    # run's own record, or (a restart from before session 29, when the deck wrote none) 0,
-    # which leaves only the check against t_end
+    # run's own record, or (a restart whose folder holds no such record) 0, which leaves only
+    # the check against t_end
     record = os.path.join(os.path.dirname(os.path.abspath(args.relaxed)), "column_deposited.txt")
     if os.path.exists(record):
         shutil.copy(record, work)
@@ -149,7 +150,7 @@ def from_log(path, nlayers):
     starts = [m.start() for m in re.finditer(r"Loop time of", out)]
     relaxed = out.find("in.column relaxed at t")
     # the deposition's runs: those before the deck's "in.column deposited at" line (a layer
-    # ended early by ke_layer runs in chunks); logs from before that line: the first 2 nlayers
+    # ended early by ke_layer runs in chunks); logs without that line: the first 2 nlayers
     deposited = re.search(r"^in\.column deposited at t", out, re.M)
     phase_of = []
     for k, pos in enumerate(starts):
@@ -271,7 +272,7 @@ run {args.sample}
     print(f"\nthe paper's procedure extrapolated: deposition {dep_seconds / 3600:.2f} h "
           f"({2 * nlayers} x {paper_layer_steps:.0f} steps), relaxation + wall removal {rest_seconds / 3600:.2f} h "
           f"({paper_rest_steps:.0f} steps), total {(dep_seconds + rest_seconds) / 3600:.2f} h "
-          f"(the paper: about a week on one core; issue 14's bar: 1 h)")
+          f"(the paper: about a week on one core; the target: 1 h)")
 
     # breakdown: deposition runs weighted by the paper's steps, the sample by the rest
     total_parts = {}

@@ -7,10 +7,10 @@
 // fallback. This tool measures, on one set of slide problems:
 //   from a guess    ours (Newton, clamped) | GSL fdfsolver newton, secant, steffenson
 //                   (same start, same stop |Δφ| ≤ 1e-13 rad, at most 30 iterations);
-//   in a bracket    safeguarded Newton–bisection (rtsafe, the core's fallback before this
-//                   tool, kept below) | the core's slide_root_in_bracket (GSL brent, since
-//                   this tool) | GSL brent with its solver allocated once, on every sign
-//                   change of the 24-angle scan that the fallback would refine;
+//   in a bracket    safeguarded Newton–bisection (rtsafe, below) | the core's
+//                   slide_root_in_bracket (GSL brent) | GSL brent with its solver
+//                   allocated once, on every sign change of the 24-angle scan that
+//                   the fallback would refine;
 //   whole solve     solve_coulomb_local (stick test + Newton + fallback), for scale.
 // Two start sets: cold (the direction of the rejected stick impulse −W⁻¹q, what
 // solve_coulomb_local uses without a guess) and warm (our solution direction + a normal
@@ -261,7 +261,7 @@ RootResult gsl_brent_root(gsl_root_fsolver* solver, const Bracket& bracket,
   return result;
 }
 
-// The core's fallback until bench/local_slide_gsl measured it (kept here for the record):
+// The bracketed search compared with the core's GSL Brent:
 // safeguarded Newton–bisection ("rtsafe", Press et al., Numerical Recipes, Sec. 9.4) on
 // [lo, hi] — a Newton step when it stays inside the bracket, else bisection — stopping
 // when a step is below 1e-14 rad or the bracket below 1e-15 rad, at most 200 evaluations.

@@ -17,7 +17,7 @@ hit the sweep cap and the wall time.
 each --config (default: the grains of the Table 1 shape library as they are, r_p = 0.1).
 
 --grains and --half-width change the pile: N grains created in the box of that half
-width less 1.1 (the heap of 60 of docs/core_nscd.md, "Sleeping grains": --grains 60
+width less 1.1 (the heap of 60 for docs/design.md, "Sleeping grains": --grains 60
 --half-width 3 --config "sleep 1e-2 0.2").
 
 --side-by-side runs the settings at the same time (one process each; on a 2-core machine
@@ -31,7 +31,7 @@ per setting and seed (from when the kinetic energy stays below the bar, its last
 the largest grain's share of it) and the count of seeds at rest at the end.
 
 The grains are created at random in the box from z = 1.1 to 38 and fall under g = 1; the
-pile is complete by t ~ 12. Issue 13's bar: kinetic energy below 1e-8 m g a_max per grain
+pile is complete by t ~ 12. At rest means: kinetic energy below 1e-8 m g a_max per grain
 and staying there."""
 
 import argparse
@@ -111,7 +111,7 @@ def report(config, rows, seconds):
               f" {float(zcm):9.6f}", flush=True)
 
 
-BAR = 1e-8  # issue 13: kinetic energy per grain in m g a_max
+BAR = 1e-8  # at rest: kinetic energy per grain below this, in m g a_max
 
 
 def at_rest(rows):

@@ -15,14 +15,12 @@ nscd/polyhedra, fix wire/grain, the wire–wire pair, fix wire/elastic, fix nve/
 NSCD clocks the deck prints, and the final observables, with whether they agree to the
 last printed digit (a change meant to give the same bits must). The restart's clock is
 t = step × dt_SP (input_scripts/README.md, resume): give t_relax / t_end in it.
-Session 28's relaxation figures (README, fix wire/grain; docs/core_nscd.md) were measured
-this way.
 
 `--alternate R [--np N]` runs them one after the other instead, A B A B ... (R rounds),
 each on N ranks (`mpirun -np N`; default 2, the Table 1 run's), and prints every round's
-figures and the ratio of the sums: session 30 found the simultaneous runs' second slot
-4-9 % slower in every part, unrelated builds alike, which hides a change of a few per
-cent; alternating runs share the machine's drift instead."""
+figures and the ratio of the sums: the simultaneous runs' second slot was measured 4-9 %
+slower in every part, unrelated builds alike (2026-11-27, commit 3156e83), which hides a
+change of a few per cent; alternating runs share the machine's drift instead."""
 
 import argparse
 import os

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Stress matrix (issue 16): short decks pushed one parameter at a time far from the
+"""Stress matrix: short decks pushed one parameter at a time far from the
 defaults; each cell must either stay physical or say why not (a WARNING or an ERROR).
 
     bench/stress_matrix.py [--liggghts build/liggghts] [--quick] [--out stress_matrix.md]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Work-precision benchmark (issue 14): run time against error of the time-stepping
+"""Work-precision benchmark: run time against error of the time-stepping
 settings of the wire-grain coupling, all cases side by side in one invocation, a table
 printed and a PNG drawn.
 

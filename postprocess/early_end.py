@@ -12,7 +12,7 @@ For each ke_stop, the deck's rule (input_scripts/in.run_until_quiet) applied to 
 chunks (after every chunk: quiet += t_check if KE per grain < ke_stop, else quiet = 0; the
 phase ends once quiet >= t_quiet, the wall phase not before the walls have moved free_dist
 a_max), with the kinetic energy of the grains (thermo column ke_grain, the deck's default
-ke_of) or of grains and wire (ke_all; the column ke_rel of outputs from before ke_of):
+ke_of) or of grains and wire (ke_all; the column ke_rel of a deck's output without ke_of):
   relaxation  the time it would have ended at and the share of its steps skipped; what the
               column does after an earlier start of the walls is another trajectory, so no
               observables are given for it (run the deck with that ke_stop);
@@ -36,7 +36,7 @@ def chunks(text, ke_of="grains"):
     phase 'relax' (a run whose thermo has the KE but no Hn, nor the deposition's wtop) or 'walls' (both): each run's
     last thermo row before its "Loop time" line (warnings between the rows are skipped).
     The KE is the column ke_grain or ke_all (ke_of), or ke_rel (grains and wire) in the
-    output of a deck from before ke_of."""
+    output of a deck without ke_of."""
     # (LIGGGHTS cuts thermo column names to 8 characters: v_ke_grains is "ke_grain")
     wanted = tuple(name[:8] for name in (("ke_" + ke_of, "ke_rel") if ke_of == "all" else ("ke_" + ke_of,)))
     found, header, last = [], None, None
@@ -46,7 +46,7 @@ def chunks(text, ke_of="grains"):
             header, last = words, None
         elif words[:2] == ["Loop", "time"]:
             column = next((c for c in wanted if header is not None and c in header), None)
-            # (the deposition's thermo has the KE too since session 29, and the top of the wire: wtop)
+            # (the deposition's thermo has the KE too, and the top of the wire, wtop, which tells it apart)
             if column is not None and last is not None and "wtop" not in header:
                 row = dict(zip(header, last))
                 found.append(("walls" if "Hn" in header else "relax", int(row["Step"]), row[column], row,

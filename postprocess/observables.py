@@ -87,7 +87,7 @@ def read_vtk(path):
         ids, centers, tops_per_face = (vf.cell_array(grains, name) for name in ("id", "center", "top"))
         if ids is None or centers is None or tops_per_face is None:
             sys.exit(f"observables.py: {path} has no cell arrays id, center and top (dump polyhedron/vtk "
-                     "writes them since session 11; read an older run's dump custom files instead)")
+                     "writes them; for a file without them read the run's dump custom files instead)")
         first = np.unique(ids, return_index=True)[1]  # one face per grain
         centres, tops = centers[first], tops_per_face[first]
         grain_type = vf.cell_array(grains, "type")[first]

@@ -17,7 +17,7 @@ seed deposits the same grain layers, so these pairs compare best) for H_n, the f
 height H and the four observables: the mean difference ± its standard error (std ddof 1
 over √n), n the seeds both have, and their ratio (|ratio| > 2: a difference beyond the
 seeds' noise at about 95 %). --work-precision PNG (with --paired): the work–precision
-plot of the sweep (issue 14): for each value, its mean wall time per run (the summary's
+plot of the sweep: for each value, its mean wall time per run (the summary's
 wall_s) against |mean paired difference| / its standard error for H_n, φ_p, U_s/L and
 z_wpc, the line at 2 the criterion; the baseline at 0; and a printed table of the same
 with the speed-up over the baseline's mean wall time.

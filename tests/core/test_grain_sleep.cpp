@@ -1,4 +1,4 @@
-// Sleeping grains (core/nscd/grain_step.h, SleepOptions; issue 14): what sleeping must
+// Sleeping grains (core/nscd/grain_step.h, SleepOptions): what sleeping must
 // not change (the loads a pile carries once at rest, the motion of a grain a wall
 // pushes, of a grain pulled off its rest), against hand-worked statics and kinematics,
 // and what it must skip (no detection or solve among sleeping grains).

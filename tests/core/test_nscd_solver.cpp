@@ -181,7 +181,7 @@ TEST(NscdBox, SlidingOverManySteps) {
 }
 
 // Columns of N cubes (4 points per interface) at rest: the normal impulse summed over the
-// interface under the k-th cube from the top is k m g h, checked to 1e-4 relative (issue)
+// interface under the k-th cube from the top is k m g h, checked to 1e-4 relative
 // with a Siconos-error tolerance of 1e-6 (default measure: increment, then the Siconos
 // error; 1e-5 leaves load errors up to 2e-4 at N = 20). Sweep counts per order are
 // printed; the forward order is slow on tall frictional columns (N = 20: ~2.3e5 sweeps,

@@ -1,6 +1,6 @@
 // slide_root_in_bracket (core/nscd/coulomb_local.h): the slide-case fallback, Brent's method
 // from GSL on a sign change of g(φ) found by the 24-angle scan; chosen over a safeguarded
-// Newton–bisection by bench/local_slide_gsl (docs/core_nscd.md, "GSL and the slide case").
+// Newton–bisection by bench/local_slide_gsl (docs/design.md, "The local solve").
 #include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 

@@ -178,7 +178,8 @@ TEST_F(WireOnRoundedCube, TheBeadsShareChangesContinuouslyAsTheSegmentTiltsPastT
     if (previous >= 0.0) largest_jump = std::max(largest_jump, std::abs(share0 - previous));
     previous = share0;
   }
-  EXPECT_LT(largest_jump, 0.03);  // steps of 1e-4 rad; the old rule jumped by 0.5 − 0.25
+  // steps of 1e-4 rad; a share switched at the tolerance would jump by 0.5 − 0.25
+  EXPECT_LT(largest_jump, 0.03);
 }
 
 // A segment lying across the top of a sphere (radius 1 at the origin, a one-vertex
@@ -307,7 +308,7 @@ TEST(WireOnStockSphere, AnAxisThroughTheCentreGetsAFiniteForceAcrossTheSegment) 
   EXPECT_TRUE((c.force_bead0 + c.force_bead1).allFinite());
 }
 
-// GJK's early exit for polyhedra (ContactOptions::exit_gap, session 28): with exit gap g,
+// GJK's early exit for polyhedra (ContactOptions::exit_gap): with exit gap g,
 // a segment whose gap is at most g gets exactly the full query's answer (every field,
 // the same bits); a farther one either that answer or a lower bound of its gap above g
 // (method gjk_far), never above the true gap. The wire contact's force and spring do not

@@ -3,11 +3,11 @@ NSCD (the kinetic energy falls from ~6 to below 1e-4 m g a_max per grain), overl
 below the projection's tolerance, and the pile gives the same state on 1 and 2 ranks
 after 100 more steps.
 
-Whether this one deposit comes fully to rest (issue 13's bar, 1e-8 m g a_max per grain)
+Whether this one deposit comes fully to rest (kinetic energy below 1e-8 m g a_max per grain)
 is not asserted: the deposit is chaotic (a change of rounding in the solver gives another
 pile) and some piles keep a grain rolling in a well of its neighbours' rounded edges,
-which an undamped rigid model does not stop (docs/core_nscd.md, "Rattlers"; 4 of 6 seeds
-were at rest at t = 40 in session 23). Coming to rest is asserted
+which an undamped rigid model does not stop (docs/design.md, "Rolling resistance"; 4 of 6 seeds
+were at rest at t = 40, 2026-11-27, commit 74bbd3f). Coming to rest is asserted
 where nothing else can move a grain: four Table 1 grains dropped apart onto the floor
 (test_lone_grains_come_to_rest), and the absence of the numerical push-out creep on the
 cube sunk into the floor (tests/styles/test_nscd.py: no push-out speed at all)."""
@@ -63,9 +63,9 @@ class LoneGrains(DeckTestCase):
     def test_lone_grains_come_to_rest(self):
         # four Table 1 grains on a 4 a_max lattice, dropped from 1.6 a_max onto the
         # frictional floor, undamped: each tumbles onto a face alone (no neighbour, no
-        # well to roll in), so each must come to rest. Issue 13's bar, 1e-8 m g a_max per
-        # grain, at the last 10 samples (t = 31–40); measured at rest from t = 12–24 over
-        # seeds 7–12 (session 23), at ~1e-38 in all; the floor then carries m g exactly.
+        # well to roll in), so each must come to rest: below 1e-8 m g a_max per grain at
+        # the last 10 samples (t = 31–40); measured at rest from t = 12–24 over seeds 7–12
+        # (2026-11-27, commit 4638ea4), at ~1e-38 in all; the floor then carries m g exactly.
         r = run(LONE_GRAINS)
         self.assertRanCleanly(r)
         t = r.thermo(0)
@@ -91,7 +91,7 @@ class GrainDeposit(DeckTestCase):
               f"{t['nscd[3]'][-1]:.0f} contact points")
         self.assertTrue(np.all(t["Atoms"] == 500))
         # poured from up to 38 a_max: 6.1–7.3 m g a_max per grain at the peak (the 8
-        # deposits of bench/nscd_pile_rest.py --seeds in session 23) ...
+        # deposits of bench/nscd_pile_rest.py --seeds; 2026-11-27, commit 74bbd3f) ...
         self.assertGreater(per_grain.max(), 3.0)
         # ... settled by t = 21: over t = 21–25 at most 3.2e-5 in those 8 (seed 3, a rattler
         # rolling in a well), 2.1e-5 (seed 1, before its rattler stopped), 2.8e-6, and
