@@ -25,6 +25,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libfclib-dev libsiconos-numerics-dev
   python3 python3-numpy python3-matplotlib python3-vtk9
+  xvfb  # postprocess/render_column.py: Debian's VTK renders through X only, Xvfb without a display
 )
 
 as_root() {
@@ -100,7 +101,7 @@ run_tests() {
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" ${CTEST_ARGS:-}
 }
 
-# The main example; see README.md, section Examples.
+# The main example; see docs/examples.md.
 run_example() {
   local work="$BUILD_DIR/examples/column"
   mkdir -p "$work"

@@ -7,6 +7,7 @@ import glob
 import json
 import os
 import re
+import struct
 import subprocess
 import tempfile
 
@@ -207,6 +208,109 @@ class EarlyEnd(DeckTestCase):
                 # the thermo row holds 8 significant digits
                 got = float(re.search(re.escape(name) + r" = (\S+)", line).group(1))
                 self.assertAlmostEqual(got, value, delta=1e-7 * max(abs(got), 1e-12), msg=name)
+
+
+class RenderColumn(DeckTestCase):
+    """postprocess/render_column.py on the VTK files of a tiny deck (six grains falling
+    under a double wire loop, 100 steps, both dumps every 50): single pictures from the
+    files and from the series, and two states side by side; each a PNG of the size asked
+    for whose pixels are not all one colour."""
+    DECK = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -3 3 -3 3 -1 8
+create_box      2 box
+region          fill block -2 2 -2 2 1.1 3.5
+create_grains   1 6 random fill seed 5
+group           grains type 1
+create_wire     2 loop 0 0 4.5 1.8 2 0.25
+group           wire type 2
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd grains nscd/polyhedra timestep 1e-3 wall 0 0 0 0 0 1
+timestep        1e-3
+pair_style      wire/contact
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    delay 0
+fix             elastic wire wire/elastic
+fix             integr wire nve/gear
+fix             floor wire wire/wall plane 0 0 0 0 0 1
+fix             wg wire wire/grain grains
+dump            grains grains polyhedron/vtk 50 post/grains_*.vtp
+dump            wire wire wire/vtk 50 post/wire_*.vtp energy elastic
+run             100
+"""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.result = run(cls.DECK)
+
+    def png_size(self, path):
+        """(width, height) from the PNG's IHDR chunk."""
+        with open(path, "rb") as f:
+            head = f.read(24)
+        self.assertEqual(head[:8], b"\x89PNG\r\n\x1a\n", path)
+        self.assertEqual(head[12:16], b"IHDR", path)
+        return struct.unpack(">II", head[16:24])
+
+    def pixels(self, path):
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkIOImage import vtkPNGReader
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        image = reader.GetOutput()
+        width, height, _ = image.GetDimensions()
+        return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+
+    def render(self, name, *args, size=(320, 240)):
+        out = os.path.join(self.result.workdir, name)
+        status, text = script("render_column.py", *args, "--out", out, "--size", *map(str, size),
+                              cwd=self.result.workdir)
+        self.assertEqual(status, 0, text[-2000:])
+        self.assertGreater(os.path.getsize(out), 1000, text)
+        self.assertEqual(self.png_size(out), size)
+        return out
+
+    def assertPainted(self, pixels, what):
+        """Not one flat colour: many colours and some spread of the values."""
+        colours = np.unique(pixels.reshape(-1, 3), axis=0)
+        self.assertGreater(len(colours), 50, what)
+        self.assertGreater(pixels.astype(float).std(), 5.0, what)
+
+    def test_deck_wrote_both_series(self):
+        self.assertRanCleanly(self.result)
+        for name in ("grains", "wire"):
+            with open(self.result.path(f"post/{name}.vtp.series")) as f:
+                self.assertEqual(len(json.load(f)["files"]), 3, name)
+
+    def test_files(self):
+        out = self.render("files.png", "--grains", self.result.path("post/grains_100.vtp"),
+                          "--wire", self.result.path("post/wire_100.vtp"), "--view", "side")
+        # the scene, left of the colour bar (the right 12 %)
+        self.assertPainted(self.pixels(out)[:, :280], "files.png")
+
+    def test_series_frame(self):
+        out = self.render("series.png", "--series", self.result.path("post"), "--frame", "t=0.05",
+                          size=(300, 200))
+        self.assertPainted(self.pixels(out)[:, :260], "series.png")
+
+    def test_before_after(self):
+        out = self.render("pair.png", "--before", self.result.path("post"), "0", "--after", self.result.path("post"),
+                          "--titles", "start", "end", "--layout", "row", size=(480, 240))
+        pixels = self.pixels(out)
+        # each panel (the left and right 44 % of the picture; the colour bar beside them)
+        self.assertPainted(pixels[:, :210], "left panel")
+        self.assertPainted(pixels[:, 215:420], "right panel")
+
+    def test_bad_frame(self):
+        status, text = script("render_column.py", "--series", self.result.path("post"), "--frame", "7", "--out", "x.png",
+                              cwd=self.result.workdir)
+        self.assertNotEqual(status, 0)
+        self.assertIn("--frame 7: ", text)
+        self.assertIn("has frames 0 to 2", text)
 
 if __name__ == "__main__":
     main()
