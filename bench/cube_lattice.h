@@ -1,8 +1,8 @@
 // The generated pile of bench/fclib_nscd and bench/nscd_body_sweep: NX×NY columns of NZ
-// unit cubes (mass 1, inertia 1/6) on a frictional ground, g = 1, h = 1e-3 (DESIGN.md §2
-// units), in face contact with their neighbours (4 points per face, contacts listed body
-// by body: ground or lower face, then the −x and −y faces). perturb: random start
-// velocities of 0.1 g h and gaps of ±2e-7 (seeded); else at rest and touching.
+// unit cubes (mass 1, inertia 1/6) on a frictional ground, g = 1, h = 1e-3 (docs/units.md,
+// "The decks' units"), in face contact with their neighbours (4 points per face, contacts
+// listed body by body: ground or lower face, then the −x and −y faces). perturb: random
+// start velocities of 0.1 g h and gaps of ±2e-7 (seeded); else at rest and touching.
 #pragma once
 
 #include <Eigen/Dense>

@@ -7,7 +7,8 @@
 //
 // Printed per run: the worst relative load error over all steps and interfaces, the steps
 // where it exceeds 1e-4, steps that hit the sweep cap, sweeps (mean, max), stick solves,
-// the largest speed of a box, wall time. bench/nscd_stacks.py runs the table of the README.
+// the largest speed of a box, wall time. bench/nscd_stacks.py runs the table of
+// docs/benchmarks.md, "Stacks at rest".
 #include <algorithm>
 #include <chrono>
 #include <cmath>

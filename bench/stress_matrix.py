@@ -24,12 +24,13 @@ Axes (one at a time around the default cell of each scene):
   dt       the time step as a fraction of the stability estimate. fix wire/elastic prints
            its own (dt_crit = 2/omega_max and the gear5 limit 0.156 dt_crit: the script
            checks its own figure against that line); the contact styles warn only beyond
-           theirs (core/contact/contact_time_step.h), so the script estimates each from
-           README's formulas: an undamped spring k_n = E* l_w pi/4
-           on the lightest mass it can act on (wall: one bead; wire-wire: E* = E/2, half a
-           bead; wire-grain: 1/E* = (1-nu_w^2)/E_w + (1-nu_p^2)/E_p, one bead, the grain
-           held), gear5 limit 0.313/omega; the estimate is the smallest of them. NSCD is
-           implicit and documents no limit: for scene c the script uses h_est = r_p / v_max
+           theirs (core/contact/contact_time_step.h), so the script estimates each from the
+           formulas of docs/design.md, "The wire: bead chain with soft contacts": an
+           undamped spring k_n = E* l_w pi/4 on the lightest mass it can act on (wall: one
+           bead; wire-wire: E* = E/2, half a bead; wire-grain: 1/E* = (1-nu_w^2)/E_w +
+           (1-nu_p^2)/E_p, one bead, the grain held), gear5 limit 0.313/omega; the estimate
+           is the smallest of them. NSCD is implicit and documents no limit: for scene c the
+           script uses h_est = r_p / v_max
            (a grain at the largest fall speed moves its sweep radius in a step);
   E        E_w / E_p from 1e-3 to 1e3 (scene a: E_w / E of the wall; scene b: E_p of fix
            wire/grain, the wire kept at E_w = 100 so its elastic limit stays);
@@ -69,7 +70,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # Table 1 wire and grains (create_wire, create_grains, fix wire/elastic defaults)
 R_W, L_W, RHO_W, E_W = 0.1, 0.2, 0.5, 100.0
 A_MAX, R_P, RHO_P, E_P, NU_P = 1.0, 0.1, 1.5, 1000.0, 0.3
-GEAR5 = 0.313          # gear5 is stable for omega dt < 0.313 (README, fix wire/elastic)
+GEAR5 = 0.313          # gear5 is stable for omega dt < 0.313 (docs/commands/fix_nve_gear.md)
 G = 1.0
 V_REF = 1.0            # impact speeds are set as multiples of this
 WIRE_OVERLAP, GRAIN_OVERLAP, DRIFT = 0.5 * R_W, 0.1 * A_MAX, 0.10

@@ -1,4 +1,5 @@
-# Build LIGGGHTS-PUBLIC 3.8.0 with the plugin styles compiled in (DESIGN.md section 1).
+# Build LIGGGHTS-PUBLIC 3.8.0 with the plugin styles compiled in (docs/design.md, "Code map";
+# docs/install.md).
 #
 #  1. sources: LIGGGHTS_SOURCE_DIR (a checkout holding src/), else Debian's source package
 #     `liggghts` (its orig tarball, sha256-checked, kept in LIGGGHTS_TARBALL_CACHE);
@@ -176,7 +177,7 @@ if(WIREGRAIN_SANITIZE)
   # Upstream's undefined-behaviour reports are recoverable (ours stop the program): only
   # then can UBSAN_OPTIONS=suppressions=tests/sanitize/ubsan.supp silence a report in
   # LIGGGHTS' own code; the sanitized deck tests set halt_on_error=1, so any report that
-  # the file does not name still stops the run (README: Tests, Sanitizers).
+  # the file does not name still stops the run (docs/install.md, "Sanitizers").
   target_compile_options(liggghts_upstream PRIVATE -fsanitize-recover=undefined)
   # The two files that instantiate every granular contact model template (granular_styles.h)
   # are compiled without the sanitizers: GCC 12 had not finished lammps.cpp after 20 minutes

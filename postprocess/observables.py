@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The column observables (H, H_n, φ_p, U_s/L, z_wpc; input_scripts/README.md) from a
+"""The column observables (H, H_n, φ_p, U_s/L, z_wpc; docs/results.md, "Observables") from a
 LIGGGHTS/LAMMPS `dump custom` text file, so that they can be had from any run that wrote
 one: ours (in.column writes post/column_relaxed_STEP.dump and post/column_final_STEP.dump),
 a stock LIGGGHTS sphere run, or another code's dump in the same format; or from the VTK

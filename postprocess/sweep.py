@@ -15,7 +15,7 @@ failed run is tried again. --summary-only runs nothing and tabulates the finishe
 
 OUT/summary.csv: one row per finished run (param, value, seed, H_n, phi_p, U_s/L, z_wpc,
 H0, H, wall time in s), rewritten after every run, read by postprocess/plot_sweep.py. The observables: see
-input_scripts/README.md. Uses only Python's standard library."""
+docs/results.md, "Observables". Uses only Python's standard library."""
 
 import argparse
 import concurrent.futures

@@ -3,7 +3,9 @@
 
    deck_error word ...      e.g.  if "${R} <= 0" then "deck_error in.column: R must be > 0, got ${R}"
 
-   prints "ERROR: <the words>" on every rank's screen and log and exits with status 1. */
+   stops the run through error->all: rank 0 prints "ERROR: <the words> (<source>:<line>)" to
+   the screen and the log file, and every rank exits with status 1. No words: the message is
+   "deck_error: the deck stopped (no message given)". */
 
 #ifdef COMMAND_CLASS
 

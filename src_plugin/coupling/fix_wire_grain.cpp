@@ -45,7 +45,7 @@ namespace {
 // a grain as gathered: tag, shape, type, x (3), q (4), v (3), ω (3), mass, radius,
 // superquadric half-axes (3) and blockiness (2)
 constexpr int kGrainRecord = 23;
-// keyword skin's default (see the README's measurements)
+// keyword skin's default (measured: docs/benchmarks.md, "Wire on grains")
 constexpr double kDefaultSkin = 0.1;
 
 }  // namespace

@@ -1,9 +1,9 @@
 /* fix wire/grain: soft frictional contact between the wire and the grains, with the
-   grains held during the wire's sub-steps (paper Sec. 2.3–2.4, Fig. 5; docs/design.md, "Wire–grain contacts").
+   grains held during the wire's sub-steps (paper Sec. 2.3–2.4, Fig. 5; docs/design.md,
+   "Wire–grain contacts").
 
-   fix ID wire-group wire/grain grain-group [E_w 100] [nu_w 0] [E_p 1000] [nu_p 0.3]
-       [mu_s 0.5] [mu_d 0.5] [restitution 0.5 | damping_ratio z] [limit_force no|yes]
-       [max_stretch 0.5]
+   fix ID wire-group wire/grain grain-group keyword value ...
+   Every keyword, its values and its default: docs/commands/fix_wire_grain.md.
 
    Every LIGGGHTS step (the wire sub-step dt), each segment of the wire group (a bead and
    its next bead, a spherocylinder of the bead's radius r_w) is tested against the grains

@@ -1,4 +1,5 @@
-/* atom_style polyhedron: rigid convex spheropolyhedral grains (DESIGN.md section 3).
+/* atom_style polyhedron: rigid convex spheropolyhedral grains (docs/design.md, "Grains: rigid
+   spheropolyhedra, NSCD" and "Shapes and mass properties").
 
    atom_style polyhedron [mass dilated|sharp]
 

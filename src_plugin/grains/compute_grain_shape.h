@@ -5,10 +5,12 @@
 
    per-atom array: [shape, qw, qi, qj, qk, bounding radius, top]
      shape: the library index of a polyhedron (atom_style polyhedron; `grain_shapes write`
-     writes the library), −1 for a stock sphere (common/grain_atoms.h), −2 for an atom that
-     is no grain (a wire bead) or outside the group (its other columns 0);
+     writes the library), −1 for a stock sphere, −3 for a stock superquadric
+     (common/grain_atoms.h), −2 for an atom that is no grain (a wire bead) or outside the
+     group (its other columns 0);
      q: orientation body → space (a sphere: 1 0 0 0); bounding radius: the farthest surface
-     point from the centre of mass (a sphere's radius); top: the grain's highest point
+     point from the centre of mass (a sphere's radius; a superquadric's is LIGGGHTS' own
+     bounding radius); top: the grain's highest point
      (what compute column/height takes the quantile of).
 
    In a dump:  dump d all custom N f.dump id type x y z vx vy vz radius c_gs[1] c_gs[2] ... */

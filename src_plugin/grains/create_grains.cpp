@@ -206,7 +206,7 @@ void CreateGrains::command(int narg, char **arg) {
   Region *region = domain->regions[iregion];
   const double z0 = layer ? args.value_double("z0") : 0.0;
 
-  // keywords (defaults: DESIGN.md Table 1 values)
+  // keywords (defaults: the paper's Table 1; docs/units.md)
   bool have_seed = false;
   std::uint64_t seed = 0;
   double a_min = 0.8, a_max = 1.0, b_over_a = 0.8, c_over_a = 0.6, sweep = 0.1, rho = 1.5;

@@ -62,11 +62,11 @@ constexpr double kRestartLayoutWithoutCouples = -2.0;
 
 }  // namespace
 
-// keyword skin's default (README: the measurements)
+// keyword skin's default (measured: docs/benchmarks.md, "The column's run time")
 constexpr double kDefaultPairSkin = 0.1;
 // keyword project's defaults: the overlap (relative to the pair's smaller bounding radius)
 // beyond which the end-of-step poses are projected, and the cap on the passes
-// (core/nscd/overlap_projection.h; README: the 500-grain deposit with and without)
+// (core/nscd/overlap_projection.h; docs/commands/fix_nscd_polyhedra.md, "Why the defaults")
 constexpr double kDefaultProjectTolerance = 5e-5;
 constexpr int kDefaultProjectPasses = 20;
 

@@ -1,16 +1,11 @@
 /* fix nscd/polyhedra: Non-Smooth Contact Dynamics of the grains (atom_style polyhedron),
    Moreau–Jean time stepping with the exact Signorini–Coulomb law solved by nonlinear
-   Gauss–Seidel over contact points (DESIGN.md section 3; core/nscd_solver.h).
+   Gauss–Seidel over contact points (docs/design.md, "Grains: rigid spheropolyhedra, NSCD"
+   and "The NSCD step and its solver"; core/nscd/nscd_solver.h).
 
-   fix ID group nscd/polyhedra [friction 0.5] [tolerance 1e-4] [max_iterations 1000]
-       [order forward|alternating|random] [seed 1] [warm_start yes|no] [restitution 0]
-       [theta 1] [overlap_recovery 1] [overlap_speed 0.1] [damping 0]
-       [convergence natural_map|increment|both] [freeze 0]
-       [margin 0] [write_problems N file_*.txt] [every 1 | timestep h]
-       [project 5e-5] [project_passes 20] [sleep 0 0.5] [detection shared|replicated]
-       (README: every keyword, skin, manifold, method, ...)
-       [wall px py pz nx ny nz [wall_friction mu] [wall_velocity vx vy vz]] ...
-       [wall_fix ID [wall_friction mu]] ...
+   fix ID group nscd/polyhedra keyword value ...
+   Every keyword (walls included), its values and its default:
+   docs/commands/fix_nscd_polyhedra.md.
 
    Each step: at the end of step n, with the forces and torques of step n (gravity
    and every other style's), the free velocities v + h F/m, L + h T are corrected by the

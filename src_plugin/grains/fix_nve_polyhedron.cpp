@@ -52,7 +52,8 @@ void FixNVEPolyhedron::init() {
                                " use create_grains)");
 }
 
-// start consistent: the angular momentum of each grain from its angular velocity
+// start consistent: the angular velocity of each grain from its angular momentum,
+// ω = R I⁻¹ Rᵀ L (L is the state the integration advances)
 void FixNVEPolyhedron::setup(int /*vflag*/) {
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) grains_->omega_from_angmom(i);

@@ -5,7 +5,7 @@
 
    Translation: velocity Verlet. Rotation: angular momentum L (space frame) kicked by the
    torque over half steps, the torque-free rotation in between by the splitting of
-   core/rigid_body.h (second order, or fourth with splitting4); L is conserved exactly
+   core/nscd/rigid_body.h (second order, or fourth with splitting4); L is conserved exactly
    without torque, the energy error stays bounded. The quaternion is renormalised every
    step; angular velocity ω = R I⁻¹ Rᵀ L. */
 

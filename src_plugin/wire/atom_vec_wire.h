@@ -1,4 +1,5 @@
-/* atom_style wire: beads of an elastic wire (DESIGN.md section 4).
+/* atom_style wire: beads of an elastic wire (docs/design.md, "The wire: bead chain with
+   soft contacts").
 
    Per bead: position, velocity, force, radius (the wire radius r_w), mass, and the chain
    links: the tags of the previous and next bead of the same wire (0 at a free end) and

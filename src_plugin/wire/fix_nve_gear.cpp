@@ -221,7 +221,7 @@ void FixNVEGear::final_integrate() {
 // The contact styles add to the beads' loads while they compute their forces (owned and
 // ghost beads) in a step the check asks for, so the loads start from zero before them.
 // (Forming and adding each contact's loads is what the check costs: +13 % per step on a
-// piled wire checked every step, bench/compare_builds.py, README fix nve/gear.)
+// piled wire checked every step, bench/compare_builds.py; 2026-11-26, commit ad0e38a.)
 void FixNVEGear::pre_force(int /*vflag*/) {
   if (!wire_ || check_every_ == 0 || update->ntimestep % check_every_ != 0) return;
   checking_this_step_ = true;

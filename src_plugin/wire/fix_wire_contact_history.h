@@ -1,10 +1,12 @@
 /* fix wire/contact/history: the tangential springs of the soft contacts of wire beads,
    kept per contact and per bead so they migrate with the bead and go to restart files.
-   Created by pair wire/contact (id WIRE_CONTACT_HISTORY) and fix wire/wall; not meant to
-   be defined by hand.
+   Created by pair wire/contact (id WIRE_CONTACT_HISTORY), fix wire/wall (id
+   WIRE_WALL_HISTORY_<fix ID>) and fix wire/grain (id WIRE_GRAIN_HISTORY_<fix ID>); not
+   meant to be defined by hand (docs/commands/fix_wire_contact_history.md).
 
-   Each bead keeps up to kMaxPartners contacts: the partner key (an atom tag for a
-   segment pair, a negative number for a wall) and the spring ξ_t and sliding state.
+   Each bead keeps up to kMaxPartners contacts: the partner key (for a segment pair the
+   other segment's first bead's tag, for a grain the grain's tag, for a wall 0: each fix
+   wire/wall has its own history fix) and the spring ξ_t and sliding state.
    A force computation reads last step's list and writes this step's; contacts that
    were not written again (the pair separated) are gone. */
 

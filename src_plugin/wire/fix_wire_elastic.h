@@ -1,5 +1,6 @@
 /* fix wire/elastic: stretching and bending forces of wires made of linked beads
-   (atom_style wire), DESIGN.md section 4 and the paper's section 2.2.
+   (atom_style wire), docs/design.md, "The wire: bead chain with soft contacts", and the
+   paper's section 2.2.
 
    fix ID group wire/elastic [E 100] [m_elo 1] [m_rot 0.1]
 

@@ -1,5 +1,5 @@
-/* pair_style wire/contact: soft frictional contact between wire segments (DESIGN.md
-   section 4, the paper's section 2.2).
+/* pair_style wire/contact: soft frictional contact between wire segments (docs/design.md,
+   "The wire: bead chain with soft contacts"; the paper's section 2.2).
 
    pair_style wire/contact [E 100] [nu 0] [mu_s 0.5] [mu_d 0.5]
                            [restitution 0.5 | damping_ratio z] [limit_force no|yes] [cache yes|no]

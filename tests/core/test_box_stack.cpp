@@ -4,7 +4,8 @@
 // boxes above it, W_i = Σ_{j ≥ i} m_j g, within 1e-4 on every step (in fact to ~1e-13:
 // the closing stick solve makes it exact), without hitting the sweep cap. The weights are
 // statics, computed apart from the solver. With method gauss_seidel the 20-box stack is off
-// by 17 % and every step hits the cap (bench/nscd_stack, README).
+// by 17 % and every step hits the cap (bench/nscd_stack; docs/benchmarks.md,
+// "Stacks at rest").
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -296,7 +296,8 @@ class Column(DeckTestCase):
         self.assertAlmostEqual(float(final.group(1)), 2.5 + 0.2, delta=1e-12)
         # (no grain presses on a side wall of this column and no bead touches one: the
         # thermo column walls_lo, what the rule adds to the kinetic energy, reads 0; on the
-        # Table 1 column at t = 250, walls 1.2 a_max out, it read 43–59: README)
+        # Table 1 column at t = 250, walls 1.2 a_max out, it read 43–59; 2026-11-26,
+        # commit 823fb35)
         loads = np.concatenate([walls_only.thermo(k)["walls_lo"] for k in (-2, -1)])  # the two chunks
         self.assertEqual(len(loads), 4)
         self.assertEqual(set(loads), {0.0})

@@ -204,11 +204,11 @@ run             20000
 
 
 def groove_bead_limit():
-    """The gear5 limit of one bead of GROOVE, by hand (README, fix nve/gear): the walls'
-    springs k_n = E l π/4, k_t = E r (E* = E for ν = 0) and dashpots γ = 2ζ√(k m) on the bead
-    mass m = ρ π r² l; the two normals (0, ±1, 1)/√2 give K = diag(2 k_t, k_n + k_t, k_n + k_t)
-    and Γ likewise; limit = min(0.313 (√(1+ζ²) − ζ)/ω, 0.075/(ζ ω)) with ω² = (k_n + k_t)/m,
-    ζ ω = (γ_n + γ_t)/(2 m)."""
+    """The gear5 limit of one bead of GROOVE, by hand (docs/commands/fix_nve_gear.md, "Each
+    bead's time step"): the walls' springs k_n = E l π/4, k_t = E r (E* = E for ν = 0) and
+    dashpots γ = 2ζ√(k m) on the bead mass m = ρ π r² l; the two normals (0, ±1, 1)/√2 give
+    K = diag(2 k_t, k_n + k_t, k_n + k_t) and Γ likewise; limit = min(0.313 (√(1+ζ²) − ζ)/ω,
+    0.075/(ζ ω)) with ω² = (k_n + k_t)/m, ζ ω = (γ_n + γ_t)/(2 m)."""
     E, r, l, rho, e = 100.0, 0.1, 0.2, 0.5, 0.1
     m = rho * math.pi * r * r * l
     k_n, k_t = E * l * math.pi / 4, E * r

@@ -179,7 +179,8 @@ class StiffnessUnderLoad(DeckTestCase):
     # The same stiffnesses the other way round: beads pushed by a known constant force
     # (fix addforce) settle, damped by the contact's own dashpot only, at the overlap
     # ξ = F/k_n; a tangential force F_t below μ_s F added on top moves them by F_t/k_t.
-    # The expected k_n, k_t are the README's formulas of the input parameters.
+    # The expected k_n, k_t are the formulas of docs/design.md, "The wire: bead chain with
+    # soft contacts", of the input parameters.
 
     def settled(self, t0, t1, ids):
         """Positions (N x 3) at the start of thermo table t0 and the end of t0 and t1, and

@@ -133,7 +133,8 @@ run             50000
         # a straight wire laid just above the top (z = 2.5) of a rounded box (n1 = n2 = 3,
         # turned about z) that nothing integrates (fixed), shorter than the top: it settles
         # on it; at rest the box carries the wire's whole weight and the wire stays at rest
-        # (blockier tops need a smaller time step for that: README, fix wire/grain)
+        # (blockier tops need a smaller time step for that: docs/commands/fix_wire_grain.md,
+        # Restrictions)
         made = superquadric_scene([(0.0, 0.0, 2.0, (0.6, 0.9, 0.5), (3.0, 3.0), 1.0, (0.96, 0.0, 0.0, 0.28))],
                                   ["line -0.4 0.1 2.56 0.4 0.1 2.56 segment 0.2 radius 0.05"])
         r = run(full_precision(deck(made, f"""

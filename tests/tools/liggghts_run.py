@@ -17,7 +17,7 @@ MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 SOURCE = os.environ.get("WIREGRAIN_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
 TIMEOUT = float(os.environ.get("WIREGRAIN_DECK_TIMEOUT", "600"))
 # The first line of a report of AddressSanitizer, LeakSanitizer or UndefinedBehaviorSanitizer
-# (a sanitized build, README: Tests, Sanitizers): a deck test fails on any of them, also
+# (a sanitized build, docs/install.md, "Sanitizers"): a deck test fails on any of them, also
 # where the deck is meant to stop with an ERROR.
 SANITIZER_REPORT = re.compile(r"^==\d+==ERROR: (Address|Leak)Sanitizer|^\S+:\d+:\d+: runtime error: "
                               r"|^SUMMARY: (Address|Leak|UndefinedBehavior)Sanitizer", re.M)

@@ -1,6 +1,6 @@
-// Observables of a wire-reinforced granular column (paper Sec. 2.5 and 3, DESIGN.md §7):
-// the column height, the fraction of grains retained inside the wire, computed from
-// plain positions so that the LIGGGHTS computes only gather them.
+// Observables of a wire-reinforced granular column (paper Sec. 2.5 and 3; docs/design.md,
+// "The column procedure"): the column height, the fraction of grains retained inside the
+// wire, computed from plain positions so that the LIGGGHTS computes only gather them.
 //
 //   height: the q-quantile of the grains' top heights (the highest point of each grain,
 //     core vertex + sweep radius), linear interpolation between order statistics

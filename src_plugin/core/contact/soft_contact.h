@@ -1,7 +1,7 @@
 // Soft (penalty) contact of the wire: linear spring–dashpot in the normal direction and a
 // tangential spring with static and dynamic Coulomb friction (Cundall & Strack 1979; the
-// paper's section 2.2; DESIGN.md section 4). Used for wire–wire, wire–wall and
-// wire–grain contacts; the stiffness formulas of each pairing are below.
+// paper's section 2.2; docs/design.md, "The wire: bead chain with soft contacts"). Used for
+// wire–wire, wire–wall and wire–grain contacts; each pairing's stiffness formulas are below.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,5 @@
-// Soft contact of a wire segment with a grain (paper Sec. 2.3, Fig. 4; DESIGN.md §5).
+// Soft contact of a wire segment with a grain (paper Sec. 2.3, Fig. 4; docs/design.md,
+// "Wire–grain contacts").
 //
 // The segment [x0, x1] is a spherocylinder of radius r_w, the grain a spheropolyhedron
 // (convex core + sweep radius r_p). Geometry from segment_contact (core/geometry/
@@ -114,7 +115,8 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 // load point the closest point, the force as against a polyhedron. (The rule that shares
 // the load of a segment lying on a polyhedron's face, load_point_parameter, in its smooth
 // form changes nothing measurable on blocky superquadrics: the residual motion of a wire
-// lying on their tops goes away with a smaller time step, README.)
+// lying on their tops goes away with a smaller time step: docs/commands/fix_wire_grain.md,
+// Restrictions.)
 // exact_gap_below ≥ 0: the geometry's gap is exact while below it; a pair farther apart
 // gets a lower bound of its gap (GJK's early exit, far cheaper than the closest points of
 // a smooth body). The force is the same whatever the value: it needs only gap ≤ 0.

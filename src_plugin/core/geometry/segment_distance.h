@@ -1,5 +1,6 @@
-// Closest points of two segments: the wire–wire contact geometry (DESIGN.md §4: each wire
-// segment is a spherocylinder of radius r_w; the overlap follows from this distance).
+// Closest points of two segments: the wire–wire contact geometry (docs/design.md, "The
+// wire: bead chain with soft contacts": each wire segment is a spherocylinder of radius
+// r_w; the overlap follows from this distance).
 //
 // Method: D. Sunday, "Distance between 3D lines and segments" (geomalgorithms.com,
 // dist3D_Segment_to_Segment), with the modification of the paper (Sec. 2.4, wire–wire

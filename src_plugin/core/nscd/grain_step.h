@@ -1,6 +1,6 @@
 // One Moreau–Jean step of rigid spheropolyhedral grains against each other and against
-// plane walls (the paper's Sec. 2.1; DESIGN.md §3): what fix nscd/polyhedra does each
-// step, without LIGGGHTS.
+// plane walls (the paper's Sec. 2.1; docs/design.md, "The NSCD step and its solver"): what
+// fix nscd/polyhedra does each step, without LIGGGHTS.
 //
 //  1. free velocities with implicit viscous damping at rate γ (not in the paper; for
 //     relaxing a deposit): m (v_{k+1} − v_k) = h F − h γ m v_{k+1} + Hᵀ r, i.e.
@@ -98,8 +98,9 @@ struct PlaneWall {
   double friction = 0.5;
 };
 
-// The defaults are fix nscd/polyhedra's (README): forward sweeps, Siconos' natural-map
-// residual, push-out speed 0.1; the tolerance and the cap are NscdOptions'.
+// The defaults are fix nscd/polyhedra's (docs/commands/fix_nscd_polyhedra.md): forward
+// sweeps, Siconos' natural-map residual, push-out speed 0.1; the tolerance and the cap are
+// NscdOptions'.
 NscdOptions grain_solver_defaults();
 
 // See the header comment; fix keyword `sleep v_sleep t_sleep`.

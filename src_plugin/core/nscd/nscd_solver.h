@@ -165,7 +165,7 @@ enum class SolverMethod { gauss_seidel, subspace };
 // with the forward order the increment sat near 4e-6 per sweep while the interface loads
 // were still 2e-4 off, so the tolerance is checked on the Siconos error before stopping.
 struct NscdOptions {
-  double tolerance = 1e-4;  // relative residual (DESIGN.md §3 default)
+  double tolerance = 1e-4;  // relative residual (the fix's default; docs/design.md, "Convergence")
   int max_iterations = 1000;
   SweepOrder order = SweepOrder::random;
   std::uint64_t seed = 1;  // random order
