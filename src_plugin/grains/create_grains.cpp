@@ -29,7 +29,9 @@
 #include "region.h"
 
 #include "core/geometry/broad_phase.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/core_distance.h"
+#include "core/geometry/posed_shape.h"
+#include "core/geometry/segment_contact.h"
 #include "core/geometry/convex_shape.h"
 #include "core/common/errors.h"
 #include "core/geometry/shape_library.h"

@@ -8,7 +8,8 @@
 #include <string>
 
 #include "core/common/errors.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/contact_manifold.h"
+#include "core/geometry/posed_shape.h"
 #include "core/geometry/convex_shape.h"
 #include "core/nscd/overlap_projection.h"
 

@@ -17,7 +17,7 @@
 
 #include <Eigen/Core>
 
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/posed_shape.h"
 
 namespace wiregrain {
 

@@ -31,7 +31,9 @@
 
 #include "core/contact/wire_grain_contact.h"
 #include "core/geometry/broad_phase.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/gjk.h"
+#include "core/geometry/posed_shape.h"
+#include "core/geometry/superquadric_contact.h"
 #include "core/geometry/shape_library.h"
 #include "core/geometry/superquadric.h"
 

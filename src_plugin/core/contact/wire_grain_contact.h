@@ -3,7 +3,7 @@
 //
 // The segment [x0, x1] is a spherocylinder of radius r_w, the grain a spheropolyhedron
 // (convex core + sweep radius r_p). Geometry from segment_contact (core/geometry/
-// contact_geometry.h): signed core–axis distance d (exact segment–polytope distance
+// segment_contact.h): signed core–axis distance d (exact segment–polytope distance
 // when disjoint, minus the penetration depth when the axis crosses the core, so a
 // crossing segment still has a defined normal and a finite overlap), unit normal n from
 // the grain to the wire and the closest-point parameter t ∈ [0, 1] on the segment.
@@ -39,7 +39,9 @@
 
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/posed_shape.h"
+#include "core/geometry/segment_contact.h"
+#include "core/geometry/superquadric_contact.h"
 #include "core/geometry/superquadric.h"
 
 namespace wiregrain {
@@ -111,7 +113,7 @@ WireGrainContact wire_sphere_contact(const SoftContactLaw& law, const Eigen::Vec
 
 // The same contact against a superquadric (a stock LIGGGHTS superquadric grain): the
 // geometry of segment_contact(PosedSuperquadric, ...) (GJK with the closed-form support
-// point; core/geometry/contact_geometry.h), overlap r_w − d (the body has no sweep), the
+// point; core/geometry/superquadric_contact.h), overlap r_w − d (the body has no sweep), the
 // load point the closest point, the force as against a polyhedron. (The rule that shares
 // the load of a segment lying on a polyhedron's face, load_point_parameter, in its smooth
 // form changes nothing measurable on blocky superquadrics: the residual motion of a wire

@@ -25,7 +25,7 @@
 // most that far towards each other), as its evaluation would find. Superquadric pairs are
 // always evaluated: their contact solve starts from the last evaluation's.
 // Each kept pair holds the GJK simplex of its last evaluation (GjkSimplex,
-// core/geometry/contact_geometry.h), handed to evaluate as its warm start and left there
+// core/geometry/gjk.h), handed to evaluate as its warm start and left there
 // with the next one (warm_geometry; null when off): the same contacts to GJK's tolerance,
 // not to the bit. An entry built anew starts its pairs cold.
 #pragma once
@@ -39,7 +39,7 @@
 
 #include "core/common/errors.h"
 #include "core/contact/held_grains.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/gjk.h"
 
 namespace wiregrain {
 

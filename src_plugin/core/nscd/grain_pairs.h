@@ -27,7 +27,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/gjk.h"
 #include "core/geometry/shape_library.h"
 
 namespace wiregrain {

@@ -12,7 +12,8 @@
 #include "core/common/errors.h"
 #include "core/common/stable_order.h"
 #include "core/geometry/broad_phase.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/contact_manifold.h"
+#include "core/geometry/posed_shape.h"
 #include "core/nscd/rigid_body.h"
 
 namespace wiregrain {

@@ -8,7 +8,7 @@
 //     and for the rotation, with I_w = R diag(I) Rᵀ the world inertia,
 //         ω_free = I_w⁻¹ (I_w ω_k + h T) / (1 + hγ)
 //     (so a grain at rest still presses with its full weight);
-//  2. contact points (core/geometry/contact_geometry.h) of every grain pair and every
+//  2. contact points (core/geometry/contact_manifold.h) of every grain pair and every
 //     grain–wall pair whose gap may close within the step: activation distance
 //         d_act = margin + 2h (2 max_i(|v_free,i| + |ω_free,i| R_i) + max wall speed),
 //     pairs from a broad-phase grid (core/geometry/broad_phase.h) of cell 2 R_max + d_act;
@@ -139,7 +139,7 @@ struct GrainStepOptions {
   // closest features only (`manifold closest`)
   bool near_vertices = true;
   // GJK of a pair kept by the pair cache starts from the simplex of the pair's last
-  // narrow phase (GjkSimplex, core/geometry/contact_geometry.h; fix keyword
+  // narrow phase (GjkSimplex, core/geometry/gjk.h; fix keyword
   // `warm_geometry`): the same contacts to GJK's tolerance, not to the bit. Without the
   // cache (skin 0) every GJK starts cold. Off by default: over 18 paired seeds of the
   // reduced column it moved H_n by +2.85 and φ_p by +2.40 standard errors (2026-11-28,

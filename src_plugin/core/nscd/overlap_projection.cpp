@@ -10,7 +10,9 @@
 
 #include "core/common/errors.h"
 #include "core/common/validation.h"
-#include "core/geometry/contact_geometry.h"
+#include "core/geometry/contact_manifold.h"
+#include "core/geometry/core_distance.h"
+#include "core/geometry/posed_shape.h"
 
 namespace wiregrain {
 
