@@ -43,37 +43,10 @@ class AtomVecPolyhedron : public PluginAtomVec {
   AtomVecPolyhedron(class LAMMPS *);
   ~AtomVecPolyhedron();
   void settings(int, char **);
-  void grow(int);
-  void grow_reset();
-  void copy(int, int, int);
-  int pack_comm(int, int *, double *, int, int *);
-  int pack_comm_vel(int, int *, double *, int, int *);
-  int pack_comm_hybrid(int, int *, double *);
-  void unpack_comm(int, int, double *);
-  void unpack_comm_vel(int, int, double *);
-  int unpack_comm_hybrid(int, int, double *);
-  int pack_reverse(int, int, double *);
-  int pack_reverse_hybrid(int, int, double *);
-  void unpack_reverse(int, int *, double *);
-  int unpack_reverse_hybrid(int, int *, double *);
-  int pack_border_hybrid(int, int *, double *);
-  int unpack_border_hybrid(int, int, double *);
   void write_restart_settings(FILE *);
   void read_restart_settings(FILE *);
-  void create_atom(int, double *);
-  void data_atom(double *, tagint, char **);
   int data_atom_hybrid(int, char **);
-  void data_vel(int, char **);
   int data_vel_hybrid(int, char **);
-  void pack_data(double **);
-  int pack_data_hybrid(int, double *);
-  void write_data(FILE *, int, double **);
-  int write_data_hybrid(FILE *, double *);
-  void pack_vel(double **);
-  int pack_vel_hybrid(int, double *);
-  void write_vel(FILE *, int, double **);
-  int write_vel_hybrid(FILE *, double *);
-  bigint memory_usage();
 
   // The shape library. add_shape must be called with the same shape on every rank.
   const wiregrain::ShapeLibrary &shapes() const { return *library_; }
@@ -93,23 +66,11 @@ class AtomVecPolyhedron : public PluginAtomVec {
 
  private:
   std::unique_ptr<wiregrain::ShapeLibrary> library_;
-  int *tag, *type, *mask;
-  tagint *image;
-  double **x, **v, **f;
   double *radius, *rmass, *density;
   double **omega, **angmom, **torque, **quat, **inertia;
   int *shape;
 
-  void image_shift(int pbc_flag, int *pbc, bool border, double shift[3]) const;
-  void image_velocity_shift(int pbc_flag, int *pbc, double dv[3]) const;
-  // the values a ghost needs besides its position
-  int pack_ghost(int j, double *buf) const;
-  int unpack_ghost(int i, const double *buf);
-  int pack_ghost_velocity(int j, double *buf, const double dv[3]) const;
-  int unpack_ghost_velocity(int i, const double *buf);
-  int pack_record(int i, double *buf) const;
-  int unpack_record(int i, const double *buf);
-  int record_size() const;
+  void create_atom_defaults(int i);
 };
 
 }  // namespace LAMMPS_NS

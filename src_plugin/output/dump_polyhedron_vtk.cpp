@@ -39,6 +39,73 @@ enum Column { TAG, TYPE, SHAPE, X, Y, Z, QW, QI, QJ, QK, VX, VY, VZ, WX, WY, WZ,
 const char *const kKind = "dump";
 const char *const kStyle = "polyhedron/vtk";
 
+#ifdef LAMMPS_VTK
+// The rows of the grains to write, in order, and the polygons of each shape they use.
+struct GrainPolygons {
+  std::vector<int> rows;
+  std::vector<std::vector<std::vector<Eigen::Vector3d>>> polygons;  // by shape
+  vtkIdType npoints = 0, ncells = 0;
+};
+
+// Each grain's polygons placed at x + R·v, a polygon cell with its own points. Point
+// data: velocity, angular_velocity; cell data: id, type, shape, center, top.
+vtkSmartPointer<vtkPolyData> grain_polydata(const wiregrain_lmp::GatheredRows &value,
+                                            const wiregrain::ShapeLibrary &library, const GrainPolygons &grains) {
+  const vtkIdType npoints = grains.npoints, ncells = grains.ncells;
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(npoints);
+  auto velocity = wiregrain_lmp::named_array<vtkDoubleArray>("velocity", npoints, 3);
+  auto angular_velocity = wiregrain_lmp::named_array<vtkDoubleArray>("angular_velocity", npoints, 3);
+  vtkSmartPointer<vtkIntArray> cell_values[3];
+  const char *cell_names[3] = {"id", "type", "shape"};
+  for (int k = 0; k < 3; k++) cell_values[k] = wiregrain_lmp::named_array<vtkIntArray>(cell_names[k], ncells);
+  // the grain's centre of mass and the height of its highest point (swept, as compute
+  // grain/shape's top), on each of its faces: postprocess/observables.py reads H and φ_p here
+  auto centers = wiregrain_lmp::named_array<vtkDoubleArray>("center", ncells, 3);
+  auto tops = wiregrain_lmp::named_array<vtkDoubleArray>("top", ncells);
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->AllocateExact(ncells, npoints);
+
+  vtkIdType p = 0, c = 0;
+  for (int r : grains.rows) {
+    const Eigen::Quaterniond orientation =
+        Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized();
+    const Eigen::Matrix3d rotation = orientation.toRotationMatrix();
+    const Eigen::Vector3d centre(value(r, X), value(r, Y), value(r, Z));
+    const double top =
+        wiregrain::grain_top(wiregrain::PosedShape(library[static_cast<int>(value(r, SHAPE))].shape, centre, orientation));
+    const int grain_values[3] = {static_cast<int>(value(r, TAG)), static_cast<int>(value(r, TYPE)),
+                                 static_cast<int>(value(r, SHAPE))};
+    for (const auto &polygon : grains.polygons[static_cast<int>(value(r, SHAPE))]) {
+      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()));
+      for (const Eigen::Vector3d &vertex : polygon) {
+        const Eigen::Vector3d q = centre + rotation * vertex;
+        points->SetPoint(p, q.x(), q.y(), q.z());
+        velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
+        angular_velocity->SetTuple3(p, value(r, WX), value(r, WY), value(r, WZ));
+        polys->InsertCellPoint(p);
+        p++;
+      }
+      for (int k = 0; k < 3; k++) cell_values[k]->SetValue(c, grain_values[k]);
+      centers->SetTuple3(c, centre.x(), centre.y(), centre.z());
+      tops->SetValue(c, top);
+      c++;
+    }
+  }
+
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  poly->GetPointData()->AddArray(velocity);
+  poly->GetPointData()->AddArray(angular_velocity);
+  for (int k = 0; k < 3; k++) poly->GetCellData()->AddArray(cell_values[k]);
+  poly->GetCellData()->AddArray(centers);
+  poly->GetCellData()->AddArray(tops);
+  return poly;
+}
+#endif
+
 }  // namespace
 
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
@@ -75,15 +142,10 @@ DumpPolyhedronVTK::~DumpPolyhedronVTK() {}
 void DumpPolyhedronVTK::init_style() {}
 
 void DumpPolyhedronVTK::pack(int *ids) {
-  const int nlocal = atom->nlocal;
-  const int *mask = atom->mask, *tag = atom->tag, *type = atom->type, *shape = atom->shapetype;
+  const int *tag = atom->tag, *type = atom->type, *shape = atom->shapetype;
   double **x = atom->x, **v = atom->v, **omega = atom->omega, **quat = atom->quaternion;
   const tagint *image = atom->image;
-
-  int m = 0, n = 0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double *row = buf + m;
+  pack_group(ids, [&](int i, double *row) {
     row[TAG] = tag[i];
     row[TYPE] = type[i];
     row[SHAPE] = shape[i];
@@ -95,28 +157,24 @@ void DumpPolyhedronVTK::pack(int *ids) {
       row[WX + d] = omega[i][d];
     }
     for (int d = 0; d < 4; d++) row[QW + d] = quat[i][d];
-    if (ids) ids[n] = tag[i];
-    m += size_one;
-    n++;
-  }
+  });
 }
 
 void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
 #ifdef LAMMPS_VTK
   const wiregrain::ShapeLibrary &library = grains_->shapes();
-  const int nrows = static_cast<int>(gathered_.size() / size_one);
-  const auto value = [&](int r, int column) { return gathered_[static_cast<size_t>(r) * size_one + column]; };
+  const wiregrain_lmp::GatheredRows value = gathered_rows();
+  const int nrows = value.size();
 
   // grains in id order (the same file whatever the decomposition); shapeless ones left out.
   // The polygons of each library shape in use, body frame, once per snapshot
   // (core/geometry/convex_shape.h surface_polygons: the faces, swept out with `sweep yes`;
   // a sphere as its tessellated ball).
-  std::vector<std::vector<std::vector<Eigen::Vector3d>>> polygons(library.size());
+  GrainPolygons grains;
+  grains.polygons.resize(library.size());
   std::vector<bool> have_polygons(library.size(), false);
-  std::vector<int> rows;
-  rows.reserve(nrows);
+  grains.rows.reserve(nrows);
   int shapeless = 0;
-  vtkIdType npoints = 0, ncells = 0;
   for (int r = 0; r < nrows; r++) {
     const int s = static_cast<int>(value(r, SHAPE));
     if (s < 0) {
@@ -127,91 +185,24 @@ void DumpPolyhedronVTK::write_snapshot(const std::string &path) {
       error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): grain " +
                          std::to_string(static_cast<long>(value(r, TAG))) + " has shape " + std::to_string(s) +
                          ", the library has " + std::to_string(library.size()) + " shapes").c_str());
-    rows.push_back(r);
+    grains.rows.push_back(r);
     if (!have_polygons[s]) {
-      polygons[s] = wiregrain::surface_polygons(library[s].shape, sweep_);
+      grains.polygons[s] = wiregrain::surface_polygons(library[s].shape, sweep_);
       have_polygons[s] = true;
     }
-    for (const auto &polygon : polygons[s]) {
-      npoints += static_cast<vtkIdType>(polygon.size());
-      ncells++;
+    for (const auto &polygon : grains.polygons[s]) {
+      grains.npoints += static_cast<vtkIdType>(polygon.size());
+      grains.ncells++;
     }
   }
-  std::stable_sort(rows.begin(), rows.end(), [&](int a, int b) { return value(a, TAG) < value(b, TAG); });
+  std::stable_sort(grains.rows.begin(), grains.rows.end(),
+                   [&](int a, int b) { return value(a, TAG) < value(b, TAG); });
   if (shapeless > 0 && !warned_shapeless_) {
     warned_shapeless_ = true;
     error->warning(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): " + std::to_string(shapeless) +
                            " grains without a shape (shape -1) are not written").c_str());
   }
-
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(npoints);
-  auto velocity = vtkSmartPointer<vtkDoubleArray>::New();
-  velocity->SetName("velocity");
-  velocity->SetNumberOfComponents(3);
-  velocity->SetNumberOfTuples(npoints);
-  auto angular_velocity = vtkSmartPointer<vtkDoubleArray>::New();
-  angular_velocity->SetName("angular_velocity");
-  angular_velocity->SetNumberOfComponents(3);
-  angular_velocity->SetNumberOfTuples(npoints);
-  vtkSmartPointer<vtkIntArray> cell_values[3];
-  const char *cell_names[3] = {"id", "type", "shape"};
-  for (int k = 0; k < 3; k++) {
-    cell_values[k] = vtkSmartPointer<vtkIntArray>::New();
-    cell_values[k]->SetName(cell_names[k]);
-    cell_values[k]->SetNumberOfTuples(ncells);
-  }
-  // the grain's centre of mass and the height of its highest point (swept, as compute
-  // grain/shape's top), on each of its faces: postprocess/observables.py reads H and φ_p here
-  auto centers = vtkSmartPointer<vtkDoubleArray>::New();
-  centers->SetName("center");
-  centers->SetNumberOfComponents(3);
-  centers->SetNumberOfTuples(ncells);
-  auto tops = vtkSmartPointer<vtkDoubleArray>::New();
-  tops->SetName("top");
-  tops->SetNumberOfTuples(ncells);
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  polys->AllocateExact(ncells, npoints);
-
-  vtkIdType p = 0, c = 0;
-  for (int r : rows) {
-    const Eigen::Quaterniond orientation =
-        Eigen::Quaterniond(value(r, QW), value(r, QI), value(r, QJ), value(r, QK)).normalized();
-    const Eigen::Matrix3d rotation = orientation.toRotationMatrix();
-    const Eigen::Vector3d centre(value(r, X), value(r, Y), value(r, Z));
-    const double top =
-        wiregrain::grain_top(wiregrain::PosedShape(library[static_cast<int>(value(r, SHAPE))].shape, centre, orientation));
-    const int grain_values[3] = {static_cast<int>(value(r, TAG)), static_cast<int>(value(r, TYPE)),
-                                 static_cast<int>(value(r, SHAPE))};
-    for (const auto &polygon : polygons[static_cast<int>(value(r, SHAPE))]) {
-      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()));
-      for (const Eigen::Vector3d &vertex : polygon) {
-        const Eigen::Vector3d q = centre + rotation * vertex;
-        points->SetPoint(p, q.x(), q.y(), q.z());
-        velocity->SetTuple3(p, value(r, VX), value(r, VY), value(r, VZ));
-        angular_velocity->SetTuple3(p, value(r, WX), value(r, WY), value(r, WZ));
-        polys->InsertCellPoint(p);
-        p++;
-      }
-      for (int k = 0; k < 3; k++) cell_values[k]->SetValue(c, grain_values[k]);
-      centers->SetTuple3(c, centre.x(), centre.y(), centre.z());
-      tops->SetValue(c, top);
-      c++;
-    }
-  }
-
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  poly->GetPointData()->AddArray(velocity);
-  poly->GetPointData()->AddArray(angular_velocity);
-  for (int k = 0; k < 3; k++) poly->GetCellData()->AddArray(cell_values[k]);
-  poly->GetCellData()->AddArray(centers);
-  poly->GetCellData()->AddArray(tops);
-
-  if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
-    error->one(FLERR, ("dump polyhedron/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
+  write_polydata(grain_polydata(value, library, grains), path);
 #else
   (void)path;
 #endif

@@ -1,5 +1,6 @@
 #include "dump_vtp.h"
 
+#include "atom.h"
 #include "error.h"
 #include "update.h"
 
@@ -44,6 +45,19 @@ void DumpVtp::write() {
   }
 }
 
+void DumpVtp::pack_group(int *ids, const std::function<void(int, double *)> &row) {
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask, *tag = atom->tag;
+  int m = 0, n = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    row(i, buf + m);
+    if (ids) ids[n] = tag[i];
+    m += size_one;
+    n++;
+  }
+}
+
 void DumpVtp::write_header(bigint ndump) {
   gathered_.clear();
   gathered_.reserve(static_cast<size_t>(ndump) * size_one);
@@ -51,4 +65,9 @@ void DumpVtp::write_header(bigint ndump) {
 
 void DumpVtp::write_data(int n, double *mybuf) {
   gathered_.insert(gathered_.end(), mybuf, mybuf + static_cast<size_t>(n) * size_one);
+}
+
+void DumpVtp::write_polydata(vtkPolyData *poly, const std::string &path) {
+  if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
+    error->one(FLERR, ("dump " + style_ + " (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
 }

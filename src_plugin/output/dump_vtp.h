@@ -5,6 +5,7 @@
 #ifndef WIREGRAIN_DUMP_VTP_H
 #define WIREGRAIN_DUMP_VTP_H
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,22 @@
 namespace wiregrain_lmp {
 class StyleArgs;
 }
+
+namespace wiregrain_lmp {
+
+// The rows every rank packed, gathered on rank 0: value(r, c) is column c of row r.
+class GatheredRows {
+ public:
+  GatheredRows(const std::vector<double> &values, int columns) : values_(values), columns_(columns) {}
+  int size() const { return static_cast<int>(values_.size() / columns_); }
+  double operator()(int row, int column) const { return values_[static_cast<size_t>(row) * columns_ + column]; }
+
+ private:
+  const std::vector<double> &values_;
+  int columns_;
+};
+
+}  // namespace wiregrain_lmp
 
 namespace LAMMPS_NS {
 
@@ -32,6 +49,13 @@ class DumpVtp : public Dump {
   // the value of keyword 'format'
   void take_format(wiregrain_lmp::StyleArgs &args);
   virtual void write_snapshot(const std::string &path) = 0;
+  // Dump::pack over the local atoms of the group: row(i, values) writes the size_one
+  // values of atom i; ids, when given, receive the tags
+  void pack_group(int *ids, const std::function<void(int, double *)> &row);
+  // gathered_ by rows of size_one values
+  wiregrain_lmp::GatheredRows gathered_rows() const { return wiregrain_lmp::GatheredRows(gathered_, size_one); }
+  // writes `poly` to `path` (ascii_), an error if it cannot
+  void write_polydata(vtkPolyData *poly, const std::string &path);
 
   std::string style_;                  // "wire/vtk", ...
   std::string pattern_;                // the file name as given, with its '*'

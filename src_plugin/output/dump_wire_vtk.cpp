@@ -49,6 +49,58 @@ struct Chain {
   bool closed = false;
 };
 
+// The wires in the gathered rows: a chain follows the links r -> s only when they are
+// mutual (s's prev is r), so a chain is cut where a link leaves the group or the two
+// links disagree. Open chains start at their first bead, rings at their lowest id; chains
+// in the order of their first bead's id (the same file whatever the decomposition).
+std::vector<Chain> assemble_chains(const wiregrain_lmp::GatheredRows &value) {
+  const int nrows = value.size();
+  const auto tag_of = [&](int r) { return static_cast<long>(value(r, TAG)); };
+
+  std::unordered_map<long, int> row_of;
+  row_of.reserve(nrows);
+  for (int r = 0; r < nrows; r++) row_of[tag_of(r)] = r;
+  const auto linked_row = [&](int r, int column) {  // row of the prev/next bead, -1 if none
+    const long t = static_cast<long>(value(r, column));
+    if (t == 0) return -1;
+    const auto it = row_of.find(t);
+    return it == row_of.end() ? -1 : it->second;
+  };
+  const auto next_row = [&](int r) {
+    const int s = linked_row(r, NEXT);
+    return s >= 0 && static_cast<long>(value(s, PREV)) == tag_of(r) ? s : -1;
+  };
+  const auto prev_row = [&](int r) {
+    const int p = linked_row(r, PREV);
+    return p >= 0 && static_cast<long>(value(p, NEXT)) == tag_of(r) ? p : -1;
+  };
+
+  std::vector<int> by_tag(nrows);
+  for (int r = 0; r < nrows; r++) by_tag[r] = r;
+  std::sort(by_tag.begin(), by_tag.end(), [&](int a, int b) { return tag_of(a) < tag_of(b); });
+
+  std::vector<char> visited(nrows, 0);
+  std::vector<Chain> chains;
+  const auto follow = [&](int start) {
+    Chain c;
+    int r = start;
+    while (r >= 0 && !visited[r]) {
+      visited[r] = 1;
+      c.rows.push_back(r);
+      r = next_row(r);
+    }
+    c.closed = r == start && c.rows.size() > 2;
+    chains.push_back(c);
+  };
+  for (int r : by_tag)  // open chains from their first bead
+    if (prev_row(r) < 0) follow(r);
+  for (int r : by_tag)  // what is left are rings: start at their lowest id
+    if (!visited[r]) follow(r);
+  std::sort(chains.begin(), chains.end(),
+            [&](const Chain &a, const Chain &b) { return tag_of(a.rows[0]) < tag_of(b.rows[0]); });
+  return chains;
+}
+
 }  // namespace
 
 DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
@@ -91,12 +143,18 @@ DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
 
 DumpWireVTK::~DumpWireVTK() {}
 
-int DumpWireVTK::find_energy_fix(bool at_init) {
-  const int ifix = modify->find_fix(energy_fix_id_.c_str());
+// The index of fix `fix_id` named by keyword `keyword`; an error if there is none.
+int DumpWireVTK::find_fix(const std::string &fix_id, const char *keyword, bool at_init) {
+  const int ifix = modify->find_fix(fix_id.c_str());
   if (ifix < 0)
     wiregrain_lmp::style_error(error, kKind, kStyle, id,
-                               "energy fix '" + energy_fix_id_ + "' does not exist" +
+                               std::string(keyword) + " fix '" + fix_id + "' does not exist" +
                                    (at_init ? " (was it unfixed?)" : " (define it before the dump)"));
+  return ifix;
+}
+
+int DumpWireVTK::find_energy_fix(bool at_init) {
+  const int ifix = find_fix(energy_fix_id_, "energy", at_init);
   if (!dynamic_cast<wiregrain_lmp::WireEnergySource *>(modify->fix[ifix]))
     wiregrain_lmp::style_error(error, kKind, kStyle, id,
                                "energy fix '" + energy_fix_id_ + "' is a fix " +
@@ -107,11 +165,7 @@ int DumpWireVTK::find_energy_fix(bool at_init) {
 // The fix wire/grain whose per-atom array gives each bead's force from the grains
 // (columns 1-3) and the number of grains touching its segment (column 4).
 int DumpWireVTK::find_grain_fix(bool at_init) {
-  const int ifix = modify->find_fix(grain_fix_id_.c_str());
-  if (ifix < 0)
-    wiregrain_lmp::style_error(error, kKind, kStyle, id,
-                               "grains fix '" + grain_fix_id_ + "' does not exist" +
-                                   (at_init ? " (was it unfixed?)" : " (define it before the dump)"));
+  const int ifix = find_fix(grain_fix_id_, "grains", at_init);
   if (std::string(modify->fix[ifix]->style) != "wire/grain")
     wiregrain_lmp::style_error(error, kKind, kStyle, id,
                                "grains fix '" + grain_fix_id_ + "' is a fix " + modify->fix[ifix]->style +
@@ -125,18 +179,13 @@ void DumpWireVTK::init_style() {
 }
 
 void DumpWireVTK::pack(int *ids) {
-  const int nlocal = atom->nlocal;
-  const int *mask = atom->mask, *tag = atom->tag, *type = atom->type;
+  const int *tag = atom->tag, *type = atom->type;
   double **x = atom->x, **v = atom->v;
   const tagint *image = atom->image;
   const wiregrain_lmp::WireEnergySource *energy =
       energy_fix_ >= 0 ? dynamic_cast<const wiregrain_lmp::WireEnergySource *>(modify->fix[energy_fix_]) : NULL;
   double **from_grains = grain_fix_ >= 0 ? modify->fix[grain_fix_]->array_atom : NULL;
-
-  int m = 0, n = 0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double *row = buf + m;
+  pack_group(ids, [&](int i, double *row) {
     row[TAG] = tag[i];
     row[TYPE] = type[i];
     row[PREV] = wire_->wire_prev[i];
@@ -156,94 +205,31 @@ void DumpWireVTK::pack(int *ids) {
     }
     if (from_grains)
       for (int k = 0; k < kGrainColumns; k++) row[grain_column_ + k] = from_grains[i][k];
-    if (ids) ids[n] = tag[i];
-    m += size_one;
-    n++;
-  }
+  });
 }
 
 void DumpWireVTK::write_snapshot(const std::string &path) {
 #ifdef LAMMPS_VTK
-  const int nrows = static_cast<int>(gathered_.size() / size_one);
-  const auto value = [&](int r, int column) { return gathered_[static_cast<size_t>(r) * size_one + column]; };
-  const auto tag_of = [&](int r) { return static_cast<long>(value(r, TAG)); };
-
-  std::unordered_map<long, int> row_of;
-  row_of.reserve(nrows);
-  for (int r = 0; r < nrows; r++) row_of[tag_of(r)] = r;
-  const auto linked_row = [&](int r, int column) {  // row of the prev/next bead, -1 if none
-    const long t = static_cast<long>(value(r, column));
-    if (t == 0) return -1;
-    const auto it = row_of.find(t);
-    return it == row_of.end() ? -1 : it->second;
-  };
-  // r -> s is followed only when the link is mutual (s's prev is r), so a chain is cut
-  // where a link leaves the group or the two links disagree.
-  const auto next_row = [&](int r) {
-    const int s = linked_row(r, NEXT);
-    return s >= 0 && static_cast<long>(value(s, PREV)) == tag_of(r) ? s : -1;
-  };
-  const auto prev_row = [&](int r) {
-    const int p = linked_row(r, PREV);
-    return p >= 0 && static_cast<long>(value(p, NEXT)) == tag_of(r) ? p : -1;
-  };
-
-  std::vector<int> by_tag(nrows);
-  for (int r = 0; r < nrows; r++) by_tag[r] = r;
-  std::sort(by_tag.begin(), by_tag.end(), [&](int a, int b) { return tag_of(a) < tag_of(b); });
-
-  std::vector<char> visited(nrows, 0);
-  std::vector<Chain> chains;
-  const auto follow = [&](int start) {
-    Chain c;
-    int r = start;
-    while (r >= 0 && !visited[r]) {
-      visited[r] = 1;
-      c.rows.push_back(r);
-      r = next_row(r);
-    }
-    c.closed = r == start && c.rows.size() > 2;
-    chains.push_back(c);
-  };
-  for (int r : by_tag)  // open chains from their first bead
-    if (prev_row(r) < 0) follow(r);
-  for (int r : by_tag)  // what is left are rings: start at their lowest id
-    if (!visited[r]) follow(r);
-  std::sort(chains.begin(), chains.end(),
-            [&](const Chain &a, const Chain &b) { return tag_of(a.rows[0]) < tag_of(b.rows[0]); });
+  const wiregrain_lmp::GatheredRows value = gathered_rows();
+  const int nrows = value.size();
+  const std::vector<Chain> chains = assemble_chains(value);
 
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(nrows);
-  auto ids = vtkSmartPointer<vtkIntArray>::New();
-  ids->SetName("id");
-  ids->SetNumberOfTuples(nrows);
-  auto types = vtkSmartPointer<vtkIntArray>::New();
-  types->SetName("type");
-  types->SetNumberOfTuples(nrows);
-  auto velocity = vtkSmartPointer<vtkDoubleArray>::New();
-  velocity->SetName("velocity");
-  velocity->SetNumberOfComponents(3);
-  velocity->SetNumberOfTuples(nrows);
+  auto ids = wiregrain_lmp::named_array<vtkIntArray>("id", nrows);
+  auto types = wiregrain_lmp::named_array<vtkIntArray>("type", nrows);
+  auto velocity = wiregrain_lmp::named_array<vtkDoubleArray>("velocity", nrows, 3);
   const bool with_energy = energy_column_ >= 0, with_grains = grain_column_ >= 0;
   vtkSmartPointer<vtkDoubleArray> grain_force, grain_contacts;
   if (with_grains) {
-    grain_force = vtkSmartPointer<vtkDoubleArray>::New();
-    grain_force->SetName("grain_force");
-    grain_force->SetNumberOfComponents(3);
-    grain_force->SetNumberOfTuples(nrows);
-    grain_contacts = vtkSmartPointer<vtkDoubleArray>::New();
-    grain_contacts->SetName("grain_contacts");
-    grain_contacts->SetNumberOfTuples(nrows);
+    grain_force = wiregrain_lmp::named_array<vtkDoubleArray>("grain_force", nrows, 3);
+    grain_contacts = wiregrain_lmp::named_array<vtkDoubleArray>("grain_contacts", nrows);
   }
   vtkSmartPointer<vtkDoubleArray> energies[3];
   const char *energy_names[3] = {"stretching_energy", "bending_energy", "elastic_energy"};
   if (with_energy)
-    for (int k = 0; k < 3; k++) {
-      energies[k] = vtkSmartPointer<vtkDoubleArray>::New();
-      energies[k]->SetName(energy_names[k]);
-      energies[k]->SetNumberOfTuples(nrows);
-    }
+    for (int k = 0; k < 3; k++) energies[k] = wiregrain_lmp::named_array<vtkDoubleArray>(energy_names[k], nrows);
 
   // points in chain order; single beads become vertices, longer chains polylines
   auto verts = vtkSmartPointer<vtkCellArray>::New();
@@ -282,8 +268,7 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
     }
   }
   // cell data follow vtkPolyData's cell order: vertices, then lines
-  auto wire_index = vtkSmartPointer<vtkIntArray>::New();
-  wire_index->SetName("wire");
+  auto wire_index = wiregrain_lmp::named_array<vtkIntArray>("wire", 0);
   for (int w : vert_wire) wire_index->InsertNextValue(w);
   for (int w : line_wire) wire_index->InsertNextValue(w);
 
@@ -301,11 +286,8 @@ void DumpWireVTK::write_snapshot(const std::string &path) {
     poly->GetPointData()->AddArray(grain_contacts);
   }
   poly->GetCellData()->AddArray(wire_index);
-
-  if (!wiregrain_lmp::write_vtp(poly, path, ascii_))
-    error->one(FLERR, ("dump wire/vtk (id " + std::string(id) + "): cannot write file '" + path + "'").c_str());
+  write_polydata(poly, path);
 #else
   (void)path;
 #endif
 }
-

@@ -49,7 +49,7 @@ class DumpWireVTK : public DumpVtp {
   int energy_column_, grain_column_;  // first buffer column of each, -1 if absent
   class AtomVecWire *wire_;
 
-
+  int find_fix(const std::string &fix_id, const char *keyword, bool at_init);
   int find_energy_fix(bool at_init);
   int find_grain_fix(bool at_init);
   void write_snapshot(const std::string &path);

@@ -10,6 +10,11 @@
 #include <utility>
 #include <vector>
 
+#ifdef LAMMPS_VTK
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+#endif
+
 class vtkPolyData;
 
 namespace wiregrain_lmp {
@@ -48,6 +53,19 @@ class VtpSeries {
   bool loaded_ = false;
   void load(double now);
 };
+
+#ifdef LAMMPS_VTK
+// A VTK data array (vtkDoubleArray, vtkIntArray) named `name` of `tuples` tuples of
+// `components` values, to fill with SetValue/SetTuple and add to point or cell data.
+template <class Array>
+vtkSmartPointer<Array> named_array(const char* name, vtkIdType tuples, int components = 1) {
+  auto array = vtkSmartPointer<Array>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+#endif
 
 // Writes `poly` to `path` with vtkXMLPolyDataWriter: ascii (readable text, full double
 // precision) or raw appended binary. Returns false on failure. Without VTK (no

@@ -32,26 +32,7 @@ class AtomVecWire : public PluginAtomVec {
   ~AtomVecWire();
   void settings(int, char **);
   void init();
-  void grow(int);
-  void grow_reset();
-  void copy(int, int, int);
-  int pack_comm(int, int *, double *, int, int *);
-  int pack_comm_vel(int, int *, double *, int, int *);
-  void unpack_comm(int, int, double *);
-  void unpack_comm_vel(int, int, double *);
-  int pack_reverse(int, int, double *);
-  void unpack_reverse(int, int *, double *);
-  int pack_border_hybrid(int, int *, double *);
-  int unpack_border_hybrid(int, int, double *);
-  void create_atom(int, double *);
-  void data_atom(double *, tagint, char **);
   int data_atom_hybrid(int, char **);
-  void data_vel(int, char **);
-  void pack_data(double **);
-  int pack_data_hybrid(int, double *);
-  void write_data(FILE *, int, double **);
-  int write_data_hybrid(FILE *, double *);
-  bigint memory_usage();
 
   // chain links, indexed like atom->x (owned and ghost beads)
   int *wire_prev;       // tag of the previous bead, 0 at a free end
@@ -76,19 +57,11 @@ class AtomVecWire : public PluginAtomVec {
   int linked_bead(int link_tag) const;
 
  private:
-  int *tag, *type, *mask;
-  tagint *image;
-  double **x, **v, **f;
   double *radius, *rmass;
 
-  // the bead values sent to ghosts besides position: tag type mask radius mass links
-  int pack_ghost(int j, double *buf) const;
-  int unpack_ghost(int i, const double *buf);
-  int pack_ghost_velocity(int j, double *buf, const double dv[3]) const;
-  int unpack_ghost_velocity(int i, const double *buf);
-  int pack_record(int i, double *buf) const;
-  int unpack_record(int i, const double *buf);
-  int record_size() const;
+  void create_atom_defaults(int i);
+  int data_link(const char *word, const char *name) const;
+  double data_value(const char *word, const char *name, bool positive) const;
 };
 
 }  // namespace LAMMPS_NS
