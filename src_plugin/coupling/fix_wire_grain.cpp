@@ -32,6 +32,7 @@
 #include "core/contact/held_grains.h"
 #include "core/contact/wire_grain_pairs.h"
 #include "bead_contact_load.h"
+#include "companion_fix.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
@@ -155,16 +156,12 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
 
 // after Modify::add_fix has finished with this fix, which a nested add_fix would upset
 void FixWireGrain::post_create() {
-  if (modify->find_fix(history_id_.c_str()) < 0) {
-    std::string all = "all", style = "wire/contact/history";
-    char *history_args[3] = {&history_id_[0], &all[0], &style[0]};
-    modify->add_fix(3, history_args);
-  }
+  wiregrain_lmp::ensure_companion_fix(lmp, history_id_, "wire/contact/history");
 }
 
 FixWireGrain::~FixWireGrain() {
   atom->delete_callback(id, 0);
-  if (modify->find_fix(history_id_.c_str()) >= 0) modify->delete_fix(history_id_.c_str());
+  wiregrain_lmp::delete_companion_fix(lmp, history_id_);
   memory->destroy(bead_force_);
   memory->destroy(output_);
 }
@@ -272,7 +269,7 @@ void FixWireGrain::init() {
       modulus_[w * (ntypes + 1) + g] = wiregrain::wire_grain_modulus(
           wire, wiregrain_lmp::grain_material_of_type(lmp, g, grain_given_, "fix", "wire/grain", id));
   }
-  history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
+  history_ = dynamic_cast<FixWireContactHistory *>(wiregrain_lmp::find_companion_fix(lmp, history_id_));
   comm->ghost_velocity = 1;  // the damping needs the velocity of the segment's ghost bead
   // the next bead of an owned bead must be owned or a ghost
   wiregrain_lmp::ensure_ghost_reach(lmp, (1.0 + max_stretch_) * longest_segment + neighbor->skin);

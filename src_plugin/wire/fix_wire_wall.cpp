@@ -23,6 +23,7 @@
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
 #include "bead_contact_load.h"
+#include "companion_fix.h"
 #include "plugin_args.h"
 #include "plugin_material.h"
 
@@ -78,15 +79,11 @@ FixWireWall::FixWireWall(LAMMPS *lmp, int narg, char **arg)
 
 // after Modify::add_fix has finished with this fix, which a nested add_fix would upset
 void FixWireWall::post_create() {
-  if (modify->find_fix(history_id_.c_str()) < 0) {
-    std::string group = "all", style = "wire/contact/history";
-    char *history_args[3] = {&history_id_[0], &group[0], &style[0]};
-    modify->add_fix(3, history_args);
-  }
+  wiregrain_lmp::ensure_companion_fix(lmp, history_id_, "wire/contact/history");
 }
 
 FixWireWall::~FixWireWall() {
-  if (modify->find_fix(history_id_.c_str()) >= 0) modify->delete_fix(history_id_.c_str());
+  wiregrain_lmp::delete_companion_fix(lmp, history_id_);
   delete contacts_;
 }
 
@@ -97,7 +94,7 @@ int FixWireWall::setmask() { return POST_FORCE; }
 void FixWireWall::init() {
   // re-reference at every run start, so a `timestep` command between runs is honoured
   rereference();
-  history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(history_id_.c_str())]);
+  history_ = dynamic_cast<FixWireContactHistory *>(wiregrain_lmp::find_companion_fix(lmp, history_id_));
   // the rigid-wall modulus of each atom type's wire material (plugin_material.h)
   wall_modulus_of_type_.assign(atom->ntypes + 1, 0.0);
   for (int type = 1; type <= atom->ntypes; type++)

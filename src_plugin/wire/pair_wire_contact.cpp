@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "atom.h"
 #include "atom_vec_wire.h"
@@ -19,7 +18,6 @@
 #include "fix_wire_contact_history.h"
 #include "force.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -31,7 +29,9 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
+#include "core/contact/wire_wire_contact.h"
 #include "bead_contact_load.h"
+#include "companion_fix.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 #include "plugin_material.h"
@@ -45,11 +45,41 @@ const char kHistoryId[] = "WIRE_CONTACT_HISTORY";
 
 Eigen::Vector3d as_vector(const double *x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 
-void add_force(double *f, double weight, const Eigen::Vector3d &g) {
-  f[0] += weight * g.x();
-  f[1] += weight * g.y();
-  f[2] += weight * g.z();
+void add_force(double *f, const Eigen::Vector3d &g) {
+  f[0] += g.x();
+  f[1] += g.y();
+  f[2] += g.z();
 }
+
+// The published record of a touching pair (kind wire_wire, a and b the tags of the
+// segments' first beads).
+wiregrain::ContactRecord contact_record(int tag_a, int tag_b, const wiregrain::WireWireContact &c) {
+  wiregrain::ContactRecord record;
+  record.kind = wiregrain::ContactKind::wire_wire;
+  record.a = tag_a;
+  record.b = tag_b;
+  record.point = c.point;
+  record.normal = c.normal;
+  record.force = c.force;
+  record.overlap = c.overlap;
+  record.status = c.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
+  return record;
+}
+
+// The largest overlap ξ / r_w of a step (r_w the mean radius of the two segments) and its
+// pair, for the overlap warning.
+struct LargestOverlap {
+  double ratio = 0.0, overlap = 0.0, radius = 1.0;
+  int a = 0, b = 0;
+  void consider(double xi, double r_a, double r_b, int tag_a, int tag_b) {
+    if (!(xi > ratio * 0.5 * (r_a + r_b))) return;
+    ratio = xi / (0.5 * (r_a + r_b));
+    overlap = xi;
+    radius = 0.5 * (r_a + r_b);
+    a = tag_a;
+    b = tag_b;
+  }
+};
 }  // namespace
 
 PairWireContact::PairWireContact(LAMMPS *lmp)
@@ -76,7 +106,7 @@ PairWireContact::~PairWireContact() {
     memory->destroy(effective_modulus_);
     memory->destroy(friction_);
   }
-  if (history_ && modify->find_fix(kHistoryId) >= 0) modify->delete_fix(kHistoryId);
+  if (history_) wiregrain_lmp::delete_companion_fix(lmp, kHistoryId);
   memory->destroy(segment_next_);
   memory->destroy(segment_end_);
   delete contacts_;
@@ -172,15 +202,8 @@ void PairWireContact::init_style() {
   // the next bead of a ghost segment must be a ghost too
   wiregrain_lmp::ensure_ghost_reach(lmp, reach_ + kStretchAllowance * extent_.rest + neighbor->skin);
 
-  const int ifix = modify->find_fix(kHistoryId);
-  if (ifix < 0) {
-    char id[] = "WIRE_CONTACT_HISTORY", group[] = "all", style[] = "wire/contact/history";
-    char *args[3] = {id, group, style};
-    modify->add_fix(3, args);
-    history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[modify->find_fix(kHistoryId)]);
-  } else {
-    history_ = dynamic_cast<FixWireContactHistory *>(modify->fix[ifix]);
-  }
+  history_ = dynamic_cast<FixWireContactHistory *>(
+      wiregrain_lmp::ensure_companion_fix(lmp, kHistoryId, "wire/contact/history"));
   if (!history_) error->all(FLERR, "pair wire/contact (id -): fix WIRE_CONTACT_HISTORY has the wrong style");
 }
 
@@ -223,25 +246,12 @@ PairWireContact::WireExtent PairWireContact::gather_wire_extent() const {
   return extent;
 }
 
-// Each segment pair is computed once, by the rank that owns the first bead of the segment
-// with the smaller tag, which also keeps the pair's tangential spring. Forces go to all
-// four beads; those on ghosts are summed to their owners by reverse communication (by
-// LIGGGHTS when newton is on, here otherwise).
-void PairWireContact::compute(int eflag, int vflag) {
-  if (eflag || vflag) ev_setup(eflag, vflag);
-  else evflag = vflag_fdotr = 0;
-
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  const int *tag = atom->tag, *type = atom->type;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  const int *next = wire_->wire_next;
-  const double *rest = wire_->wire_rest;
+// Each bead's next bead and that bead's image nearest to it (segment_next_, segment_end_),
+// for owned beads and ghosts, once per step.
+void PairWireContact::find_segments() {
+  double **x = atom->x;
+  const int *tag = atom->tag, *next = wire_->wire_next;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  const bool own_reverse_comm = !force->newton_pair;
-  if (own_reverse_comm)
-    for (int i = nlocal; i < nall; i++) f[i][0] = f[i][1] = f[i][2] = 0.0;
-
-  // each bead's next bead and that bead's image nearest to it, once per step
   if (nall > segment_capacity_) {
     segment_capacity_ = nall;
     memory->destroy(segment_next_);
@@ -265,6 +275,101 @@ void PairWireContact::compute(int eflag, int vflag) {
     segment_next_[i] = j;
     for (int k = 0; k < 3; k++) segment_end_[i][k] = x[i][k] + d[k];
   }
+}
+
+// The segment pairs (a, b) of the neighbour list this rank computes (candidates_); with
+// the cache, only those that may touch before the list is built again
+// (segments_may_touch with the neighbour skin). Sorted by the segments' tags (then the
+// ghost's index: periodic images of one segment), not the list's bin order: the forces
+// are then summed in the same order whenever the list was built (a run split into chunks
+// rebuilds it at each start) and however fine the bins.
+void PairWireContact::select_candidates() {
+  double **x = atom->x;
+  const int *tag = atom->tag, *next = wire_->wire_next;
+  const double *radius = atom->radius;
+  const int nlocal = atom->nlocal;
+  candidates_.clear();
+  candidates_built_at_ = neighbor->ncalls;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    if (segment_next_[i] == -1) continue;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (segment_next_[j] == -1) continue;
+      const int a = tag[i] < tag[j] ? i : j;
+      const int b = a == i ? j : i;
+      if (a >= nlocal) continue;
+      if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
+      if (segment_next_[b] == -2)
+        error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
+                           " is missing (a segment stretched beyond 25 %?)").c_str());
+      if (cache_ && !wiregrain::segments_may_touch(as_vector(x[a]), as_vector(segment_end_[a]), as_vector(x[b]),
+                                                   as_vector(segment_end_[b]), radius[a], radius[b], neighbor->skin))
+        continue;
+      candidates_.emplace_back(a, b);
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end(), [tag](const std::pair<int, int> &p, const std::pair<int, int> &q) {
+    if (tag[p.first] != tag[q.first]) return tag[p.first] < tag[q.first];
+    if (tag[p.second] != tag[q.second]) return tag[p.second] < tag[q.second];
+    return p.second < q.second;
+  });
+}
+
+// Segment i (bead i to segment_next_[i]) as the neighbour list has it: ghosts are the
+// right periodic images, the end the next bead's image nearest to bead i. Velocities and
+// masses only when `motion` (a touching pair).
+wiregrain::WireSegmentState PairWireContact::segment_state(int i, bool motion) const {
+  wiregrain::WireSegmentState s;
+  s.x0 = as_vector(atom->x[i]);
+  s.x1 = as_vector(segment_end_[i]);
+  s.radius = atom->radius[i];
+  if (motion) {
+    const int i1 = segment_next_[i];
+    s.v0 = as_vector(atom->v[i]);
+    s.v1 = as_vector(atom->v[i1]);
+    s.m0 = atom->rmass[i];
+    s.m1 = atom->rmass[i1];
+  }
+  return s;
+}
+
+// The forces of contact c between segments a and b on their four beads, in the order b,
+// its next bead, a, its next bead; and the contact's springs on them for the beads'
+// time-step check (contact_time_step.h): four moving beads, weights summing to 2.
+void PairWireContact::scatter(int a, int b, const wiregrain::WireWireContact &c) {
+  double **f = atom->f;
+  const int a1 = segment_next_[a], b1 = segment_next_[b];
+  add_force(f[b], c.force_b0);
+  add_force(f[b1], c.force_b1);
+  add_force(f[a], c.force_a0);
+  add_force(f[a1], c.force_a1);
+  if (!wire_->contact_load_wanted) return;
+  const double s = c.closest.s, t = c.closest.t;
+  const wiregrain::ContactLoadEntries load = wiregrain::contact_load_entries(c.spring_dashpot, c.normal);
+  const std::pair<int, double> loaded[4] = {{a, 1.0 - s}, {a1, s}, {b, 1.0 - t}, {b1, t}};
+  for (const auto &[bead, weight] : loaded)
+    wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, load);
+}
+
+// Each segment pair is computed once, by the rank that owns the first bead of the segment
+// with the smaller tag, which also keeps the pair's tangential spring (core/contact/
+// wire_wire_contact.h). Forces go to all four beads; those on ghosts are summed to their
+// owners by reverse communication (by LIGGGHTS when newton is on, here otherwise).
+void PairWireContact::compute(int eflag, int vflag) {
+  if (eflag || vflag) ev_setup(eflag, vflag);
+  else evflag = vflag_fdotr = 0;
+
+  double **f = atom->f;
+  const int *tag = atom->tag, *type = atom->type;
+  const double *rest = wire_->wire_rest;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const bool own_reverse_comm = !force->newton_pair;
+  if (own_reverse_comm)
+    for (int i = nlocal; i < nall; i++) f[i][0] = f[i][1] = f[i][2] = 0.0;
+  find_segments();
 
   history_->begin_step();
   contacts_->clear();
@@ -272,129 +377,45 @@ void PairWireContact::compute(int eflag, int vflag) {
   const double dt = update->dt;
   const bool setup = update->setupflag != 0;
   if (setup) check_time_step();
-  // this rank's largest overlap / r_w of the step, and its pair
-  double largest_ratio = 0.0, largest_overlap = 0.0, largest_radius = 1.0;
-  int largest_a = 0, largest_b = 0;
+  LargestOverlap largest;  // this rank's largest overlap / r_w of the step, and its pair
 
-  // the segment pairs (a, b) of the neighbour list, in its order, this rank computes; with
-  // the cache, only those that may touch before the list is built again
-  // (segments_may_touch with the neighbour skin), chosen when the list is built. Always at
-  // a run's setup: LIGGGHTS' Verlet::setup sorts and exchanges the atoms, builds the list
-  // and then resets neighbor->ncalls to 0, so after a run without a rebuild the count is
-  // the same while the local and ghost indices are not (stale pairs would crash a
-  // 10 000-bead coil with the default atom sorting; bench/wire_scaling.py)
-  if (!cache_ || setup || neighbor->ncalls != candidates_built_at_) {
-    candidates_.clear();
-    candidates_built_at_ = neighbor->ncalls;
-    const int inum = list->inum;
-    for (int ii = 0; ii < inum; ii++) {
-      const int i = list->ilist[ii];
-      const int *jlist = list->firstneigh[i];
-      const int jnum = list->numneigh[i];
-      if (segment_next_[i] == -1) continue;
-      for (int jj = 0; jj < jnum; jj++) {
-        const int j = jlist[jj] & NEIGHMASK;
-        if (segment_next_[j] == -1) continue;
-        const int a = tag[i] < tag[j] ? i : j;
-        const int b = a == i ? j : i;
-        if (a >= nlocal) continue;
-        if (next[a] == tag[b] || next[b] == tag[a]) continue;  // segments sharing a bead
-        if (segment_next_[b] == -2)
-          error->one(FLERR, ("pair wire/contact (id -): the next bead of ghost bead " + std::to_string(tag[b]) +
-                             " is missing (a segment stretched beyond 25 %?)").c_str());
-        if (cache_ && !wiregrain::segments_may_touch(as_vector(x[a]), as_vector(segment_end_[a]), as_vector(x[b]),
-                                                     as_vector(segment_end_[b]), radius[a], radius[b], neighbor->skin))
-          continue;
-        candidates_.emplace_back(a, b);
-      }
-    }
-    // by the segments' tags (then the ghost's index: periodic images of one segment), not
-    // the list's bin order: the forces are then summed in the same order whenever the list
-    // was built (a run split into chunks rebuilds it at each start) and however fine the bins
-    std::sort(candidates_.begin(), candidates_.end(), [tag](const std::pair<int, int> &p, const std::pair<int, int> &q) {
-      if (tag[p.first] != tag[q.first]) return tag[p.first] < tag[q.first];
-      if (tag[p.second] != tag[q.second]) return tag[p.second] < tag[q.second];
-      return p.second < q.second;
-    });
-  }
+  // The candidates are chosen again at a run's setup: LIGGGHTS' Verlet::setup sorts and
+  // exchanges the atoms, builds the list and then resets neighbor->ncalls to 0, so after a
+  // run without a rebuild the count is the same while the local and ghost indices are not
+  // (stale pairs would crash a 10 000-bead coil with the default atom sorting;
+  // bench/wire_scaling.py)
+  if (!cache_ || setup || neighbor->ncalls != candidates_built_at_) select_candidates();
   for (const auto &[a, b] : candidates_) {
-    // positions as the neighbour list has them (ghosts are the right periodic images)
-    const int a1 = segment_next_[a], b1 = segment_next_[b];
-    const Eigen::Vector3d xa0 = as_vector(x[a]), xa1 = as_vector(segment_end_[a]);
-    const Eigen::Vector3d xb0 = as_vector(x[b]), xb1 = as_vector(segment_end_[b]);
-    const double r_a = radius[a], r_b = radius[b];
+    wiregrain::WireSegmentState sa = segment_state(a, false), sb = segment_state(b, false);
     // bounding spheres of the two spherocylinders first (most pairs)
-    if (!wiregrain::segments_may_touch(xa0, xa1, xb0, xb1, r_a, r_b, 0.0)) continue;
+    if (!wiregrain::segments_may_touch(sa.x0, sa.x1, sb.x0, sb.x1, sa.radius, sb.radius, 0.0)) continue;
     evaluations++;
-    const wiregrain::SegmentClosestPoints cp = wiregrain::segment_closest_points(xa0, xa1, xb0, xb1);
-    const double overlap = r_a + r_b - cp.distance;
-    if (overlap <= 0.0) continue;
-    if (overlap > largest_ratio * 0.5 * (r_a + r_b)) {
-      largest_ratio = overlap / (0.5 * (r_a + r_b));
-      largest_overlap = overlap;
-      largest_radius = 0.5 * (r_a + r_b);
-      largest_a = tag[a];
-      largest_b = tag[b];
-    }
-
-    Eigen::Vector3d normal = cp.q - cp.p;
-    if (cp.distance > 0.0) normal /= cp.distance;
-    else {  // axes intersect: push apart perpendicular to both
-      normal = (xa1 - xa0).cross(xb1 - xb0);
-      if (normal.norm() == 0.0) normal = Eigen::Vector3d::UnitZ();
-      normal.normalize();
-    }
-    const Eigen::Vector3d va = (1.0 - cp.s) * as_vector(v[a]) + cp.s * as_vector(v[a1]);
-    const Eigen::Vector3d vb = (1.0 - cp.t) * as_vector(v[b]) + cp.t * as_vector(v[b1]);
-    const double m_a = rmass[a] + rmass[a1], m_b = rmass[b] + rmass[b1];
-
+    wiregrain::WireWireContact c = wiregrain::wire_wire_geometry(sa, sb);
+    if (!c.touching) continue;
+    largest.consider(c.overlap, sa.radius, sb.radius, tag[a], tag[b]);
+    sa = segment_state(a, true);
+    sb = segment_state(b, true);
     // l_w and r_w: the means of the two segments'
     const wiregrain::SoftContactLaw law =
         wiregrain::segment_contact_law(effective_modulus_[type[a]][type[b]], 0.5 * (rest[a] + rest[b]),
-                                       0.5 * (r_a + r_b), friction_[type[a]][type[b]]);
-
+                                       0.5 * (sa.radius + sb.radius), friction_[type[a]][type[b]]);
     wiregrain::TangentialHistory h;
     history_->lookup(a, tag[b], h);
     // the setup force call of a run must not advance the springs (a restart would
     // otherwise count the step twice): evaluate on a copy, keep the history
     wiregrain::TangentialHistory advanced = h;
-    const wiregrain::SoftContactForce fc = wiregrain::soft_contact_force(
-        law, overlap, normal, vb - va, setup ? 0.0 : dt, m_a * m_b / (m_a + m_b), advanced);
+    wiregrain::load_wire_wire_pair(law, sa, sb, setup ? 0.0 : dt, advanced, c);
     history_->store(a, tag[b], setup ? h : advanced);
-
-    add_force(f[b], 1.0 - cp.t, fc.force);
-    add_force(f[b1], cp.t, fc.force);
-    add_force(f[a], -(1.0 - cp.s), fc.force);
-    add_force(f[a1], -cp.s, fc.force);
-    // the beads' time-step check (contact_time_step.h): four moving beads, weights summing to 2
-    if (wire_->contact_load_wanted) {
-      const wiregrain::ContactLoadEntries load =
-          wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, m_a * m_b / (m_a + m_b)), normal);
-      const std::pair<int, double> loaded[4] = {{a, 1.0 - cp.s}, {a1, cp.s}, {b, 1.0 - cp.t}, {b1, cp.t}};
-      for (const auto &[bead, weight] : loaded)
-        wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, load);
-    }
-    if (eflag)
-      eng_vdwl += 0.5 * law.normal_stiffness * overlap * overlap +
-                  0.5 * law.tangential_stiffness * advanced.spring.squaredNorm();
-    wiregrain::ContactRecord record;
-    record.kind = wiregrain::ContactKind::wire_wire;
-    record.a = tag[a];
-    record.b = tag[b];
-    record.point = cp.p + (r_a - 0.5 * overlap) * normal;  // the middle of the overlap
-    record.normal = normal;
-    record.force = fc.force;
-    record.overlap = overlap;
-    record.status = advanced.sliding ? wiregrain::ContactStatus::slide : wiregrain::ContactStatus::stick;
-    contacts_->add(record);
+    scatter(a, b, c);
+    if (eflag) eng_vdwl += c.elastic_energy;
+    contacts_->add(contact_record(tag[a], tag[b], c));
   }
   history_->end_step();
   contacts_->count_evaluations(evaluations);
-  if (overlap_warnings_.due(largest_ratio))
-    overlap_warnings_.warn(lmp, "pair", "wire/contact", "-", largest_overlap, largest_radius,
-                            "the segments of beads " + std::to_string(largest_a) + " and " +
-                                std::to_string(largest_b),
-                            "a stiffer material (E)");
+  if (overlap_warnings_.due(largest.ratio))
+    overlap_warnings_.warn(lmp, "pair", "wire/contact", "-", largest.overlap, largest.radius,
+                           "the segments of beads " + std::to_string(largest.a) + " and " + std::to_string(largest.b),
+                           "a stiffer material (E)");
 
   if (own_reverse_comm) comm->reverse_comm_pair(this);
 }

@@ -7,8 +7,9 @@
 
    Each segment (bead i to its next bead) is a spherocylinder of the bead radius; the
    closest points of two segments (Sunday's algorithm) give the overlap ξ, the normal and
-   the weights that share the force among the four beads. Segments sharing a bead do not
-   interact. k_n = E_ww l_w π/4, k_t = E_ww r_w with E_ww = E/(2(1−ν²)) (the mixing rule
+   the weights that share the force among the four beads (the contact's kinematics and
+   force: core/contact/wire_wire_contact.h). Segments sharing a bead do not interact.
+   k_n = E_ww l_w π/4, k_t = E_ww r_w with E_ww = E/(2(1−ν²)) (the mixing rule
    1/E* = (1−ν_a²)/E_a + (1−ν_b²)/E_b for two atom types of different materials), l_w and
    r_w the means of the two segments (core/contact/contact_laws.h); E and ν: the keywords,
    else fix property/global youngsModulus / poissonsRatio per atom type, else Table 1
@@ -45,6 +46,11 @@ PairStyle(wire/contact,PairWireContact)
 #include "common/contact_publisher.h"
 #include "common/plugin_material.h"
 #include "core/contact/contact_materials.h"
+
+namespace wiregrain {
+struct WireSegmentState;
+struct WireWireContact;
+}  // namespace wiregrain
 
 namespace LAMMPS_NS {
 
@@ -111,6 +117,11 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
 
   void allocate();
   void check_time_step();
+  // the steps of compute()
+  void find_segments();
+  void select_candidates();
+  wiregrain::WireSegmentState segment_state(int i, bool motion) const;
+  void scatter(int a, int b, const wiregrain::WireWireContact &c);
   // reads the keywords from arg[first..narg) into c; `kind` names the command in errors
   void parse(int narg, char **arg, int first, Coefficients &c, const char *kind);
 };

@@ -30,7 +30,7 @@ TEST(ContactLaws, WireGrainTableOne) {
   const double e_wp = 1.0 / 0.01091;
   EXPECT_NEAR(e_wp, 91.65902841429882, 1e-12);
   EXPECT_NEAR(wire_grain_modulus(wire, grain), e_wp, 1e-12);
-  const SoftContactLaw law = wire_grain_contact_law(wire, grain, 0.2, 0.1, some_friction());
+  const SoftContactLaw law = segment_contact_law(wire_grain_modulus(wire, grain), 0.2, 0.1, some_friction());
   EXPECT_NEAR(law.normal_stiffness, e_wp * 0.2 * kPi / 4.0, 1e-12);  // 14.397767
   EXPECT_NEAR(law.normal_stiffness, 14.397767, 1e-6);
   EXPECT_NEAR(law.tangential_stiffness, e_wp * 0.1, 1e-12);  // 9.16590...
@@ -49,11 +49,11 @@ TEST(ContactLaws, WireWireOneMaterial) {
   const double e_ww = 100.0 / (2.0 * (1.0 - 0.3 * 0.3));
   EXPECT_EQ(wire_wire_modulus(w, w), e_ww);
   EXPECT_NEAR(e_ww, 54.94505494505494, 1e-12);
-  const SoftContactLaw law = wire_wire_contact_law(w, w, 0.2, 0.1, some_friction());
+  const SoftContactLaw law = segment_contact_law(wire_wire_modulus(w, w), 0.2, 0.1, some_friction());
   EXPECT_EQ(law.normal_stiffness, e_ww * 0.2 * kPi / 4.0);
   EXPECT_EQ(law.tangential_stiffness, e_ww * 0.1);
   // Table 1 (ν = 0): E_ww = 50, k_n = 50·0.2·π/4 = 2.5π, k_t = 5
-  const SoftContactLaw table = wire_wire_contact_law(ElasticMaterial(), ElasticMaterial(), 0.2, 0.1, {});
+  const SoftContactLaw table = segment_contact_law(wire_wire_modulus(ElasticMaterial(), ElasticMaterial()), 0.2, 0.1, {});
   EXPECT_NEAR(table.normal_stiffness, 2.5 * kPi, 1e-14);
   EXPECT_NEAR(table.tangential_stiffness, 5.0, 1e-14);
 }
@@ -77,7 +77,7 @@ TEST(ContactLaws, WireWall) {
   w.poisson_ratio = 0.3;
   const double e_star = 100.0 / 0.91;
   EXPECT_EQ(wire_wall_modulus(w), e_star);
-  const SoftContactLaw law = wire_wall_contact_law(w, 0.2, 0.1, some_friction());
+  const SoftContactLaw law = segment_contact_law(wire_wall_modulus(w), 0.2, 0.1, some_friction());
   EXPECT_EQ(law.normal_stiffness, e_star * 0.2 * kPi / 4.0);
   EXPECT_EQ(law.tangential_stiffness, e_star * 0.1);
   EXPECT_NEAR(law.normal_stiffness, 17.261498, 1e-6);

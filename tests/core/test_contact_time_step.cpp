@@ -100,7 +100,7 @@ TEST(ContactTimeStep, ContactLawTakesTheStifferSpring) {
   ContactFriction damped;
   damped.damping_ratio = damping_ratio_from_restitution(0.5);
   // Table 1 wall: E* = 100, l = 0.2, r = 0.1: k_n = 5π > k_t = 10
-  const SoftContactLaw wall = wire_wall_contact_law(ElasticMaterial(), 0.2, 0.1, damped);
+  const SoftContactLaw wall = segment_contact_law(wire_wall_modulus(ElasticMaterial()), 0.2, 0.1, damped);
   const double bead = 0.5 * kPi * 0.01 * 0.2;
   const ContactTimeStep t = contact_time_step(wall, bead);
   const ContactTimeStep normal = spring_dashpot_time_step(wall.normal_stiffness, bead, damped.damping_ratio);
@@ -109,7 +109,7 @@ TEST(ContactTimeStep, ContactLawTakesTheStifferSpring) {
   // ζ = 0.2154 (e = 0.5): √(1 + ζ²) − ζ = 0.8075
   EXPECT_NEAR(t.gear5 / spring_dashpot_time_step(wall.normal_stiffness, bead, 0.0).gear5, 0.80749, 1e-5);
   // a short segment (l = 0.05 < 4r/π): k_t = 10 > k_n = 1.25π
-  const SoftContactLaw short_segment = wire_wall_contact_law(ElasticMaterial(), 0.05, 0.1, {});
+  const SoftContactLaw short_segment = segment_contact_law(wire_wall_modulus(ElasticMaterial()), 0.05, 0.1, {});
   EXPECT_EQ(contact_time_step(short_segment, bead).critical, 2.0 / std::sqrt(10.0 / bead));
   // four times the mass: twice the step
   EXPECT_NEAR(contact_time_step(wall, 4.0 * bead).critical, 2.0 * t.critical, 1e-15);
@@ -183,7 +183,7 @@ TEST(ContactTimeStep, SpringDashpotOfALawIsItsForce) {
   ContactFriction damped;
   damped.damping_ratio = damping_ratio_from_restitution(0.5);
   damped.static_friction = damped.dynamic_friction = 10.0;  // the tangential test sticks
-  const SoftContactLaw wall = wire_wall_contact_law(ElasticMaterial(), 0.2, 0.1, damped);
+  const SoftContactLaw wall = segment_contact_law(wire_wall_modulus(ElasticMaterial()), 0.2, 0.1, damped);
   const double m = 0.5 * kPi * 0.01 * 0.2;
   const SpringDashpot sd = contact_spring_dashpot(wall, m);
   EXPECT_EQ(sd.normal_stiffness, wall.normal_stiffness);

@@ -16,6 +16,10 @@ void ElasticMaterial::validate() const {
     throw InvalidArgument("nu", "nu must be in [0, 0.5), got " + format_number(poisson_ratio));
 }
 
+double effective_modulus(double e_a, double nu_a, double e_b, double nu_b) {
+  return 1.0 / ((1.0 - nu_a * nu_a) / e_a + (1.0 - nu_b * nu_b) / e_b);
+}
+
 double wire_wire_modulus(const ElasticMaterial& a, const ElasticMaterial& b) {
   // one material on both sides: E_ww = E_w / (2(1−ν_w²)), the mixing rule with E_b = E_a
   // written without its two divisions
@@ -29,7 +33,7 @@ double wire_grain_modulus(const ElasticMaterial& wire, const ElasticMaterial& gr
 }
 
 double wire_wall_modulus(const ElasticMaterial& wire) {
-  return rigid_wall_modulus(wire.youngs_modulus, wire.poisson_ratio);
+  return wire.youngs_modulus / (1.0 - wire.poisson_ratio * wire.poisson_ratio);
 }
 
 SoftContactLaw segment_contact_law(double e_star, double segment_length, double wire_radius,
@@ -42,21 +46,6 @@ SoftContactLaw segment_contact_law(double e_star, double segment_length, double 
   law.dynamic_friction = friction.dynamic_friction;
   law.limit_force = friction.limit_force;
   return law;
-}
-
-SoftContactLaw wire_wire_contact_law(const ElasticMaterial& a, const ElasticMaterial& b, double segment_length,
-                                     double wire_radius, const ContactFriction& friction) {
-  return segment_contact_law(wire_wire_modulus(a, b), segment_length, wire_radius, friction);
-}
-
-SoftContactLaw wire_grain_contact_law(const ElasticMaterial& wire, const ElasticMaterial& grain,
-                                      double segment_length, double wire_radius, const ContactFriction& friction) {
-  return segment_contact_law(wire_grain_modulus(wire, grain), segment_length, wire_radius, friction);
-}
-
-SoftContactLaw wire_wall_contact_law(const ElasticMaterial& wire, double segment_length, double wire_radius,
-                                     const ContactFriction& friction) {
-  return segment_contact_law(wire_wall_modulus(wire), segment_length, wire_radius, friction);
 }
 
 double bead_segment_length(double own_rest_length, double previous_rest_length, double radius) {

@@ -19,12 +19,6 @@ void SoftContactLaw::validate() const {
                                       ") must not exceed mu_s (" + format_number(static_friction) + ")");
 }
 
-double effective_modulus(double e_wire, double nu_wire, double e_body, double nu_body) {
-  return 1.0 / ((1.0 - nu_wire * nu_wire) / e_wire + (1.0 - nu_body * nu_body) / e_body);
-}
-
-double rigid_wall_modulus(double e_wire, double nu_wire) { return e_wire / (1.0 - nu_wire * nu_wire); }
-
 double damping_ratio_from_restitution(double e) {
   if (!(e >= 0.0 && e <= 1.0)) throw InvalidArgument("restitution", "restitution must be in [0, 1], got " + format_number(e));
   if (e == 0.0) return 1.0;

@@ -1,7 +1,8 @@
 // Soft (penalty) contact of the wire: linear spring–dashpot in the normal direction and a
 // tangential spring with static and dynamic Coulomb friction (Cundall & Strack 1979; the
 // paper's section 2.2; docs/design.md, "The wire: bead chain with soft contacts"). Used for
-// wire–wire, wire–wall and wire–grain contacts; each pairing's stiffness formulas are below.
+// wire–wire, wire–wall and wire–grain contacts; each pairing's stiffnesses are built from
+// the materials in contact_laws.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,15 +21,6 @@ struct SoftContactLaw {
   // damping_ratio, mu_s, mu_d).
   void validate() const;
 };
-
-// The paper's stiffnesses for a wire of radius r_w and segment length l_w against a body of
-// modulus E_b, Poisson ratio ν_b (1/E* = (1−ν_w²)/E_w + (1−ν_b²)/E_b):
-//   wire–wire:   E_ww = E_w / (2(1−ν_w²))  (E_b = E_w, ν_b = ν_w),
-//   wire–grain:  E_wp from the mixing rule,
-//   wire–wall:   a rigid wall, E_b → ∞, E* = E_w/(1−ν_w²);
-// then k_n = E* l_w π/4, k_t = E* r_w.
-double effective_modulus(double e_wire, double nu_wire, double e_body, double nu_body);
-double rigid_wall_modulus(double e_wire, double nu_wire);
 
 // ζ of a linear spring–dashpot whose coefficient of restitution is e, from
 // e = exp(−πζ/√(1−ζ²)): ζ = −ln e / √(π² + ln² e). e = 0 gives ζ = 1 (critical), e = 1 gives 0.

@@ -39,19 +39,13 @@
 
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
+#include "core/contact/wire_segment_state.h"
 #include "core/geometry/posed_shape.h"
 #include "core/geometry/segment_contact.h"
 #include "core/geometry/superquadric_contact.h"
 #include "core/geometry/superquadric.h"
 
 namespace wiregrain {
-
-struct WireSegmentState {
-  Eigen::Vector3d x0 = Eigen::Vector3d::Zero(), x1 = Eigen::Vector3d::Zero();
-  Eigen::Vector3d v0 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();
-  double m0 = 0.0, m1 = 0.0;  // bead masses
-  double radius = 0.0;        // r_w
-};
 
 struct GrainMotion {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // v_g (of the centre of mass)
