@@ -17,9 +17,13 @@
 
 namespace contact_reference {
 
+// the names every contact-geometry test uses: a test file's `using namespace
+// contact_reference;` brings these along
 using namespace wiregrain;
+using Eigen::AngleAxisd;
 using Eigen::Matrix3d;
 using Eigen::Quaterniond;
+using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 constexpr double kPi = 3.14159265358979323846;

@@ -16,13 +16,7 @@
 #include "core/geometry/convex_shape.h"
 #include "contact_reference.h"
 
-using namespace wiregrain;
-using namespace contact_reference;
-using Eigen::AngleAxisd;
-using Eigen::Matrix3d;
-using Eigen::Quaterniond;
-using Eigen::Vector2d;
-using Eigen::Vector3d;
+using namespace contact_reference;  // wiregrain and the Eigen types as well
 
 namespace {
 

@@ -12,7 +12,8 @@ import re
 import subprocess
 import sys
 
-# In text: "session", "sessions"; "issue 14", "issues 9-15", "issue #14"; "PR 3"
+# In text: the word for a development round (singular or plural), and an issue or pull-request
+# number written after its word, with or without "#", alone or as a range.
 TEXT = re.compile(r"\bsessions?\b|\bissues?\s*#?\d+|\bPR\s*#?\d+", re.IGNORECASE)
 # In a path component: a round number after an underscore or a dash, e.g. table1_s21, run-s3
 PATH = re.compile(r"(^|[_\-])s\d{1,3}($|[_\-.])")
