@@ -17,11 +17,16 @@
 
 namespace wiregrain {
 
-NscdOptions grain_solver_defaults() {
-  NscdOptions options;
-  options.order = SweepOrder::forward;
-  options.measure = ConvergenceMeasure::natural_map;
-  options.method = SolverMethod::subspace;
+SolverSettings grain_solver_defaults() {
+  SolverSettings settings;
+  settings.order = SweepOrder::forward;
+  settings.measure = ConvergenceMeasure::natural_map;
+  settings.method = SolverMethod::subspace;
+  return settings;
+}
+
+MoreauJeanLaw grain_law_defaults() {
+  MoreauJeanLaw law;
   // Overlaps are kept from growing, not pushed out by a velocity: a push-out speed is
   // real kinetic energy, and at rest it keeps a pile creeping. Each step leaves
   // overlaps of 1e-7–1e-6 a_max (the gap is linearised at the step start); pushed out at
@@ -30,19 +35,20 @@ NscdOptions grain_solver_defaults() {
   // unit (4.8 times that at h = 5e-4) for as long as it ran; with β = 0 the same pile
   // came to rest within 2 time units (kinetic energy 3e-37; 2026-11-26, commit 4a7021c;
   // docs/design.md, "Position update and overlap projection"). Deeper overlaps are removed by the fix's position projection (`project`).
-  options.overlap_recovery = 0.0;
-  options.overlap_speed = 0.1;
-  return options;
+  law.overlap_recovery = 0.0;
+  law.overlap_speed = 0.1;
+  return law;
 }
 
-NscdOptions GrainStepOptions::solver_for_step(std::uint64_t step_number) const {
-  NscdOptions step_options = solver;
-  step_options.seed = solver.seed + step_number;
-  return step_options;
+SolverSettings GrainStepOptions::solver_for_step(std::uint64_t step_number) const {
+  SolverSettings step_settings = solver;
+  step_settings.seed = solver.seed + step_number;
+  return step_settings;
 }
 
 void GrainStepOptions::validate() const {
   solver.validate();
+  law.validate();
   if (!(friction >= 0.0)) throw InvalidArgument("friction", "grain step: friction must be >= 0, got " + std::to_string(friction));
   if (!(damping >= 0.0)) throw InvalidArgument("damping", "grain step: damping must be >= 0, got " + std::to_string(damping));
   if (!(margin >= 0.0)) throw InvalidArgument("margin", "grain step: margin must be >= 0, got " + std::to_string(margin));
@@ -334,7 +340,7 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
     if (problem.asleep[k]) order.push_back(k);
   std::stable_sort(order.begin(), order.end(), [&](int j, int k) { return above(j, k); });
 
-  NscdOptions local_options = options.solver;
+  SolverSettings local_options = options.solver;
   local_options.method = SolverMethod::gauss_seidel;
   local_options.order = SweepOrder::forward;
   std::vector<int> woken;
@@ -377,6 +383,7 @@ std::vector<int> check_sleepers(GrainStepProblem& problem, const std::vector<Gra
     alone.torque = moment / h;
     NscdStep local;
     local.time_step = h;
+    local.law = options.law;
     local.bodies.push_back(free_body(alone, h, options.damping));
     std::vector<Eigen::Vector3d> warm;
     std::vector<Eigen::Vector2d> warm_couples;
@@ -656,6 +663,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   GrainStepProblem problem;
   problem.wall_count = static_cast<int>(walls.size());
   problem.step.time_step = h;
+  problem.step.law = options.law;
   if (options.rolling_friction > 0.0) {
     problem.rolling_friction = options.rolling_friction;
     problem.sweep_radius.resize(n);
@@ -853,7 +861,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
 GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                  const GrainStepOptions& options, std::uint64_t step_number,
                                  GrainImpulseMemory& memory) {
-  const NscdOptions solver = options.solver_for_step(step_number);
+  const SolverSettings solver = options.solver_for_step(step_number);
   NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff, problem.couple_warm_start);
   // sleeping grains that cannot stay at rest wake within the step, and the step is
   // solved again with them, until every grain still asleep can (the header)

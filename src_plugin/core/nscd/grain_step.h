@@ -98,10 +98,13 @@ struct PlaneWall {
   double friction = 0.5;
 };
 
-// The defaults are fix nscd/polyhedra's (docs/commands/fix_nscd_polyhedra.md): forward
-// sweeps, Siconos' natural-map residual, push-out speed 0.1; the tolerance and the cap are
-// NscdOptions'.
-NscdOptions grain_solver_defaults();
+// fix nscd/polyhedra's defaults (docs/commands/fix_nscd_polyhedra.md), which differ from
+// the core's (SolverSettings(), MoreauJeanLaw()): the solver sweeps in the forward order
+// with Siconos' natural-map residual and method subspace (the tolerance and the cap are
+// SolverSettings'); the law keeps overlaps from growing (β = 0) and pushes them out at
+// most at 0.1 (the rest of it, θ = 1 and e = 0, as the core's).
+SolverSettings grain_solver_defaults();
+MoreauJeanLaw grain_law_defaults();
 
 // See the header comment; fix keyword `sleep v_sleep t_sleep`.
 struct SleepOptions {
@@ -128,8 +131,12 @@ struct RollingAxes {
 };
 RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Eigen::Vector3d& normal, double arm);
 
+// What a grain step solves and how: the solver's settings, the time-stepping law, the
+// grains' coefficients and the contact detection's options. The defaults are fix
+// nscd/polyhedra's.
 struct GrainStepOptions {
-  NscdOptions solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
+  SolverSettings solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
+  MoreauJeanLaw law = grain_law_defaults();         // θ (also the pose update's), e, β, v_o
   double friction = 0.5;   // μ between grains
   double damping = 0.0;    // γ ≥ 0
   double margin = 0.0;     // extra activation distance ≥ 0
@@ -153,10 +160,11 @@ struct GrainStepOptions {
   // warm-started as the impulses are.
   double rolling_friction = 0.0;
   SleepOptions sleep;
-  // solver options of a step: seed = solver.seed + step_number (a new random order per step)
-  NscdOptions solver_for_step(std::uint64_t step_number) const;
-  // InvalidArgument("friction" | "damping" | "margin" | "rolling_friction" | "sleep" |
-  // solver keywords, ...)
+  // the solver's settings of a step: seed = solver.seed + step_number (a new random order
+  // per step)
+  SolverSettings solver_for_step(std::uint64_t step_number) const;
+  // InvalidArgument(solver keywords | law keywords | "friction" | "damping" | "margin" |
+  // "rolling_friction" | "sleep", ...)
   void validate() const;
 };
 
@@ -214,7 +222,7 @@ struct GrainContactPoint {
 
 // Steps 1–4: the problem to solve.
 struct GrainStepProblem {
-  NscdStep step;                              // bodies = grains (same order), contacts top-down
+  NscdStep step;  // h, the law of the options, bodies = grains (same order), contacts top-down
   std::vector<GrainContactPoint> points;      // parallel to step.contacts
   std::vector<Eigen::Vector3d> warm_start;    // local frames; empty without warm start
   // rolling couples (t1, t2), parallel to warm_start; empty without rolling resistance
