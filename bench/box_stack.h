@@ -84,7 +84,7 @@ inline BoxStackRun run_box_stack(int n, bool alternate, int steps, const wiregra
       const Eigen::Matrix3d inertia_world = rot * s.inertia.asDiagonal() * rot.transpose();
       const GrainPose pose = advance_grain_pose({s.position, s.orientation}, s.inertia, s.velocity, r.velocities[i],
                                                 inertia_world * s.angular_velocity,
-                                                inertia_world * r.angular_velocities[i], h, options.solver.theta);
+                                                inertia_world * r.angular_velocities[i], h, options.law.theta);
       s.position = pose.position;
       s.orientation = pose.orientation;
       s.velocity = r.velocities[i];

@@ -121,24 +121,23 @@ ReducedProblem generate(int argc, char** argv, int& next, const Options& options
     if (value < 1) throw std::runtime_error(std::string(what) + " must be >= 1");
     return value;
   };
-  NscdOptions law;  // θ = 1, e = 0
   if (kind == "pile") {
     const int nx = integer("NX"), ny = integer("NY"), nz = integer("NZ");
     label = "pile " + std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
     step = wiregrain_bench::cube_lattice(nx, ny, nz, options.seed, options.mu, true);
-    return assemble_reduced(step, law);
+    return assemble_reduced(step);
   }
   if (kind == "column") {
     const int n = integer("N");
     label = "column of " + std::to_string(n) + " cubes";
     step = wiregrain_bench::cube_lattice(1, 1, n, options.seed, options.mu, false);
-    return assemble_reduced(step, law);
+    return assemble_reduced(step);
   }
   if (kind == "random") {
     const int nb = integer("NB"), nc = integer("NC");
     label = "random " + std::to_string(nb) + " bodies";
     step = random_bodies(nb, nc, options);
-    return assemble_reduced(step, law);
+    return assemble_reduced(step);
   }
   throw std::runtime_error("unknown problem kind '" + kind + "' (pile, column, random)");
 }
@@ -248,7 +247,7 @@ Run run_ours(const ReducedProblem& reduced, SiconosProblem& siconos, const Optio
   Run run;
   run.name = name;
   run.seconds = 1e300;
-  NscdOptions nscd;
+  SolverSettings nscd;
   nscd.tolerance = tolerance;
   nscd.max_iterations = options.max_iterations;
   nscd.order = order;
@@ -276,7 +275,7 @@ Run run_bodies(const NscdStep& step, SiconosProblem& siconos, const Options& opt
   Run run;
   run.name = name;
   run.seconds = 1e300;
-  NscdOptions nscd;
+  SolverSettings nscd;
   nscd.tolerance = tolerance;
   nscd.max_iterations = options.max_iterations;
   nscd.seed = options.seed;

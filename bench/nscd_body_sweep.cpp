@@ -1,5 +1,5 @@
 // nscd_body_sweep: the cost of one contact update of the Gauss–Seidel sweep on bodies
-// (solve_nscd_step, BodyContactOperator in core/nscd/nscd_solver.cpp) on the generated pile
+// (solve_nscd_step, BodyContactOperator in core/nscd/body_operator.h) on the generated pile
 // of bench/fclib_nscd (cube_lattice.h), without Siconos.
 //
 //   nscd_body_sweep NX NY NZ [--sweeps S (200)] [--repeat R (5: best wall time of R)]
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
       {"random, increment then natural map", SweepOrder::random,
        ConvergenceMeasure::increment_then_natural_map}};
   for (const Row& row : rows) {
-    NscdOptions options;
+    SolverSettings options;
     options.tolerance = 0.0;
     options.max_iterations = sweeps;
     options.order = row.order;

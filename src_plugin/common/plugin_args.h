@@ -4,6 +4,7 @@
 #ifndef WIREGRAIN_PLUGIN_ARGS_H
 #define WIREGRAIN_PLUGIN_ARGS_H
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,59 @@ class StyleArgs {
   char** arg_;
   int pos_;
   KeywordList keywords_;
+};
+
+// A style's optional keywords with their handlers, one entry per keyword in the order of the
+// keyword table of its page in docs/commands/: the KeywordList StyleArgs accepts and the
+// dispatch come from the same entries, so they cannot drift apart. Target: what the handlers
+// set (the style itself, or a struct of its settings). A handler reads the keyword's values
+// from the StyleArgs; it is given the keyword (for its messages, and for a handler shared by
+// several keywords). A captureless lambda converts to a Handler:
+//     static const KeywordTable<FixFoo> keywords = {
+//         {"damping", [](StyleArgs &args, FixFoo &fix, const std::string &key) {
+//            fix.damping = args.value_nonnegative(key); }},
+//         ...};
+//     StyleArgs args(error, "fix", "foo", id, narg, arg, 3, keywords.keywords());
+//     keywords.parse(args, *this);
+template <class Target>
+class KeywordTable {
+ public:
+  using Handler = void (*)(StyleArgs& args, Target& target, const std::string& keyword);
+  struct Entry {
+    const char* keyword;
+    Handler handle;
+  };
+
+  KeywordTable(std::initializer_list<Entry> entries) : entries_(entries) {}
+
+  // the keywords in the table's order, for StyleArgs
+  KeywordList keywords() const {
+    KeywordList list;
+    for (const Entry& e : entries_) list.emplace_back(e.keyword);
+    return list;
+  }
+  bool has(const std::string& keyword) const { return find(keyword) != nullptr; }
+  // the keyword's handler; StyleArgs::unknown_keyword for a word the table does not hold
+  void dispatch(StyleArgs& args, Target& target, const std::string& keyword) const {
+    const Entry* entry = find(keyword);
+    if (!entry) args.unknown_keyword(keyword);
+    entry->handle(args, target, keyword);
+  }
+  // every keyword to the end of the line (StyleArgs::next_keyword), each by its handler
+  void parse(StyleArgs& args, Target& target) const {
+    while (!args.done()) {
+      const std::string keyword = args.next_keyword();
+      dispatch(args, target, keyword);
+    }
+  }
+
+ private:
+  const Entry* find(const std::string& keyword) const {
+    for (const Entry& e : entries_)
+      if (keyword == e.keyword) return &e;
+    return nullptr;
+  }
+  std::vector<Entry> entries_;
 };
 
 // The whole word as a finite double (no trailing characters, no inf/nan, no overflow such as

@@ -81,11 +81,183 @@ struct FixNSCDPolyhedra::CoreState {
       if (!own_wall_friction[w]) walls[w].friction = options.friction;
   }
   wiregrain::GrainImpulseMemory impulses;
-  std::unique_ptr<wiregrain::GrainPairCache> pairs;  // keyword skin > 0
+  double pair_skin = kDefaultPairSkin;               // keyword skin
+  std::unique_ptr<wiregrain::GrainPairCache> pairs;  // skin > 0
   wiregrain::ContactList published;
 };
 
 const wiregrain::ContactList &FixNSCDPolyhedra::published_contacts() const { return core_->published; }
+
+namespace {
+
+using Args = wiregrain_lmp::StyleArgs;
+
+// The value of `keyword` as one of `choices` (word, value), else stops with e.g. "value of
+// 'order' must be forward, alternating or random, got 'x'".
+template <class T>
+T value_choice(Args &args, const std::string &keyword, std::initializer_list<std::pair<const char *, T>> choices) {
+  const std::string word = args.value_word(keyword);
+  std::string names;
+  size_t i = 0;
+  for (const auto &choice : choices) {
+    if (word == choice.first) return choice.second;
+    names += std::string(i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choice.first;
+    i++;
+  }
+  args.fail("value of '" + keyword + "' must be " + names + ", got '" + word + "'");
+}
+
+bool value_yes_no(Args &args, const std::string &keyword) {
+  return value_choice<bool>(args, keyword, {{"yes", true}, {"no", false}});
+}
+
+// 'wall_friction' and 'wall_velocity' apply to the last 'wall' or 'wall_fix' given
+void require_wall(const Args &args, const std::vector<wiregrain::PlaneWall> &walls,
+                  std::vector<std::string> &wall_fix_ids, const std::string &keyword) {
+  if (walls.empty()) args.fail("'" + keyword + "' must follow a 'wall' or 'wall_fix'");
+  wall_fix_ids.resize(walls.size());
+}
+
+}  // namespace
+
+// The keywords in the order of the keyword table of docs/commands/fix_nscd_polyhedra.md
+// (the unknown-keyword message lists them so). The solver's settings go to
+// options.solver, the time-stepping law's to options.law.
+const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> FixNSCDPolyhedra::keywords_ = {
+    {"friction", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.friction = args.value_nonnegative(key);
+     }},
+    {"rolling_friction", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.rolling_friction = args.value_nonnegative(key);
+     }},
+    {"damping", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.damping = args.value_nonnegative(key);
+     }},
+    {"restitution", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.law.restitution = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+     }},
+    {"theta", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.law.theta = args.value_in_range(key, 0.5, 1.0, "[0.5, 1]");
+     }},
+    {"every", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.every_ = (int)args.value_int_in_range(key, 1);
+       fix.every_given_ = true;
+     }},
+    {"timestep", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.nscd_timestep_ = args.value_positive(key);
+     }},
+    {"tolerance", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.solver.tolerance = args.value_positive(key);
+     }},
+    {"max_iterations", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.solver.max_iterations = (int)args.value_int_in_range(key, 1);
+     }},
+    {"convergence", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       using Measure = wiregrain::ConvergenceMeasure;
+       fix.core_->options.solver.measure = value_choice<Measure>(
+           args, key,
+           {{"natural_map", Measure::natural_map}, {"increment", Measure::increment},
+            {"both", Measure::increment_then_natural_map}});
+     }},
+    {"method", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       using Method = wiregrain::SolverMethod;
+       fix.core_->options.solver.method =
+           value_choice<Method>(args, key, {{"gauss_seidel", Method::gauss_seidel}, {"subspace", Method::subspace}});
+     }},
+    {"order", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       using Order = wiregrain::SweepOrder;
+       fix.core_->options.solver.order = value_choice<Order>(
+           args, key, {{"forward", Order::forward}, {"alternating", Order::alternating}, {"random", Order::random}});
+     }},
+    {"seed", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.solver.seed = (std::uint64_t)args.value_int_in_range(key, 1, LONG_MAX);
+     }},
+    {"freeze", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.solver.freeze = (int)args.value_int_in_range(key, 0, INT_MAX);
+     }},
+    {"subspace_regularization", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       const double v = args.value_positive(key);
+       if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + wiregrain::format_number(v));
+       fix.core_->options.solver.subspace_regularization = v;
+     }},
+    {"subspace_closing", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       const double v = args.value_nonnegative(key);
+       if (!(v <= 1.0)) args.fail("value of 'subspace_closing' must be in [0, 1], got " + wiregrain::format_number(v));
+       fix.core_->options.solver.subspace_closing = v;
+     }},
+    {"warm_start", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.warm_start = value_yes_no(args, key);
+     }},
+    {"warm_geometry", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.warm_geometry = value_yes_no(args, key);
+     }},
+    {"overlap_recovery", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.law.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+     }},
+    {"overlap_speed", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.law.overlap_speed = args.value_nonnegative(key);
+     }},
+    {"project", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.project_tolerance_ = args.value_nonnegative(key);
+     }},
+    {"project_passes", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.project_passes_ = (int)args.value_int_in_range(key, 1);
+     }},
+    {"margin", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.margin = args.value_nonnegative(key);
+     }},
+    {"skin", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->pair_skin = args.value_nonnegative(key);
+     }},
+    {"detection", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.share_detection_ = value_choice<bool>(args, key, {{"shared", true}, {"replicated", false}});
+     }},
+    {"manifold", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.near_vertices = value_choice<bool>(args, key, {{"near_vertices", true}, {"closest", false}});
+     }},
+    {"sleep", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->options.sleep.speed = args.value_nonnegative(key);
+       fix.core_->options.sleep.time = args.value_positive(key);
+     }},
+    {"wall", [](Args &args, FixNSCDPolyhedra &fix, const std::string &) {
+       wiregrain::PlaneWall w;
+       for (int d = 0; d < 3; d++) w.point[d] = args.value_double("wall");
+       for (int d = 0; d < 3; d++) w.normal[d] = args.value_double("wall");
+       const double n = std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
+       if (!(n > 0.0))
+         args.fail("wall " + std::to_string(fix.core_->walls.size() + 1) + ": the normal (nx ny nz) must not be zero");
+       for (int d = 0; d < 3; d++) w.normal[d] /= n;
+       w.velocity.setZero();
+       fix.core_->walls.push_back(w);
+       fix.core_->own_wall_friction.push_back(false);
+     }},
+    {"wall_fix", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.core_->walls.push_back(wiregrain::PlaneWall());
+       fix.core_->own_wall_friction.push_back(false);
+       fix.wall_fix_ids_.resize(fix.core_->walls.size());
+       fix.wall_fix_ids_.back() = args.value_word(key);
+     }},
+    {"wall_friction", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       require_wall(args, fix.core_->walls, fix.wall_fix_ids_, key);
+       fix.core_->walls.back().friction = args.value_nonnegative(key);
+       fix.core_->own_wall_friction.back() = true;
+     }},
+    {"wall_velocity", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       require_wall(args, fix.core_->walls, fix.wall_fix_ids_, key);
+       const std::string &wall_fix = fix.wall_fix_ids_.back();
+       if (!wall_fix.empty())
+         args.fail("'wall_velocity' does not apply to 'wall_fix " + wall_fix + "' (the fix moves the plane: fix_modify " +
+                   wall_fix + " velocity ...)");
+       for (int d = 0; d < 3; d++) fix.core_->walls.back().velocity[d] = args.value_double(key);
+     }},
+    {"write_problems", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.problem_every_ = (int)args.value_int_in_range(key, 1, INT_MAX, "'write_problems' (every N steps)");
+       fix.problem_file_ = args.value_word(key);
+       if (fix.problem_file_.find('*') == std::string::npos)
+         args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" +
+                   fix.problem_file_ + "'");
+     }},
+};
 
 FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg),
@@ -96,139 +268,19 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
       step_start_velocity_(NULL),
       force_sum_(NULL),
       sleep_state_(NULL) {
-  wiregrain_lmp::StyleArgs args(
-      error, "fix", "nscd/polyhedra", id, narg, arg, 3,
-      {"friction", "rolling_friction", "damping", "restitution", "theta", "every", "timestep", "tolerance",
-       "max_iterations", "convergence", "method", "order", "seed", "freeze", "subspace_regularization",
-       "subspace_closing", "warm_start", "warm_geometry", "overlap_recovery", "overlap_speed", "project",
-       "project_passes", "margin", "skin", "detection", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
-       "wall_velocity", "write_problems"});
+  Args args(error, "fix", "nscd/polyhedra", id, narg, arg, 3, keywords_.keywords());
   grains_ = AtomVecPolyhedron::of(atom);
   if (!grains_)
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
-  double skin = kDefaultPairSkin;
   project_tolerance_ = kDefaultProjectTolerance;
   project_passes_ = kDefaultProjectPasses;
-  while (!args.done()) {
-    const std::string key = args.next_keyword();
-    if (key == "friction") core_->options.friction = args.value_nonnegative(key);
-    else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
-    else if (key == "max_iterations") {
-      core_->options.solver.max_iterations = (int)args.value_int_in_range(key, 1);
-    } else if (key == "freeze") {
-      core_->options.solver.freeze = (int)args.value_int_in_range(key, 0, INT_MAX);
-    } else if (key == "order") {
-      const std::string v = args.value_word(key);
-      if (v == "forward") core_->options.solver.order = wiregrain::SweepOrder::forward;
-      else if (v == "alternating") core_->options.solver.order = wiregrain::SweepOrder::alternating;
-      else if (v == "random") core_->options.solver.order = wiregrain::SweepOrder::random;
-      else args.fail("value of 'order' must be forward, alternating or random, got '" + v + "'");
-    } else if (key == "method") {
-      const std::string v = args.value_word(key);
-      if (v == "gauss_seidel") core_->options.solver.method = wiregrain::SolverMethod::gauss_seidel;
-      else if (v == "subspace") core_->options.solver.method = wiregrain::SolverMethod::subspace;
-      else args.fail("value of 'method' must be gauss_seidel or subspace, got '" + v + "'");
-    } else if (key == "subspace_regularization") {
-      const double v = args.value_positive(key);
-      if (!(v < 1.0)) args.fail("value of 'subspace_regularization' must be in (0, 1), got " + wiregrain::format_number(v));
-      core_->options.solver.subspace_regularization = v;
-    } else if (key == "subspace_closing") {
-      const double v = args.value_nonnegative(key);
-      if (!(v <= 1.0)) args.fail("value of 'subspace_closing' must be in [0, 1], got " + wiregrain::format_number(v));
-      core_->options.solver.subspace_closing = v;
-    } else if (key == "seed") {
-      core_->options.solver.seed = (std::uint64_t)args.value_int_in_range(key, 1, LONG_MAX);
-    } else if (key == "warm_start") {
-      const std::string v = args.value_word(key);
-      if (v != "yes" && v != "no") args.fail("value of 'warm_start' must be yes or no, got '" + v + "'");
-      core_->options.warm_start = v == "yes";
-    } else if (key == "warm_geometry") {
-      const std::string v = args.value_word(key);
-      if (v != "yes" && v != "no") args.fail("value of 'warm_geometry' must be yes or no, got '" + v + "'");
-      core_->options.warm_geometry = v == "yes";
-    } else if (key == "restitution") {
-      core_->options.solver.restitution = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
-    } else if (key == "convergence") {
-      const std::string v = args.value_word(key);
-      if (v == "natural_map") core_->options.solver.measure = wiregrain::ConvergenceMeasure::natural_map;
-      else if (v == "increment") core_->options.solver.measure = wiregrain::ConvergenceMeasure::increment;
-      else if (v == "both") core_->options.solver.measure = wiregrain::ConvergenceMeasure::increment_then_natural_map;
-      else args.fail("value of 'convergence' must be natural_map, increment or both, got '" + v + "'");
-    } else if (key == "theta") {
-      core_->options.solver.theta = args.value_in_range(key, 0.5, 1.0, "[0.5, 1]");
-    } else if (key == "overlap_recovery") {
-      core_->options.solver.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
-    } else if (key == "overlap_speed") {
-      core_->options.solver.overlap_speed = args.value_nonnegative(key);
-    } else if (key == "damping") {
-      core_->options.damping = args.value_nonnegative(key);
-    } else if (key == "rolling_friction") {
-      core_->options.rolling_friction = args.value_nonnegative(key);
-    } else if (key == "write_problems") {
-      problem_every_ = (int)args.value_int_in_range(key, 1, INT_MAX, "'write_problems' (every N steps)");
-      problem_file_ = args.value_word(key);
-      if (problem_file_.find('*') == std::string::npos)
-        args.fail("the file name of 'write_problems' must contain a '*' (replaced by the step), got '" + problem_file_ + "'");
-    } else if (key == "margin") {
-      core_->options.margin = args.value_nonnegative(key);
-    } else if (key == "skin") {
-      skin = args.value_nonnegative(key);
-    } else if (key == "project") {
-      project_tolerance_ = args.value_nonnegative(key);
-    } else if (key == "project_passes") {
-      project_passes_ = (int)args.value_int_in_range(key, 1);
-    } else if (key == "sleep") {
-      core_->options.sleep.speed = args.value_nonnegative(key);
-      core_->options.sleep.time = args.value_positive(key);
-    } else if (key == "detection") {
-      const std::string v = args.value_word(key);
-      if (v != "shared" && v != "replicated") args.fail("value of 'detection' must be shared or replicated, got '" + v + "'");
-      share_detection_ = v == "shared";
-    } else if (key == "manifold") {
-      const std::string v = args.value_word(key);
-      if (v != "near_vertices" && v != "closest") args.fail("value of 'manifold' must be near_vertices or closest, got '" + v + "'");
-      core_->options.near_vertices = v == "near_vertices";
-    } else if (key == "every") {
-      every_ = (int)args.value_int_in_range(key, 1);
-      every_given_ = true;
-    } else if (key == "timestep") {
-      nscd_timestep_ = args.value_positive(key);
-    } else if (key == "wall") {
-      wiregrain::PlaneWall w;
-      for (int d = 0; d < 3; d++) w.point[d] = args.value_double("wall");
-      for (int d = 0; d < 3; d++) w.normal[d] = args.value_double("wall");
-      const double n = std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] + w.normal[2] * w.normal[2]);
-      if (!(n > 0.0)) args.fail("wall " + std::to_string(core_->walls.size() + 1) + ": the normal (nx ny nz) must not be zero");
-      for (int d = 0; d < 3; d++) w.normal[d] /= n;
-      w.velocity.setZero();
-      core_->walls.push_back(w);
-      core_->own_wall_friction.push_back(false);
-    } else if (key == "wall_fix") {
-      core_->walls.push_back(wiregrain::PlaneWall());
-      core_->own_wall_friction.push_back(false);
-      wall_fix_ids_.resize(core_->walls.size());
-      wall_fix_ids_.back() = args.value_word(key);
-    } else if (key == "wall_friction" || key == "wall_velocity") {
-      if (core_->walls.empty()) args.fail("'" + key + "' must follow a 'wall' or 'wall_fix'");
-      wall_fix_ids_.resize(core_->walls.size());
-      if (key == "wall_friction") {
-        core_->walls.back().friction = args.value_nonnegative(key);
-        core_->own_wall_friction.back() = true;
-      } else if (!wall_fix_ids_.back().empty())
-        args.fail("'wall_velocity' does not apply to 'wall_fix " + wall_fix_ids_.back() +
-                  "' (the fix moves the plane: fix_modify " + wall_fix_ids_.back() + " velocity ...)");
-      else
-        for (int d = 0; d < 3; d++) core_->walls.back().velocity[d] = args.value_double(key);
-    } else {
-      args.unknown_keyword(key);
-    }
-  }
+  keywords_.parse(args, *this);
   if (every_given_ && nscd_timestep_ > 0.0) args.fail("give 'every' or 'timestep', not both");
   if (problem_every_ > 0 && core_->options.rolling_friction > 0.0)
     args.fail("'write_problems' cannot carry 'rolling_friction' (a reduced FCLib problem has no rolling couples)");
   if (core_->options.solver.freeze > 0 && core_->options.solver.measure == wiregrain::ConvergenceMeasure::increment)
     args.fail("'freeze' needs 'convergence natural_map' or 'convergence both' (the increment does not see frozen contacts)");
-  if (skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(skin));
+  if (core_->pair_skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(core_->pair_skin));
   wall_fix_ids_.resize(core_->walls.size());
   core_->walls_take_grain_friction();
   time_integrate = 1;
@@ -444,7 +496,7 @@ void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
     const double *start = step_start_velocity_[i];
     const wiregrain::GrainPose pose = wiregrain::advance_grain_pose(
         {vec3(x[i]), Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3])}, vec3(atom->inertia[i]),
-        vec3(start), vec3(atom->v[i]), vec3(start + 3), vec3(atom->angmom[i]), h, core_->options.solver.theta);
+        vec3(start), vec3(atom->v[i]), vec3(start + 3), vec3(atom->angmom[i]), h, core_->options.law.theta);
     for (int d = 0; d < 3; d++) x[i][d] = pose.position[d];
     quat[i][0] = pose.orientation.w();
     quat[i][1] = pose.orientation.x();
@@ -703,7 +755,7 @@ void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState>
   std::vector<Eigen::Vector3d> corrections;
   try {
     corrections = wiregrain::project_overlaps(grains, grains_->shapes(), core_->walls, problem, result,
-                                              core_->options.solver.theta, project_tolerance_, project_passes_,
+                                              core_->options.law.theta, project_tolerance_, project_passes_,
                                               &stats);
   } catch (const std::exception &e) {
     solve_failed(e);
@@ -772,8 +824,7 @@ void FixNSCDPolyhedra::write_problem(const wiregrain::NscdStep &step) {
   char title[256];
   snprintf(title, sizeof(title), "fix nscd/polyhedra (id %s) step " BIGINT_FORMAT ": %d grains, %d contact points, h = %g",
            id, update->ntimestep, (int)step.bodies.size(), (int)step.contacts.size(), step.time_step);
-  const wiregrain::NscdOptions options = core_->options.solver_for_step((std::uint64_t)update->ntimestep);
-  wiregrain::write_reduced_problem(out, wiregrain::assemble_reduced(step, options), title);
+  wiregrain::write_reduced_problem(out, wiregrain::assemble_reduced(step), title);
 }
 
 // fix_modify ID damping γ | overlap_recovery β | overlap_speed v | tolerance t | friction μ |
@@ -792,8 +843,8 @@ int FixNSCDPolyhedra::modify_param(int narg, char **arg) {
     core_->options.sleep.speed = args.value_nonnegative(key);
     core_->options.sleep.time = args.value_positive(key);
   } else if (key == "damping") core_->options.damping = args.value_nonnegative(key);
-  else if (key == "overlap_recovery") core_->options.solver.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
-  else if (key == "overlap_speed") core_->options.solver.overlap_speed = args.value_nonnegative(key);
+  else if (key == "overlap_recovery") core_->options.law.overlap_recovery = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+  else if (key == "overlap_speed") core_->options.law.overlap_speed = args.value_nonnegative(key);
   else if (key == "tolerance") core_->options.solver.tolerance = args.value_positive(key);
   else if (key == "subspace_closing") core_->options.solver.subspace_closing = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
   else {

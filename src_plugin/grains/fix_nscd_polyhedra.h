@@ -80,6 +80,11 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #include "core/common/work_share.h"
 #include "fix.h"
 
+namespace wiregrain_lmp {
+template <class Target>
+class KeywordTable;
+}
+
 namespace wiregrain {
 struct GrainState;
 struct GrainStepResult;
@@ -128,6 +133,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   // defined in the .cpp (style headers are compiled without Eigen)
   struct CoreState;
   std::unique_ptr<CoreState> core_;
+  // the keywords of the fix's line and their handlers (common/plugin_args.h)
+  static const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> keywords_;
   std::vector<std::string> wall_fix_ids_;   // per wall: the fix wire/wall it comes from ("" : own)
   std::vector<class FixWireWall *> wall_fixes_;
   int every_ = 1;                           // solve every N steps with h = N dt

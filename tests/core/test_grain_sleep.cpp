@@ -69,7 +69,7 @@ struct Scene {
         const GrainPose pose =
             advance_grain_pose({g.position, g.orientation}, g.inertia, g.velocity, last.velocities[k],
                                inertia * g.angular_velocity, inertia * last.angular_velocities[k], kH,
-                               options.solver.theta);
+                               options.law.theta);
         g.position = pose.position;
         g.orientation = pose.orientation;
         g.velocity = last.velocities[k];

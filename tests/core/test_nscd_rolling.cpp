@@ -60,7 +60,7 @@ void run(Sphere& s, const Vector3d& gravity, double mu, double h, double theta, 
   options.rolling_friction = mu_r;
   options.solver.tolerance = 1e-14;
   options.solver.max_iterations = 1000;
-  options.solver.theta = theta;
+  options.law.theta = theta;
   std::vector<PlaneWall> walls(1);  // the floor: through 0, normal +z
   walls[0].friction = mu;
   GrainImpulseMemory memory;
@@ -141,7 +141,7 @@ TEST(NscdRolling, LaunchedSphereSlidesThenRollsAtFiveSeventhsOfItsSpeed) {
   EXPECT_NEAR(s.state.angular_velocity.y() * kRadius, v, 1e-14);  // measured 0
 }
 
-// Rolling resistance (GrainStepOptions::rolling_friction μ_r; nscd_solver.h): a couple of
+// Rolling resistance (GrainStepOptions::rolling_friction μ_r; core/nscd/body_operator.h): a couple of
 // at most μ_r R r_n with R = the sphere's radius (its sweep radius; the floor's is 0).
 // Rolling without slip, m v' = F and I ω' = −r F − μ_r r m g with v = ω r, give
 // v' = −μ_r r² m g / (I + m r²) = −(5/7) μ_r g: a sphere set rolling at v0 on a level
@@ -215,7 +215,7 @@ TEST(NscdRolling, CoupleOnTheDiscEdgeOpposesTheRollingVelocity) {
     contact.rolling_friction = rolling;  // μ_r R = rolling: R = 1
     contact.rolling_radius = 1.0;
     step.contacts.push_back(contact);
-    NscdOptions options;
+    SolverSettings options;
     options.tolerance = 1e-14;
     options.max_iterations = 10000;
     const NscdStepResult result = solve_nscd_step(step, options);
@@ -251,7 +251,7 @@ TEST(NscdRolling, RollingFrictionWithoutARadiusNamesTheContact) {
   contact.rolling_friction = 0.1;
   step.contacts.push_back(contact);
   try {
-    solve_nscd_step(step, NscdOptions());
+    solve_nscd_step(step, SolverSettings());
     ADD_FAILURE();
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.argument(), "contacts");
@@ -343,7 +343,7 @@ TEST(NscdRolling, OneAxisCoupleResistsOnlyRollingAboutTheEdge) {
     contact.rolling_axis = Vector3d::UnitX();
     step.contacts.push_back(contact);
   }
-  NscdOptions options;
+  SolverSettings options;
   options.tolerance = 1e-14;
   Vector3d omega(omega_x0, 0, omega_z0);
   const int steps_to_stop = static_cast<int>(std::ceil(omega_x0 * inertia_x / (arm * g * h)));  // 400

@@ -90,8 +90,8 @@ double largest_speed(const NscdStepResult& result) {
 }
 
 // Converged to round-off on the impulse increment.
-NscdOptions tight(double tolerance = 1e-13) {
-  NscdOptions options;
+SolverSettings tight(double tolerance = 1e-13) {
+  SolverSettings options;
   options.tolerance = tolerance;
   options.measure = ConvergenceMeasure::increment;
   options.max_iterations = 100000;
@@ -191,7 +191,7 @@ TEST(NscdStack, ColumnInterfaceLoads) {
   for (int n : {1, 5, 20}) {
     for (SweepOrder order : {SweepOrder::forward, SweepOrder::alternating, SweepOrder::random}) {
       NscdStep step = cube_column(n, h, g, 0.5);
-      NscdOptions options;
+      SolverSettings options;
       options.tolerance = 1e-6;
       options.max_iterations = 400000;
       options.order = order;
@@ -212,14 +212,14 @@ TEST(NscdStack, ColumnInterfaceLoads) {
   }
 }
 
-// Freezing (NscdOptions::freeze) on the columns of ColumnInterfaceLoads (random order,
+// Freezing (SolverSettings::freeze) on the columns of ColumnInterfaceLoads (random order,
 // Siconos error 1e-6): contacts that have settled are skipped for 5 sweeps, yet the loads
 // are k m g h to 1e-4 as without it, the stop still at a Siconos error within the
 // tolerance (computed on every contact).
 TEST(NscdStack, FreezingKeepsTheColumnLoads) {
   const double h = 1e-3, g = 9.81;
   for (int n : {5, 20}) {
-    NscdOptions options;
+    SolverSettings options;
     options.tolerance = 1e-6;
     options.max_iterations = 400000;
     options.freeze = 5;
@@ -246,7 +246,7 @@ TEST(NscdStack, WarmStart) {
   int cheap_warm_steps = 0;
   for (int warm = 0; warm < 2; ++warm) {
     NscdStep step = cube_column(n, h, g, 0.5);
-    NscdOptions options;
+    SolverSettings options;
     options.max_iterations = 100000;
     std::vector<Vector3d> impulses;
     for (int k = 0; k < 15; ++k) {
@@ -285,7 +285,7 @@ TEST(NscdSubspace, TallColumnFromColdStart) {
   for (int n : {20, 60}) {
     for (SolverMethod method : {SolverMethod::subspace, SolverMethod::gauss_seidel}) {
       NscdStep step = cube_column(n, h, g, 0.5);
-      NscdOptions options;
+      SolverSettings options;
       options.tolerance = 1e-12;
       options.max_iterations = 10000;
       options.method = method;
@@ -321,7 +321,7 @@ TEST(NscdSubspace, InclineSlidesAndSticksAsGaussSeidel) {
     step.time_step = h;
     step.bodies.push_back(cube_body(Vector3d::Zero(), Vector3d(g * std::sin(alpha), 0.0, -g * std::cos(alpha)), h));
     add_square_face(step, -1, 0, 0.0, mu);
-    NscdOptions options;
+    SolverSettings options;
     options.tolerance = 1e-13;
     options.max_iterations = 100000;
     options.method = SolverMethod::subspace;
@@ -339,7 +339,7 @@ TEST(NscdSubspace, InclineSlidesAndSticksAsGaussSeidel) {
 // wait back to 0.
 TEST(NscdSubspace, BackoffSkipsSolvesAndAKeptOneResetsIt) {
   const double h = 1e-3, g = 9.81;
-  NscdOptions options;
+  SolverSettings options;
   options.method = SolverMethod::subspace;
   options.max_iterations = 10000;
   StickSolveBackoff backoff;
@@ -370,13 +370,13 @@ TEST(NscdSubspace, ClosingStickSolveOnlyAboveItsShareOfTheTolerance) {
   const double h = 1e-3, g = 9.81;
   const int n = 20;
   const auto options_with = [](double closing) {
-    NscdOptions options;
+    SolverSettings options;
     options.method = SolverMethod::subspace;
     options.max_iterations = 10000;
     options.subspace_closing = closing;
     return options;
   };
-  NscdOptions exact = options_with(0.0);
+  SolverSettings exact = options_with(0.0);
   exact.tolerance = 1e-13;
   const NscdStepResult reference = solve_nscd_step(cube_column(n, h, g, 0.5), exact);
   ASSERT_LT(worst_column_load_error(reference, n, g, h), 1e-10);
@@ -408,13 +408,13 @@ TEST(NscdSubspace, ClosingStickSolveOnlyAboveItsShareOfTheTolerance) {
 TEST(NscdSubspace, OptionsOutOfRangeNameTheirKeyword) {
   struct Case {
     const char* keyword;
-    double NscdOptions::*option;
+    double SolverSettings::*option;
     std::vector<double> bad;
   };
-  for (const Case& c : {Case{"subspace_regularization", &NscdOptions::subspace_regularization, {0.0, -1e-9, 1.0, std::nan("")}},
-                        Case{"subspace_closing", &NscdOptions::subspace_closing, {-0.1, 1.5, std::nan("")}}}) {
+  for (const Case& c : {Case{"subspace_regularization", &SolverSettings::subspace_regularization, {0.0, -1e-9, 1.0, std::nan("")}},
+                        Case{"subspace_closing", &SolverSettings::subspace_closing, {-0.1, 1.5, std::nan("")}}}) {
     for (double bad : c.bad) {
-      NscdOptions options;
+      SolverSettings options;
       options.*c.option = bad;
       try {
         options.validate();
@@ -439,34 +439,39 @@ TEST(NscdImpact, GapAnticipationRestitutionTheta) {
     add_square_face(step, -1, 0, 0.0, 0.5, gap);
     return step;
   };
-  NscdOptions options = tight();
-  NscdStepResult result = solve_nscd_step(falling(), options);
+  const SolverSettings options = tight();
+  MoreauJeanLaw law;
+  const auto with_law = [&](NscdStep step) {
+    step.law = law;
+    return step;
+  };
+  NscdStepResult result = solve_nscd_step(with_law(falling()), options);
   EXPECT_NEAR(result.velocities[0][2], -gap / h, 1e-12);
   EXPECT_LT(result.max_predicted_penetration, 1e-15);
 
-  options.restitution = 0.5;
-  result = solve_nscd_step(falling(), options);
+  law.restitution = 0.5;
+  result = solve_nscd_step(with_law(falling()), options);
   EXPECT_NEAR(result.velocities[0][2], 0.5 * v0, 1e-12);
 
   // Far from the ground (no impact predicted): restitution does nothing, free flight.
   NscdStep far = falling();
   for (NscdContact& c : far.contacts) c.gap = 1.0;
-  result = solve_nscd_step(far, options);
+  result = solve_nscd_step(with_law(far), options);
   EXPECT_NEAR(result.velocities[0][2], -v0 - grav * h, 1e-15);
   EXPECT_EQ(result.contacts.report.open, 4);
 
-  options.restitution = 0.0;
-  options.theta = 0.5;
-  result = solve_nscd_step(falling(), options);
+  law.restitution = 0.0;
+  law.theta = 0.5;
+  result = solve_nscd_step(with_law(falling()), options);
   // g + h (−v0 + v)/2 = 0.
   EXPECT_NEAR(result.velocities[0][2], v0 - 2.0 * gap / h, 1e-12);
   EXPECT_LT(result.max_predicted_penetration, 1e-15);
 
   // Overlap g < 0 with θ = 1 at rest: pushed out at −g/h.
-  options.theta = 1.0;
+  law.theta = 1.0;
   NscdStep overlap = cube_column(1, h, grav, 0.5);
   for (NscdContact& c : overlap.contacts) c.gap = -1e-5;
-  result = solve_nscd_step(overlap, options);
+  result = solve_nscd_step(with_law(overlap), options);
   EXPECT_NEAR(result.velocities[0][2], 1e-5 / h, 1e-12);
   EXPECT_DOUBLE_EQ(result.max_overlap, 1e-5);
 }
@@ -501,7 +506,7 @@ TEST(NscdBox, KinematicPlateAndNoContacts) {
   EXPECT_NEAR(world_impulse_sum(result, 0, 4)[2], kMass * (V + g * h), 1e-13);
 
   step.contacts.clear();
-  const NscdStepResult free = solve_nscd_step(step, NscdOptions());
+  const NscdStepResult free = solve_nscd_step(step, SolverSettings());
   EXPECT_EQ(free.velocities[1], Vector3d(0.0, 0.0, -g * h));
   EXPECT_EQ(free.contacts.report.iterations, 1);
   EXPECT_FALSE(free.contacts.report.hit_iteration_cap);
@@ -550,10 +555,10 @@ NscdStep random_step(std::mt19937_64& rng, int bodies, int contacts) {
 TEST(NscdReduced, AssemblyAndBodySolverAgree) {
   std::mt19937_64 rng(99);
   const NscdStep step = random_step(rng, 8, 30);
-  NscdOptions options;
+  SolverSettings options;
   options.tolerance = 1e-12;
   options.max_iterations = 20000;
-  const ReducedProblem reduced = assemble_reduced(step, options);
+  const ReducedProblem reduced = assemble_reduced(step);
 
   const int nb = 8, nc = 30;
   MatrixXd H = MatrixXd::Zero(3 * nc, 6 * nb), Minv = MatrixXd::Zero(6 * nb, 6 * nb);
@@ -599,7 +604,7 @@ TEST(NscdReduced, RandomDenseProblemConverges) {
   for (int c = 0; c < n; ++c) problem.mu.push_back(friction(rng));
   for (SolverMethod method : {SolverMethod::gauss_seidel, SolverMethod::subspace}) {
     for (SweepOrder order : {SweepOrder::forward, SweepOrder::alternating, SweepOrder::random}) {
-      NscdOptions options;
+      SolverSettings options;
       options.tolerance = 1e-8;
       options.measure = ConvergenceMeasure::natural_map;
       options.order = order;
@@ -640,9 +645,9 @@ TEST(NscdReduced, SiconosErrorByHand) {
 // Options: the cap is reported with the residual; relaxation converges to the same loads;
 // random order is reproducible from its seed; the increment-then-natural-map measure
 // (Siconos' default) ends below the tolerance in the natural-map error.
-TEST(NscdOptions, CapRelaxationSeedMeasure) {
+TEST(SolverSettings, CapRelaxationSeedMeasure) {
   const double h = 1e-3, g = 9.81;
-  NscdOptions options;
+  SolverSettings options;
   options.tolerance = 1e-6;
   options.max_iterations = 5;
   NscdStepResult result = solve_nscd_step(cube_column(5, h, g, 0.5), options);
@@ -672,7 +677,7 @@ TEST(NscdOptions, CapRelaxationSeedMeasure) {
   EXPECT_DOUBLE_EQ(result.contacts.report.residual, result.contacts.report.siconos_error);
 }
 
-TEST(NscdOptions, BadInput) {
+TEST(SolverSettings, BadInput) {
   auto expect_argument = [](const std::string& argument, auto&& call) {
     try {
       call();
@@ -682,31 +687,42 @@ TEST(NscdOptions, BadInput) {
     }
   };
   const NscdStep good = cube_column(2, 1e-3, 9.81, 0.5);
-  NscdOptions options;
-  expect_argument("theta", [&] { options.theta = 0.3; options.validate(); });
-  options = NscdOptions();
+  SolverSettings options;
+  MoreauJeanLaw law;
+  expect_argument("theta", [&] { law.theta = 0.3; law.validate(); });
+  law = MoreauJeanLaw();
   expect_argument("relaxation", [&] { options.relaxation = 2.0; options.validate(); });
-  options = NscdOptions();
-  expect_argument("restitution", [&] { options.restitution = -0.1; options.validate(); });
-  options = NscdOptions();
-  expect_argument("overlap_recovery", [&] { options.overlap_recovery = 1.5; options.validate(); });
-  options = NscdOptions();
-  expect_argument("overlap_speed", [&] { options.overlap_speed = -1.0; options.validate(); });
-  options = NscdOptions();
+  options = SolverSettings();
+  expect_argument("restitution", [&] { law.restitution = -0.1; law.validate(); });
+  law = MoreauJeanLaw();
+  expect_argument("overlap_recovery", [&] { law.overlap_recovery = 1.5; law.validate(); });
+  law = MoreauJeanLaw();
+  expect_argument("overlap_speed", [&] { law.overlap_speed = -1.0; law.validate(); });
+  law = MoreauJeanLaw();
   expect_argument("max_iterations", [&] { options.max_iterations = 0; options.validate(); });
-  options = NscdOptions();
+  options = SolverSettings();
   expect_argument("freeze", [&] { options.freeze = -1; options.validate(); });
-  options = NscdOptions();
+  options = SolverSettings();
   expect_argument("freeze", [&] {  // the increment alone would not see the frozen contacts
     options.freeze = 5;
     options.measure = ConvergenceMeasure::increment;
     options.validate();
   });
-  options = NscdOptions();
+  options = SolverSettings();
   expect_argument("time_step", [&] {
     NscdStep s = good;
     s.time_step = -1.0;
     solve_nscd_step(s, options);
+  });
+  expect_argument("theta", [&] {  // the step's law is checked with the step
+    NscdStep s = good;
+    s.law.theta = 0.3;
+    solve_nscd_step(s, options);
+  });
+  expect_argument("overlap_recovery", [&] {
+    NscdStep s = good;
+    s.law.overlap_recovery = -0.5;
+    assemble_reduced(s);
   });
   expect_argument("contacts", [&] {
     NscdStep s = good;
@@ -777,10 +793,10 @@ class WholeVelocityOperator final : public ContactOperator {
 // sliding.
 TEST(NscdOperators, OpenContactTestReadsTheNormalVelocityToTheBit) {
   const NscdStep step = wiregrain_bench::cube_lattice(4, 4, 3, 7, 0.5, true);
-  NscdOptions options;
+  SolverSettings options;
   options.tolerance = 0.0;  // exactly max_iterations sweeps
   options.max_iterations = 60;
-  const std::unique_ptr<ContactOperator> op = body_contact_operator(step, options);
+  const std::unique_ptr<ContactOperator> op = body_contact_operator(step);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> impulse(-1e-3, 1e-3);
   for (int round = 0; round < 3; ++round) {
@@ -792,8 +808,8 @@ TEST(NscdOperators, OpenContactTestReadsTheNormalVelocityToTheBit) {
     }
   }
 
-  const std::unique_ptr<ContactOperator> fast = body_contact_operator(step, options);
-  const std::unique_ptr<ContactOperator> plain = body_contact_operator(step, options);
+  const std::unique_ptr<ContactOperator> fast = body_contact_operator(step);
+  const std::unique_ptr<ContactOperator> plain = body_contact_operator(step);
   WholeVelocityOperator whole(*plain);
   const ContactSolution a = solve_frictional_contact(*fast, options);
   const ContactSolution b = solve_frictional_contact(whole, options);

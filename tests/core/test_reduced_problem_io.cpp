@@ -55,7 +55,7 @@ TEST(ReducedProblemIo, RoundTripIsExact) {
   EXPECT_EQ((back.W.to_dense() - p.W.to_dense()).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((back.q - p.q).cwiseAbs().maxCoeff(), 0.0);
   for (int c = 0; c < 12; ++c) EXPECT_EQ(back.mu[c], p.mu[c]);
-  NscdOptions options;
+  SolverSettings options;
   options.order = SweepOrder::forward;
   options.tolerance = 1e-10;
   const ContactSolution a = solve_reduced(p, options), b = solve_reduced(back, options);

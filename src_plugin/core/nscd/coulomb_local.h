@@ -1,5 +1,5 @@
 // The exact solution of the frictional contact problem of ONE contact point (the
-// "projector" of the NSCD Gauss–Seidel solver, core/nscd_solver.h).
+// "projector" of the NSCD Gauss–Seidel solver, core/nscd/gauss_seidel.h).
 //
 // Local frame (n, t1, t2), n the contact normal. Unknowns: the impulse r = (r_n, r_t) and
 // the local relative velocity u = (u_n, u_t) at the end of the step, linked by
@@ -176,7 +176,7 @@ Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& r, double mu);
 // û = u + μ‖u_t‖ e_n (De Saxcé & Feng, Math. Comput. Modelling 28 (1998) 225):
 //   F(r, u) = r − proj_{K_μ}(r − û),
 // zero exactly when (r, u) satisfies the Signorini–Coulomb law above. This is the
-// per-contact term of Siconos' fc3d_compute_error (core/nscd_solver.h).
+// per-contact term of Siconos' fc3d_compute_error (core/nscd/contact_operator.h).
 Eigen::Vector3d natural_map_residual(const Eigen::Vector3d& r, const Eigen::Vector3d& u,
                                      double mu);
 

@@ -18,7 +18,7 @@
 //     order changes the sweeps needed, not the solution);
 //  4. warm start: each point starts from last step's impulse of the nearest stored point
 //     of the same pair within R_max / 4 (GrainImpulseMemory);
-//  5. solve_nscd_step (core/nscd/nscd_solver.h), then per grain the contact force and
+//  5. solve_nscd_step (core/nscd/nscd_step.h), then per grain the contact force and
 //     torque Hᵀ r / h, the force of the grains on each wall, and the contact list.
 // The position update that follows the step is advance_grain_pose, then the projection of
 // the overlaps it leaves (core/nscd/overlap_projection.h).
@@ -64,8 +64,10 @@
 #include "core/common/work_share.h"
 #include "core/contact/contact_list.h"
 #include "core/geometry/shape_library.h"
+#include "core/nscd/grain_impulse_memory.h"
 #include "core/nscd/grain_pairs.h"
 #include "core/nscd/nscd_solver.h"
+#include "core/nscd/rolling_axes.h"
 
 namespace wiregrain {
 
@@ -98,10 +100,13 @@ struct PlaneWall {
   double friction = 0.5;
 };
 
-// The defaults are fix nscd/polyhedra's (docs/commands/fix_nscd_polyhedra.md): forward
-// sweeps, Siconos' natural-map residual, push-out speed 0.1; the tolerance and the cap are
-// NscdOptions'.
-NscdOptions grain_solver_defaults();
+// fix nscd/polyhedra's defaults (docs/commands/fix_nscd_polyhedra.md), which differ from
+// the core's (SolverSettings(), MoreauJeanLaw()): the solver sweeps in the forward order
+// with Siconos' natural-map residual and method subspace (the tolerance and the cap are
+// SolverSettings'); the law keeps overlaps from growing (β = 0) and pushes them out at
+// most at 0.1 (the rest of it, θ = 1 and e = 0, as the core's).
+SolverSettings grain_solver_defaults();
+MoreauJeanLaw grain_law_defaults();
 
 // See the header comment; fix keyword `sleep v_sleep t_sleep`.
 struct SleepOptions {
@@ -110,26 +115,12 @@ struct SleepOptions {
   bool on() const { return speed > 0.0; }
 };
 
-// Rolling resistance of one pair (not in the paper): its couples act only about the
-// tangent axes about which the pair's own contact points do not already resist rolling.
-// About a tangent axis e, the normal impulses of points spread across e (by a half-width
-// w_e, half the extent of the points along n × e) resist with a moment of up to w_e r_n,
-// the couples with μ_r R r_n; e is left to the couples where w_e ≤ μ_r R (`arm`). So a
-// single point keeps both axes, an edge on a face (points on a line) the axis along the
-// edge, a face on a face none. Couples about an axis the points also hold are redundant
-// with the normal impulses, and Gauss–Seidel drifts along that redundancy: with couples
-// about every tangent axis a box resting face down hits the 1000-sweep cap on every step,
-// and the 500-grain deposit does on some steps from t = 3 (2026-11-27, commit b774b66;
-// docs/design.md, "Rolling resistance"). The axes are the
-// principal axes of the points' spread in the plane normal to `normal`.
-struct RollingAxes {
-  int count = 2;                                   // free axes: 0, 1 or 2
-  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // count 1: the free axis (unit, tangent)
-};
-RollingAxes rolling_axes(const std::vector<Eigen::Vector3d>& positions, const Eigen::Vector3d& normal, double arm);
-
+// What a grain step solves and how: the solver's settings, the time-stepping law, the
+// grains' coefficients and the contact detection's options. The defaults are fix
+// nscd/polyhedra's.
 struct GrainStepOptions {
-  NscdOptions solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
+  SolverSettings solver = grain_solver_defaults();  // solver.seed: base of the per-step seed
+  MoreauJeanLaw law = grain_law_defaults();         // θ (also the pose update's), e, β, v_o
   double friction = 0.5;   // μ between grains
   double damping = 0.0;    // γ ≥ 0
   double margin = 0.0;     // extra activation distance ≥ 0
@@ -148,60 +139,17 @@ struct GrainStepOptions {
   // rolling resistance μ_r ≥ 0 (not in the paper; fix keyword `rolling_friction`): each
   // contact point resists rolling with a couple of at most μ_r R r_n, R the sum of the
   // two sweep radii (a wall's is 0): the radius of the rounded edges the grains roll on,
-  // so sharp grains (R = 0) get none (nscd_solver.h, "Rolling resistance"), about the
-  // axes its pair's points leave free (rolling_axes). 0: none. The couples are
-  // warm-started as the impulses are.
+  // so sharp grains (R = 0) get none (core/nscd/body_operator.h, "Rolling resistance"),
+  // about the axes its pair's points leave free (core/nscd/rolling_axes.h). 0: none. The
+  // couples are warm-started as the impulses are.
   double rolling_friction = 0.0;
   SleepOptions sleep;
-  // solver options of a step: seed = solver.seed + step_number (a new random order per step)
-  NscdOptions solver_for_step(std::uint64_t step_number) const;
-  // InvalidArgument("friction" | "damping" | "margin" | "rolling_friction" | "sleep" |
-  // solver keywords, ...)
+  // the solver's settings of a step: seed = solver.seed + step_number (a new random order
+  // per step)
+  SolverSettings solver_for_step(std::uint64_t step_number) const;
+  // InvalidArgument(solver keywords | law keywords | "friction" | "damping" | "margin" |
+  // "rolling_friction" | "sleep", ...)
   void validate() const;
-};
-
-// Last step's impulses (world frame) at their contact points, by pair (a, b): a = tag of
-// grain a or −(wall + 1), b = tag of grain b. One flat list sorted by pair (the step's
-// points arrive top-down; `commit` sorts them once, recall is a binary search): a map of
-// vectors rebuilt every step cost 3 % of a column's run in allocations and lookups.
-class GrainImpulseMemory {
- public:
-  using PairKey = std::pair<long, long>;
-  // a point's position and impulse on b (world frame); normal, gap and status for a
-  // frozen point (sleeping pair), which is reported without being detected again
-  struct Impulse {
-    Eigen::Vector3d position, impulse;
-    Eigen::Vector3d couple = Eigen::Vector3d::Zero();  // rolling couple on b (world frame)
-    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-    double gap = 0.0;
-    ContactStatus status = ContactStatus::open;
-  };
-  struct Entry {
-    PairKey pair;
-    Impulse impulse;
-  };
-  // the pair's stored point nearest to `position` if its squared distance is below
-  // `radius2`, else nullptr; std::logic_error if points were added since the last commit
-  const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2) const;
-  void clear() {  // the impulses; the backoff stays
-    entries_.clear();
-    keys_.clear();
-    committed_ = true;
-  }
-  void add(const PairKey& pair, const Impulse& impulse) {
-    committed_ = false;
-    entries_.push_back({pair, impulse});
-  }
-  // sorts the points added by pair, a pair's points in the order they were added
-  void commit();
-  // every stored point, by pair ascending (committed: std::logic_error otherwise)
-  const std::vector<Entry>& points() const;
-  StickSolveBackoff backoff;  // method subspace, from step to step (nscd_solver.h)
-
- private:
-  std::vector<Entry> entries_;
-  std::vector<PairKey> keys_;  // entries_[i].pair, packed for recall's binary search
-  bool committed_ = true;
 };
 
 // A contact point of the step: the solver's row and where it came from.
@@ -214,7 +162,7 @@ struct GrainContactPoint {
 
 // Steps 1–4: the problem to solve.
 struct GrainStepProblem {
-  NscdStep step;                              // bodies = grains (same order), contacts top-down
+  NscdStep step;  // h, the law of the options, bodies = grains (same order), contacts top-down
   std::vector<GrainContactPoint> points;      // parallel to step.contacts
   std::vector<Eigen::Vector3d> warm_start;    // local frames; empty without warm start
   // rolling couples (t1, t2), parallel to warm_start; empty without rolling resistance
@@ -242,7 +190,7 @@ struct GrainStepStats {
   double max_overlap = 0.0;                // at the step start
   double max_predicted_penetration = 0.0;
   bool hit_iteration_cap = false;
-  int subspace_solves = 0, subspace_accepted = 0;  // method subspace (nscd_solver.h)
+  int subspace_solves = 0, subspace_accepted = 0;  // method subspace (core/nscd/subspace_correction.h)
   int subspace_factorizations = 0;                 // the LDLᵀ factorisations those made
   int sleeping = 0;        // grains asleep after the step
   int woken = 0;           // grains woken in the step (at its start or end)
@@ -285,7 +233,7 @@ GrainStepResult grain_step(const std::vector<GrainState>& grains, const ShapeLib
                            const GrainStepOptions& options, std::uint64_t step_number,
                            GrainImpulseMemory& memory);
 
-// θ-method pose update after a step (nscd_solver.h):
+// θ-method pose update after a step (core/nscd/nscd_step.h):
 //     x += h ((1 − θ) v_k + θ v_{k+1})   (theta_method_displacement),
 // the orientation by the torque-free rotation (RigidRotation::rotate_free) over h with the
 // angular momentum (1 − θ) L_k + θ L_{k+1} (world frame).

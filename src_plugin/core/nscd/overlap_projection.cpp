@@ -1,3 +1,4 @@
+// The post-step projection of the grains' overlaps (overlap_projection.h).
 #include "core/nscd/overlap_projection.h"
 
 #include <algorithm>
@@ -35,78 +36,66 @@ struct PairGap {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
 
-}  // namespace
-
-std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& grains, const ShapeLibrary& library,
-                                             const std::vector<PlaneWall>& walls, const GrainStepProblem& problem,
-                                             const GrainStepResult& result, double theta, double tolerance,
-                                             int max_passes, OverlapProjectionStats* stats) {
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
-    throw InvalidArgument("tolerance", "overlap projection: tolerance must be >= 0 and finite, got " +
-                                           format_number(tolerance));
-  if (max_passes < 1)
-    throw InvalidArgument("max_passes", "overlap projection: max_passes must be >= 1, got " + std::to_string(max_passes));
-  const int n = static_cast<int>(grains.size());
-  std::vector<Eigen::Vector3d> corrections(n, Eigen::Vector3d::Zero());
-  OverlapProjectionStats local;
-  if (tolerance == 0.0 || problem.points.empty()) {
-    if (stats) *stats = local;
-    return corrections;
-  }
-  const double h = problem.step.time_step;
-
-  // 1. the poses the step leads to
-  std::vector<GrainPose> poses(n);
-  for (int k = 0; k < n; ++k) {
-    const GrainState& g = grains[k];
-    const Eigen::Matrix3d r0 = g.orientation.toRotationMatrix();
-    const Eigen::Matrix3d inertia_begin = r0 * g.inertia.asDiagonal() * r0.transpose();
-    poses[k] = advance_grain_pose({g.position, g.orientation}, g.inertia, g.velocity, result.velocities[k],
-                                  inertia_begin * g.angular_velocity, inertia_begin * result.angular_velocities[k], h,
-                                  theta);
-  }
-  std::vector<std::optional<PosedShape>> posed(n);
-  const auto posed_grain = [&](int k) -> const PosedShape& {
-    if (!posed[k]) posed[k].emplace(library[grains[k].shape].shape, poses[k].position, poses[k].orientation);
-    return *posed[k];
-  };
-
-  // 2. the pairs of the step's points, once each
+// 2. the pairs of the step's points, once each, in the order of their first point
+std::vector<ProjectedPair> projected_pairs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                                           const GrainStepProblem& problem) {
   std::vector<ProjectedPair> pairs;
-  {
-    // (a or −(wall + 1), b) as one key; the pairs in the order of their first point
-    std::unordered_map<std::uint64_t, std::size_t> index_of;
-    index_of.reserve(problem.points.size());
-    for (const GrainContactPoint& p : problem.points) {
-      const NscdContact& c = p.constraint;
-      const int wall = c.body_a >= 0 ? -1 : static_cast<int>(-p.pair.first - 1);
-      const int first = c.body_a >= 0 ? c.body_a : -(wall + 1);
-      const std::uint64_t key = (std::uint64_t(std::uint32_t(first)) << 32) | std::uint32_t(c.body_b);
-      const auto [it, added] = index_of.insert({key, pairs.size()});
-      if (added) {
-        ProjectedPair pair;
-        pair.a = c.body_a;
-        pair.b = c.body_b;
-        pair.wall = wall;
-        pair.size = library[grains[c.body_b].shape].bounding_radius;
-        if (c.body_a >= 0) pair.size = std::min(pair.size, library[grains[c.body_a].shape].bounding_radius);
-        pairs.push_back(pair);
-      }
-      ProjectedPair& pair = pairs[it->second];
-      if (c.gap < pair.deepest && std::abs(p.frame.col(0).norm() - 1.0) < 1e-9) {  // a unit normal
-        pair.deepest = c.gap;
-        pair.axis = p.frame.col(0);
-      }
+  // (a or −(wall + 1), b) as one key
+  std::unordered_map<std::uint64_t, std::size_t> index_of;
+  index_of.reserve(problem.points.size());
+  for (const GrainContactPoint& p : problem.points) {
+    const NscdContact& c = p.constraint;
+    const int wall = c.body_a >= 0 ? -1 : static_cast<int>(-p.pair.first - 1);
+    const int first = c.body_a >= 0 ? c.body_a : -(wall + 1);
+    const std::uint64_t key = (std::uint64_t(std::uint32_t(first)) << 32) | std::uint32_t(c.body_b);
+    const auto [it, added] = index_of.insert({key, pairs.size()});
+    if (added) {
+      ProjectedPair pair;
+      pair.a = c.body_a;
+      pair.b = c.body_b;
+      pair.wall = wall;
+      pair.size = library[grains[c.body_b].shape].bounding_radius;
+      if (c.body_a >= 0) pair.size = std::min(pair.size, library[grains[c.body_a].shape].bounding_radius);
+      pairs.push_back(pair);
+    }
+    ProjectedPair& pair = pairs[it->second];
+    if (c.gap < pair.deepest && std::abs(p.frame.col(0).norm() - 1.0) < 1e-9) {  // a unit normal
+      pair.deepest = c.gap;
+      pair.axis = p.frame.col(0);
     }
   }
-  local.pairs = static_cast<int>(pairs.size());
+  return pairs;
+}
 
-  const auto pair_gap = [&](const ProjectedPair& pair) {
+// The grains at the poses the step leads to, moved by the projection: the pairs' gaps and
+// their bounds at the current poses, and the moves.
+class ProjectedGrains {
+ public:
+  // 1. the poses the step leads to
+  ProjectedGrains(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                  const std::vector<PlaneWall>& walls, const GrainStepProblem& problem,
+                  const GrainStepResult& result, double theta)
+      : grains_(grains), library_(library), walls_(walls), problem_(problem), h_(problem.step.time_step) {
+    const int n = static_cast<int>(grains.size());
+    corrections_.assign(n, Eigen::Vector3d::Zero());
+    poses_.resize(n);
+    posed_.resize(n);
+    for (int k = 0; k < n; ++k) {
+      const GrainState& g = grains[k];
+      const Eigen::Matrix3d r0 = g.orientation.toRotationMatrix();
+      const Eigen::Matrix3d inertia_begin = r0 * g.inertia.asDiagonal() * r0.transpose();
+      poses_[k] = advance_grain_pose({g.position, g.orientation}, g.inertia, g.velocity, result.velocities[k],
+                                     inertia_begin * g.angular_velocity, inertia_begin * result.angular_velocities[k],
+                                     h_, theta);
+    }
+  }
+
+  PairGap pair_gap(const ProjectedPair& pair) {
     PairGap out;
     const PosedShape& b = posed_grain(pair.b);
     if (pair.a < 0) {  // a wall: its plane at the end of the step
-      const PlaneWall& w = walls[pair.wall];
-      const Eigen::Vector3d point = w.point + h * w.velocity;
+      const PlaneWall& w = walls_[pair.wall];
+      const Eigen::Vector3d point = w.point + h_ * w.velocity;
       const Eigen::Vector3d& v = b.vertices()[b.support_vertex(-w.normal)];
       out.near = true;
       out.gap = w.normal.dot(v - point) - b.sweep_radius();
@@ -121,37 +110,62 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
     out.gap = d.distance - sweeps;
     out.normal = d.normal;
     return out;
-  };
+  }
+
   // A lower bound of the pair's gap at the current poses without GJK: the separation of
   // the cores along its start normal (lowest_core_point; for a wall the plane is the
   // other set and the bound is exact), so the grains need not be posed.
-  const auto lowest_along = [&](int k, const Eigen::Vector3d& n) {
-    return lowest_core_point(library[grains[k].shape].shape, poses[k].position, poses[k].orientation, n);
-  };
-  const auto separation_bound = [&](const ProjectedPair& pair) {
-    const ConvexShape& b = library[grains[pair.b].shape].shape;
+  double separation_bound(const ProjectedPair& pair) const {
+    const ConvexShape& b = library_[grains_[pair.b].shape].shape;
     if (pair.a < 0) {
-      const PlaneWall& w = walls[pair.wall];
-      return lowest_along(pair.b, w.normal) - w.normal.dot(w.point + h * w.velocity) - b.sweep_radius();
+      const PlaneWall& w = walls_[pair.wall];
+      return lowest_along(pair.b, w.normal) - w.normal.dot(w.point + h_ * w.velocity) - b.sweep_radius();
     }
     if (!(pair.deepest < std::numeric_limits<double>::infinity())) return -std::numeric_limits<double>::infinity();
-    const ConvexShape& a = library[grains[pair.a].shape].shape;
+    const ConvexShape& a = library_[grains_[pair.a].shape].shape;
     return lowest_along(pair.b, pair.axis) + lowest_along(pair.a, -pair.axis) - a.sweep_radius() - b.sweep_radius();
-  };
+  }
+
   // a sleeping grain (grain_step.h) is held, as a wall
-  const auto inverse_mass = [&](int k) {
-    return !problem.asleep.empty() && problem.asleep[k] ? 0.0 : 1.0 / grains[k].mass;
-  };
-  const auto move = [&](int k, const Eigen::Vector3d& impulse) {
+  double inverse_mass(int k) const {
+    return !problem_.asleep.empty() && problem_.asleep[k] ? 0.0 : 1.0 / grains_[k].mass;
+  }
+
+  void move(int k, const Eigen::Vector3d& impulse) {
     if (inverse_mass(k) == 0.0) return;
     const Eigen::Vector3d dx = impulse * inverse_mass(k);
-    corrections[k] += dx;
-    poses[k].position += dx;
-    posed[k].reset();
-  };
+    corrections_[k] += dx;
+    poses_[k].position += dx;
+    posed_[k].reset();
+  }
 
-  // 3. Gauss–Seidel passes while a pair is deeper than the tolerance; a pass checks the
-  // pairs of grains moved since their last check (every pair in the first pass)
+  std::vector<Eigen::Vector3d>& corrections() { return corrections_; }
+
+ private:
+  const PosedShape& posed_grain(int k) {
+    if (!posed_[k]) posed_[k].emplace(library_[grains_[k].shape].shape, poses_[k].position, poses_[k].orientation);
+    return *posed_[k];
+  }
+  double lowest_along(int k, const Eigen::Vector3d& n) const {
+    return lowest_core_point(library_[grains_[k].shape].shape, poses_[k].position, poses_[k].orientation, n);
+  }
+
+  const std::vector<GrainState>& grains_;
+  const ShapeLibrary& library_;
+  const std::vector<PlaneWall>& walls_;
+  const GrainStepProblem& problem_;
+  const double h_;
+  std::vector<GrainPose> poses_;
+  std::vector<std::optional<PosedShape>> posed_;
+  std::vector<Eigen::Vector3d> corrections_;
+};
+
+// 3. Gauss–Seidel passes while a pair is deeper than the tolerance; a pass checks the
+// pairs of grains moved since their last check (every pair in the first pass). Then the
+// deepest overlap left (the pairs of grains moved in a last pass that still found deep
+// pairs are checked once more).
+void project_pairs(ProjectedGrains& grains, const std::vector<ProjectedPair>& pairs, int n, double tolerance,
+                   int max_passes, OverlapProjectionStats& local) {
   std::vector<double> overlap_of(pairs.size(), 0.0);  // at its last check, relative
   std::vector<char> moved(n, 1);
   const auto touches_moved = [&](const ProjectedPair& pair) { return moved[pair.b] || (pair.a >= 0 && moved[pair.a]); };
@@ -163,26 +177,26 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
       const ProjectedPair& pair = pairs[k];
       if (!touches_moved(pair) && !moved_now[pair.b] && (pair.a < 0 || !moved_now[pair.a])) continue;
       // proven shallower than the tolerance: no GJK (its overlap counts as the bound's)
-      const double bound = separation_bound(pair);
+      const double bound = grains.separation_bound(pair);
       if (std::isfinite(bound) && -bound / pair.size <= tolerance) {
         overlap_of[k] = std::max(0.0, -bound / pair.size);
         if (pass == 0) local.max_overlap_before = std::max(local.max_overlap_before, overlap_of[k]);
         ++local.bounded;
         continue;
       }
-      const PairGap g = pair_gap(pair);
+      const PairGap g = grains.pair_gap(pair);
       overlap_of[k] = g.near ? -g.gap / pair.size : 0.0;
       if (pass == 0) local.max_overlap_before = std::max(local.max_overlap_before, overlap_of[k]);
       if (!(overlap_of[k] > tolerance)) continue;
       deep = true;
-      double w = inverse_mass(pair.b);
-      if (pair.a >= 0) w += inverse_mass(pair.a);
+      double w = grains.inverse_mass(pair.b);
+      if (pair.a >= 0) w += grains.inverse_mass(pair.a);
       if (!(w > 0.0)) continue;  // not reached: a pair of sleeping grains has no points
       const double lambda = (-g.gap - 0.5 * tolerance * pair.size) / w;
-      move(pair.b, lambda * g.normal);
+      grains.move(pair.b, lambda * g.normal);
       moved_now[pair.b] = 1;
       if (pair.a >= 0) {
-        move(pair.a, -lambda * g.normal);
+        grains.move(pair.a, -lambda * g.normal);
         moved_now[pair.a] = 1;
       }
       ++local.projections;
@@ -190,17 +204,38 @@ std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& gra
     local.passes = pass + 1;
     moved = moved_now;
   }
-  // the deepest overlap left (the pairs of grains moved in a last pass that still found
-  // deep pairs are checked once more)
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (deep && touches_moved(pairs[k])) {
-      const PairGap g = pair_gap(pairs[k]);
+      const PairGap g = grains.pair_gap(pairs[k]);
       overlap_of[k] = g.near ? -g.gap / pairs[k].size : 0.0;
     }
     local.max_overlap_after = std::max(local.max_overlap_after, overlap_of[k]);
   }
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> project_overlaps(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                                             const std::vector<PlaneWall>& walls, const GrainStepProblem& problem,
+                                             const GrainStepResult& result, double theta, double tolerance,
+                                             int max_passes, OverlapProjectionStats* stats) {
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    throw InvalidArgument("tolerance", "overlap projection: tolerance must be >= 0 and finite, got " +
+                                           format_number(tolerance));
+  if (max_passes < 1)
+    throw InvalidArgument("max_passes", "overlap projection: max_passes must be >= 1, got " + std::to_string(max_passes));
+  const int n = static_cast<int>(grains.size());
+  OverlapProjectionStats local;
+  if (tolerance == 0.0 || problem.points.empty()) {
+    if (stats) *stats = local;
+    return std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero());
+  }
+  ProjectedGrains projected(grains, library, walls, problem, result, theta);
+  const std::vector<ProjectedPair> pairs = projected_pairs(grains, library, problem);
+  local.pairs = static_cast<int>(pairs.size());
+  project_pairs(projected, pairs, n, tolerance, max_passes, local);
   if (stats) *stats = local;
-  return corrections;
+  return std::move(projected.corrections());
 }
 
 }  // namespace wiregrain

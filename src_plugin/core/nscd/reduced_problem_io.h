@@ -1,4 +1,4 @@
-// Text files of reduced frictional contact problems (core/nscd_solver.h: u = W r + q, W in
+// Text files of reduced frictional contact problems (core/nscd/reduced_problem.h: u = W r + q, W in
 // 3×3 blocks, one μ per contact), written by fix nscd/polyhedra for chosen steps and
 // turned into FCLib HDF5 files by bench/fclib_nscd (which needs libfclib; the core does not).
 //
@@ -15,7 +15,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "core/nscd/nscd_solver.h"
+#include "core/nscd/reduced_problem.h"
 
 namespace wiregrain {
 

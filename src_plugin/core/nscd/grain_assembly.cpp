@@ -1,0 +1,239 @@
+// Steps 1–4 of a grain step (core/nscd/grain_step.h): the bodies, the contact points from
+// the top down and their warm start; and the pieces the sleeping grains share
+// (grain_assembly.h).
+#include "core/nscd/grain_assembly.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "core/common/errors.h"
+#include "core/nscd/grain_detection.h"
+#include "core/nscd/grain_sleep.h"
+
+namespace wiregrain {
+namespace grain_step_detail {
+
+NscdBody free_body(const GrainState& g, double h, double damping) {
+  const double damped = 1.0 / (1.0 + h * damping);
+  const Eigen::Matrix3d r = g.orientation.toRotationMatrix();
+  NscdBody b;
+  b.inverse_mass = damped / g.mass;
+  b.inverse_inertia = damped * (r * g.inertia.cwiseInverse().asDiagonal() * r.transpose());
+  const Eigen::Matrix3d inertia_world = r * g.inertia.asDiagonal() * r.transpose();
+  b.velocity_begin = g.velocity;
+  b.angular_velocity_begin = g.angular_velocity;
+  b.velocity_free = damped * (g.velocity + h * g.force / g.mass);
+  b.angular_velocity_free = b.inverse_inertia * (inertia_world * g.angular_velocity + h * g.torque);
+  return b;
+}
+
+void set_rolling(NscdContact& row, const GrainStepProblem& problem, int body_a, int body_b) {
+  if (problem.sweep_radius.empty()) return;
+  row.rolling_radius = problem.sweep_radius[body_b] + (body_a >= 0 ? problem.sweep_radius[body_a] : 0.0);
+  row.rolling_friction = row.rolling_radius > 0.0 ? problem.rolling_friction : 0.0;
+}
+
+GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, int body_b,
+                             const Eigen::Vector3d& position, const Eigen::Vector3d& normal, double gap, double mu,
+                             const Eigen::Vector3d& wall_velocity, long key_a, const GrainStepProblem& problem) {
+  GrainContactPoint c;
+  set_rolling(c.constraint, problem, body_a, body_b);
+  c.frame = contact_frame(normal);
+  c.constraint.body_a = body_a;
+  c.constraint.body_b = body_b;
+  if (body_a >= 0) c.constraint.jacobian_a = contact_jacobian(c.frame, position - grains[body_a].position, -1.0);
+  c.constraint.jacobian_b = contact_jacobian(c.frame, position - grains[body_b].position, 1.0);
+  c.constraint.velocity_offset = -c.frame.transpose() * wall_velocity;
+  c.constraint.friction = mu;
+  c.constraint.gap = gap;
+  c.pair = {key_a, grains[body_b].tag};
+  c.position = position;
+  return c;
+}
+
+void restrict_point_rolling(std::vector<GrainContactPoint>& points, size_t begin) {
+  restrict_rolling(
+      points.size() - begin, [&](size_t i) { return points[begin + i].pair; },
+      [&](size_t i) { return points[begin + i].position; }, [&](size_t i) { return Eigen::Vector3d(points[begin + i].frame.col(0)); },
+      [&](size_t i) -> NscdContact& { return points[begin + i].constraint; });
+}
+
+void set_step_contacts(GrainStepProblem& problem) {
+  problem.step.contacts.clear();
+  problem.step.contacts.reserve(problem.points.size());
+  for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
+}
+
+void sort_top_down(GrainStepProblem& problem) {
+  const std::vector<size_t> order =
+      top_down_order(problem.points.size(), [&](size_t c) { return problem.points[c].position.z(); });
+  std::vector<GrainContactPoint> points;
+  std::vector<Eigen::Vector3d> warm;
+  std::vector<Eigen::Vector2d> warm_couples;
+  points.reserve(order.size());
+  warm.reserve(problem.warm_start.size());
+  warm_couples.reserve(problem.couple_warm_start.size());
+  for (size_t c : order) {
+    points.push_back(problem.points[c]);
+    if (!problem.warm_start.empty()) warm.push_back(problem.warm_start[c]);
+    if (!problem.couple_warm_start.empty()) warm_couples.push_back(problem.couple_warm_start[c]);
+  }
+  problem.points = std::move(points);
+  problem.warm_start = std::move(warm);
+  problem.couple_warm_start = std::move(warm_couples);
+  set_step_contacts(problem);
+}
+
+namespace {
+
+void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                  const std::vector<PlaneWall>& walls, double h) {
+  if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
+  for (const GrainState& g : grains) {
+    if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite() ||
+        !g.load.allFinite() || !g.load_moment.allFinite())
+      throw InvalidArgument("grains", "grain step: grain " + std::to_string(g.tag) +
+                                          ": quiet time must be >= 0 and finite, the drift and load finite");
+    const auto name = [&g] { return "grain step: grain " + std::to_string(g.tag) + ": "; };  // on failure only
+    if (g.shape < 0 || g.shape >= library.size())
+      throw InvalidArgument("grains", name() + "shape index " + std::to_string(g.shape) + " not in the library");
+    if (!(g.mass > 0.0) || !std::isfinite(g.mass) || !(g.inertia.minCoeff() > 0.0) || !g.inertia.allFinite())
+      throw InvalidArgument("grains", name() + "mass and principal moments must be > 0 and finite");
+    if (!(g.position.allFinite() && g.orientation.coeffs().allFinite() && g.velocity.allFinite() &&
+          g.angular_velocity.allFinite() && g.force.allFinite() && g.torque.allFinite()))
+      throw InvalidArgument("grains", name() + "non-finite state");
+    if (std::fabs(g.orientation.norm() - 1.0) > 1e-9) throw InvalidArgument("grains", name() + "orientation is not a unit quaternion");
+  }
+  for (const PlaneWall& w : walls)
+    if (!(w.point.allFinite() && w.velocity.allFinite()) || !(std::fabs(w.normal.norm() - 1.0) <= 1e-9) ||
+        !(w.friction >= 0.0))
+      throw InvalidArgument("walls", "grain step: a wall needs a finite point and velocity, a unit normal and friction >= 0");
+}
+
+
+// Step 1: every grain a body with its free velocities and implicit damping (a sleeping
+// grain: infinite mass and no velocity). largest_radius: the largest bounding radius R;
+// fastest: the largest |v_free| + |ω_free| R.
+struct BodyExtent {
+  double largest_radius = 0.0, fastest = 0.0;
+};
+BodyExtent add_free_bodies(GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                           const ShapeLibrary& library, double damping) {
+  const double h = problem.step.time_step;
+  const auto asleep = [&](int k) { return !problem.asleep.empty() && problem.asleep[k]; };
+  BodyExtent extent;
+  for (const GrainState& g : grains) {
+    const NscdBody b = asleep(static_cast<int>(problem.step.bodies.size())) ? NscdBody() : free_body(g, h, damping);
+    problem.step.bodies.push_back(b);
+    const double radius = library[g.shape].bounding_radius;
+    extent.largest_radius = std::max(extent.largest_radius, radius);
+    extent.fastest = std::max(extent.fastest, b.velocity_free.norm() + b.angular_velocity_free.norm() * radius);
+  }
+  return extent;
+}
+
+// Step 3: the points made in top-down order (descending z, ties in detection order: the
+// candidates' order, each one's points in the manifold's order), each written once in
+// its place (they are large records, not to be copied by a sort after), with their
+// rolling axes.
+struct DetectionOrder {
+  std::vector<std::pair<int, int>> detected;  // (candidate, point of its manifold), detection order
+  std::vector<size_t> place;                  // detection index → top-down index
+};
+DetectionOrder add_points_top_down(GrainStepProblem& problem, const std::vector<GrainState>& grains,
+                                   const std::vector<PlaneWall>& walls, const GrainStepOptions& options,
+                                   const DetectedContacts& contacts) {
+  const std::vector<NarrowPhaseCandidate>& candidates = contacts.candidates;
+  const std::vector<NarrowPhaseResult>& found = contacts.found;
+  DetectionOrder out;
+  std::vector<std::pair<int, int>>& detected = out.detected;
+  for (std::size_t i = 0; i < candidates.size(); i++)
+    for (std::size_t k = 0; k < found[i].points.size(); k++) detected.emplace_back(static_cast<int>(i), static_cast<int>(k));
+  const auto found_point = [&](std::size_t d) -> const ContactPoint& { return found[detected[d].first].points[detected[d].second]; };
+  const std::vector<size_t> order = top_down_order(detected.size(), [&](size_t d) { return found_point(d).position.z(); });
+  std::vector<size_t>& place = out.place;
+  place.resize(detected.size());
+  std::vector<GrainContactPoint>& points = problem.points;
+  points.reserve(detected.size());
+  for (size_t d : order) {
+    place[d] = points.size();
+    const NarrowPhaseCandidate& c = candidates[detected[d].first];
+    const ContactPoint& p = found_point(d);
+    if (c.wall >= 0)
+      points.push_back(make_point(grains, -1, c.b, p.position, p.normal, p.gap, walls[c.wall].friction,
+                                  walls[c.wall].velocity, -c.wall - 1, problem));
+    else
+      points.push_back(make_point(grains, c.a, c.b, p.position, p.normal, p.gap, options.friction,
+                                  Eigen::Vector3d::Zero(), grains[c.a].tag, problem));
+  }
+  if (!problem.sweep_radius.empty())  // each pair's points are consecutive in detection order
+    restrict_rolling(
+        detected.size(), [&](size_t d) { return points[place[d]].pair; }, [&](size_t d) { return points[place[d]].position; },
+        [&](size_t d) { return Eigen::Vector3d(points[place[d]].frame.col(0)); },
+        [&](size_t d) -> NscdContact& { return points[place[d]].constraint; });
+  return out;
+}
+
+// Step 4: warm start from the nearest stored point of the same pair within R_max / 4,
+// recalled in detection order (close to the memory's pair order)
+void recall_warm_start(GrainStepProblem& problem, const GrainImpulseMemory& memory, const DetectionOrder& order,
+                       double largest_radius) {
+  std::vector<GrainContactPoint>& points = problem.points;
+  problem.warm_start.assign(points.size(), Eigen::Vector3d::Zero());
+  if (!problem.sweep_radius.empty()) problem.couple_warm_start.assign(points.size(), Eigen::Vector2d::Zero());
+  const double near2 = std::pow(0.25 * largest_radius, 2);
+  for (size_t d = 0; d < order.detected.size(); d++) {
+    const size_t c = order.place[d];
+    if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
+      problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
+      if (!problem.couple_warm_start.empty())
+        problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace grain_step_detail
+
+using namespace grain_step_detail;
+
+GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
+                                     const std::vector<PlaneWall>& walls, double h, const GrainStepOptions& options,
+                                     const GrainImpulseMemory& memory, GrainPairCache* pairs,
+                                     const WorkShare* share) {
+  options.validate();
+  check_inputs(grains, library, walls, h);
+  const int n = static_cast<int>(grains.size());
+  GrainStepProblem problem;
+  problem.wall_count = static_cast<int>(walls.size());
+  problem.step.time_step = h;
+  problem.step.law = options.law;
+  if (options.rolling_friction > 0.0) {
+    problem.rolling_friction = options.rolling_friction;
+    problem.sweep_radius.resize(n);
+    for (int k = 0; k < n; k++) problem.sweep_radius[k] = library[grains[k].shape].shape.sweep_radius();
+  }
+  // 0. sleeping: who sleeps in this step
+  const bool sleep = options.sleep.on();
+  if (sleep) begin_sleeping_step(problem, grains, library, walls, options);
+  // 1. bodies
+  const BodyExtent extent = add_free_bodies(problem, grains, library, options.damping);
+  // 2. contact points of every pair whose gap may close within the step (grain_detection.h)
+  double wall_speed = 0.0;
+  for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
+  const double activation = options.margin + 2.0 * h * (2.0 * extent.fastest + wall_speed) + 1e-12;
+  const DetectedContacts contacts = detect_contacts(grains, library, walls, options, problem.asleep, activation,
+                                                    extent.largest_radius, pairs, share);
+  // 3. the points from the top down
+  const DetectionOrder order = add_points_top_down(problem, grains, walls, options, contacts);
+  // 4. warm start
+  if (options.warm_start) recall_warm_start(problem, memory, order, extent.largest_radius);
+  set_step_contacts(problem);
+  // the frozen points: last step's points of the pairs that sleep now
+  if (sleep) freeze_sleeping_pairs(problem, grains, walls, memory);
+  return problem;
+}
+
+}  // namespace wiregrain
