@@ -7,11 +7,13 @@
 
 #include "comm.h"
 #include "error.h"
-#include "fix_nve_gear.h"
+#include "fix.h"
 #include "lammps.h"
 #include "lmptype.h"
 #include "modify.h"
 #include "update.h"
+
+#include "point_mass_integrator.h"
 
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_time_step.h"
@@ -27,7 +29,7 @@ std::string prefix(const std::string &kind, const std::string &style, const std:
 bool gear5_integrates(LAMMPS_NS::LAMMPS *lmp) {
   bool gear = false;
   for (int k = 0; k < lmp->modify->nfix; k++)
-    if (LAMMPS_NS::FixNVEGear *g = dynamic_cast<LAMMPS_NS::FixNVEGear *>(lmp->modify->fix[k]))
+    if (const PointMassIntegrator *g = dynamic_cast<const PointMassIntegrator *>(lmp->modify->fix[k]))
       gear = gear || g->uses_gear();
   return gear;
 }

@@ -44,8 +44,9 @@ namespace wiregrain_lmp {
 constexpr double kLargeOverlapFraction = 0.5;  // of r_w
 constexpr int kMaxOverlapWarnings = 10;
 
-// true when a fix nve/gear with the gear5 scheme is defined (the wire is then integrated
-// by it: its limits are gear5's)
+// true when a fix that integrates point masses with the gear5 scheme is defined (fix
+// nve/gear, common/point_mass_integrator.h: the wire is then integrated by it, its limits
+// are gear5's)
 bool gear5_integrates(LAMMPS_NS::LAMMPS *lmp);
 
 // One contact a style can meet: the segment law's inputs (k_n = E* l π/4, k_t = E* r,

@@ -4,8 +4,9 @@
 #include <Eigen/Geometry>
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
-#include "atom_vec_wire.h"
+#include "atom_style_part.h"
+#include "bead_chain_links.h"
+#include "grain_shape_source.h"
 
 #include "core/column/observables.h"
 #include "core/geometry/shape_library.h"
@@ -14,7 +15,9 @@
 namespace wiregrain_lmp {
 
 GrainAtoms::GrainAtoms(LAMMPS_NS::Atom *atom)
-    : atom_(atom), polyhedra_(LAMMPS_NS::AtomVecPolyhedron::of(atom)), wire_(LAMMPS_NS::AtomVecWire::of(atom)) {}
+    : atom_(atom),
+      polyhedra_(atom_style_part<const GrainShapeSource>(atom)),
+      chains_(atom_style_part<const BeadChainLinks>(atom)) {}
 
 bool GrainAtoms::available(std::string &why) const {
   if (polyhedra_ || atom_->sphere_flag || atom_->superquadric_flag) return true;
@@ -25,7 +28,7 @@ bool GrainAtoms::available(std::string &why) const {
 
 bool GrainAtoms::is_grain(int i) const {
   if (polyhedra_) return atom_->shapetype[i] >= 0;
-  return !(wire_ && (wire_->wire_prev[i] || wire_->wire_next[i]));
+  return !(chains_ && (chains_->previous_bead_tag(i) || chains_->next_bead_tag(i)));
 }
 
 bool GrainAtoms::is_polyhedron(int i) const { return polyhedra_ && atom_->shapetype[i] >= 0; }

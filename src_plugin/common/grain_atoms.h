@@ -1,7 +1,8 @@
 // Which atoms are grains, for the column observables: the polyhedra of atom_style
 // polyhedron, or, in a system without it, the stock granular spheres (atom_style sphere or
 // granular) or superquadrics (atom_style superquadric) that are not wire beads (no chain
-// links). Not a style of its own.
+// links). Reads the atom styles through common/grain_shape_source.h and
+// common/bead_chain_links.h. Not a style of its own.
 #ifndef WIREGRAIN_GRAIN_ATOMS_H
 #define WIREGRAIN_GRAIN_ATOMS_H
 
@@ -9,11 +10,12 @@
 
 namespace LAMMPS_NS {
 class Atom;
-class AtomVecPolyhedron;
-class AtomVecWire;
 }  // namespace LAMMPS_NS
 
 namespace wiregrain_lmp {
+
+class BeadChainLinks;
+class GrainShapeSource;
 
 class GrainAtoms {
  public:
@@ -28,8 +30,8 @@ class GrainAtoms {
 
  private:
   LAMMPS_NS::Atom *atom_;
-  LAMMPS_NS::AtomVecPolyhedron *polyhedra_;
-  LAMMPS_NS::AtomVecWire *wire_;
+  const GrainShapeSource *polyhedra_;  // atom_style polyhedron, or nullptr
+  const BeadChainLinks *chains_;       // atom_style wire, or nullptr
 };
 
 }  // namespace wiregrain_lmp

@@ -29,6 +29,7 @@ AtomStyle(polyhedron,AtomVecPolyhedron)
 
 #include <memory>
 
+#include "common/grain_shape_source.h"
 #include "common/plugin_atom_vec.h"
 
 namespace wiregrain {
@@ -38,7 +39,7 @@ class ConvexShape;
 
 namespace LAMMPS_NS {
 
-class AtomVecPolyhedron : public PluginAtomVec {
+class AtomVecPolyhedron : public PluginAtomVec, public wiregrain_lmp::GrainShapeSource {
  public:
   AtomVecPolyhedron(class LAMMPS *);
   ~AtomVecPolyhedron();
@@ -48,7 +49,7 @@ class AtomVecPolyhedron : public PluginAtomVec {
   int data_atom_hybrid(int, char **);
   int data_vel_hybrid(int, char **);
 
-  // The shape library. add_shape must be called with the same shape on every rank.
+  // The shape library (GrainShapeSource). add_shape must be called with the same shape on every rank.
   const wiregrain::ShapeLibrary &shapes() const { return *library_; }
   int add_shape(const wiregrain::ConvexShape &shape, double body_to_input[4], double centroid[3]);
   // Replace the library (grain_shapes read); grains already defined keep their indices.

@@ -15,7 +15,6 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "fix_wire_wall.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
@@ -398,7 +397,7 @@ void FixNSCDPolyhedra::init() {
     if (ifix < 0)
       wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                  "wall_fix " + wall_fix_ids_[w] + ": no fix with this ID");
-    wall_fixes_[w] = dynamic_cast<FixWireWall *>(modify->fix[ifix]);
+    wall_fixes_[w] = dynamic_cast<const wiregrain_lmp::MovingPlaneWall *>(modify->fix[ifix]);
     if (!wall_fixes_[w])
       wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                  "wall_fix " + wall_fix_ids_[w] + ": fix style is " + modify->fix[ifix]->style +
@@ -579,7 +578,8 @@ wiregrain::WorkShare FixNSCDPolyhedra::rank_share() {
   return share;
 }
 
-// The walls defined by a fix wire/wall (wall_fix): its plane and velocity at this step.
+// The walls defined by a fix wire/wall (wall_fix, common/moving_plane_wall.h): its plane and
+// velocity at this step.
 void FixNSCDPolyhedra::sync_wall_fixes() {
   for (size_t w = 0; w < wall_fixes_.size(); w++) {
     if (!wall_fixes_[w]) continue;

@@ -77,6 +77,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #include <vector>
 
 #include "common/contact_publisher.h"
+#include "common/moving_plane_wall.h"
 #include "core/common/work_share.h"
 #include "fix.h"
 
@@ -136,7 +137,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   // the keywords of the fix's line and their handlers (common/plugin_args.h)
   static const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> keywords_;
   std::vector<std::string> wall_fix_ids_;   // per wall: the fix wire/wall it comes from ("" : own)
-  std::vector<class FixWireWall *> wall_fixes_;
+  std::vector<const wiregrain_lmp::MovingPlaneWall *> wall_fixes_;  // of a wall_fix (fix wire/wall)
   int every_ = 1;                           // solve every N steps with h = N dt
   bool every_given_ = false;
   double nscd_timestep_ = 0.0;              // keyword timestep (0: use every_)

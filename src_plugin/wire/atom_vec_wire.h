@@ -22,11 +22,12 @@ AtomStyle(wire,AtomVecWire)
 #ifndef LMP_ATOM_VEC_WIRE_H
 #define LMP_ATOM_VEC_WIRE_H
 
+#include "common/bead_chain_links.h"
 #include "common/plugin_atom_vec.h"
 
 namespace LAMMPS_NS {
 
-class AtomVecWire : public PluginAtomVec {
+class AtomVecWire : public PluginAtomVec, public wiregrain_lmp::BeadChainLinks {
  public:
   AtomVecWire(class LAMMPS *);
   ~AtomVecWire();
@@ -38,6 +39,9 @@ class AtomVecWire : public PluginAtomVec {
   int *wire_prev;       // tag of the previous bead, 0 at a free end
   int *wire_next;       // tag of the next bead, 0 at a free end
   double *wire_rest;    // rest length of the segment to the next bead
+  // BeadChainLinks: the links above
+  int previous_bead_tag(int i) const { return wire_prev[i]; }
+  int next_bead_tag(int i) const { return wire_next[i]; }
 
   // The springs and dashpots the contacts of this step put on each bead, owned and ghost
   // (common/bead_contact_load.h: kBeadContactLoadSize doubles per bead); not migrated, not in

@@ -24,11 +24,12 @@ FixStyle(nve/gear,FixNVEGear)
 #ifndef LMP_FIX_NVE_GEAR_H
 #define LMP_FIX_NVE_GEAR_H
 
+#include "common/point_mass_integrator.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
 
-class FixNVEGear : public Fix {
+class FixNVEGear : public Fix, public wiregrain_lmp::PointMassIntegrator {
  public:
   FixNVEGear(class LAMMPS *, int, char **);
   ~FixNVEGear();
@@ -43,7 +44,7 @@ class FixNVEGear : public Fix {
   int pack_reverse_comm(int, int, double *);
   void unpack_reverse_comm(int, int *, double *);
   double memory_usage();
-  bool uses_gear() const { return scheme_ == GEAR5; }
+  bool uses_gear() const { return scheme_ == GEAR5; }  // PointMassIntegrator
 
   void grow_arrays(int);
   void copy_arrays(int, int, int);

@@ -16,7 +16,7 @@
    (e.g. the column's side walls taken away).
 
    fix nscd/polyhedra ... wall_fix ID makes the same plane a wall of the grains: one
-   definition per container wall.
+   definition per container wall (read through common/moving_plane_wall.h).
 
    Checks (common/contact_checks.h): at each run start the timestep against the stability
    limit of the stiffest bead of the group (longest segment, thickest bead, stiffest
@@ -41,13 +41,14 @@ FixStyle(wire/wall,FixWireWall)
 
 #include "common/contact_checks.h"
 #include "common/contact_publisher.h"
+#include "common/moving_plane_wall.h"
 #include "core/contact/contact_materials.h"
 #include "fix.h"
 #include "common/plugin_material.h"
 
 namespace LAMMPS_NS {
 
-class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
+class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher, public wiregrain_lmp::MovingPlaneWall {
  public:
   FixWireWall(class LAMMPS *, int, char **);
   ~FixWireWall();
@@ -63,7 +64,7 @@ class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher {
   int modify_param(int, char **);
   // this rank's bead–wall contacts of the last force call
   const wiregrain::ContactList &published_contacts() const;
-  // the plane now (fix nscd/polyhedra's wall_fix uses it for the grains)
+  // MovingPlaneWall: the plane now (fix nscd/polyhedra's wall_fix uses it for the grains)
   void current_point(double p[3]) const;
   const double *normal() const { return normal_; }
   const double *velocity() const { return velocity_; }

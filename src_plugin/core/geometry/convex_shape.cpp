@@ -13,6 +13,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/constants.h"
+#include "core/common/random_stream.h"
 #include "core/common/validation.h"
 
 namespace wiregrain {
@@ -21,12 +22,6 @@ namespace {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-
-// Uniform double in [0, 1) from the top 53 bits of one engine output (platform-independent,
-// unlike std::uniform_real_distribution).
-double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
 
 }  // namespace
 
