@@ -42,7 +42,6 @@ using namespace FixConst;
 using wiregrain_lmp::vec3;
 
 namespace {
-// per grain in the all-gather: tag shape type x(3) q(4) v(3) ω(3) m radius
 // a grain as gathered: tag, shape, type, x (3), q (4), v (3), ω (3), mass, radius,
 // superquadric half-axes (3) and blockiness (2)
 constexpr int kGrainRecord = 23;

@@ -319,27 +319,30 @@ void PairWireContact::select_candidates() {
 }
 
 // Segment i (bead i to segment_next_[i]) as the neighbour list has it: ghosts are the
-// right periodic images, the end the next bead's image nearest to bead i. Velocities and
-// masses only when `motion` (a touching pair).
-wiregrain::WireSegmentState PairWireContact::segment_state(int i, bool motion) const {
+// right periodic images, the end the next bead's image nearest to bead i. Positions and
+// radius (what the geometry reads); add_motion adds the beads' velocities and masses for
+// a touching pair.
+inline wiregrain::WireSegmentState PairWireContact::segment_state(int i) const {
   wiregrain::WireSegmentState s;
   s.x0 = as_vector(atom->x[i]);
   s.x1 = as_vector(segment_end_[i]);
   s.radius = atom->radius[i];
-  if (motion) {
-    const int i1 = segment_next_[i];
-    s.v0 = as_vector(atom->v[i]);
-    s.v1 = as_vector(atom->v[i1]);
-    s.m0 = atom->rmass[i];
-    s.m1 = atom->rmass[i1];
-  }
   return s;
+}
+
+inline void PairWireContact::add_motion(int i, wiregrain::WireSegmentState &s) const {
+  const int i1 = segment_next_[i];
+  s.v0 = as_vector(atom->v[i]);
+  s.v1 = as_vector(atom->v[i1]);
+  s.m0 = atom->rmass[i];
+  s.m1 = atom->rmass[i1];
 }
 
 // The forces of contact c between segments a and b on their four beads, in the order b,
 // its next bead, a, its next bead; and the contact's springs on them for the beads'
 // time-step check (contact_time_step.h): four moving beads, weights summing to 2.
-void PairWireContact::scatter(int a, int b, const wiregrain::WireWireContact &c) {
+inline void PairWireContact::scatter(int a, int b, const wiregrain::SoftContactLaw &law,
+                                     const wiregrain::WireWireContact &c) {
   double **f = atom->f;
   const int a1 = segment_next_[a], b1 = segment_next_[b];
   add_force(f[b], c.force_b0);
@@ -348,7 +351,8 @@ void PairWireContact::scatter(int a, int b, const wiregrain::WireWireContact &c)
   add_force(f[a1], c.force_a1);
   if (!wire_->contact_load_wanted) return;
   const double s = c.closest.s, t = c.closest.t;
-  const wiregrain::ContactLoadEntries load = wiregrain::contact_load_entries(c.spring_dashpot, c.normal);
+  const wiregrain::ContactLoadEntries load =
+      wiregrain::contact_load_entries(wiregrain::contact_spring_dashpot(law, c.effective_mass), c.normal);
   const std::pair<int, double> loaded[4] = {{a, 1.0 - s}, {a1, s}, {b, 1.0 - t}, {b1, t}};
   for (const auto &[bead, weight] : loaded)
     wiregrain_lmp::add_bead_contact_load(wire_->contact_load[bead], 2.0 * weight, load);
@@ -385,16 +389,20 @@ void PairWireContact::compute(int eflag, int vflag) {
   // (stale pairs would crash a 10 000-bead coil with the default atom sorting;
   // bench/wire_scaling.py)
   if (!cache_ || setup || neighbor->ncalls != candidates_built_at_) select_candidates();
+  double **x = atom->x;
+  const double *radius = atom->radius;
   for (const auto &[a, b] : candidates_) {
-    wiregrain::WireSegmentState sa = segment_state(a, false), sb = segment_state(b, false);
     // bounding spheres of the two spherocylinders first (most pairs)
-    if (!wiregrain::segments_may_touch(sa.x0, sa.x1, sb.x0, sb.x1, sa.radius, sb.radius, 0.0)) continue;
+    if (!wiregrain::segments_may_touch(as_vector(x[a]), as_vector(segment_end_[a]), as_vector(x[b]),
+                                       as_vector(segment_end_[b]), radius[a], radius[b], 0.0))
+      continue;
     evaluations++;
-    wiregrain::WireWireContact c = wiregrain::wire_wire_geometry(sa, sb);
-    if (!c.touching) continue;
-    largest.consider(c.overlap, sa.radius, sb.radius, tag[a], tag[b]);
-    sa = segment_state(a, true);
-    sb = segment_state(b, true);
+    wiregrain::WireSegmentState sa = segment_state(a), sb = segment_state(b);
+    const wiregrain::WireWireGeometry g = wiregrain::wire_wire_geometry(sa, sb);
+    if (!g.touching) continue;
+    largest.consider(g.overlap, sa.radius, sb.radius, tag[a], tag[b]);
+    add_motion(a, sa);
+    add_motion(b, sb);
     // l_w and r_w: the means of the two segments'
     const wiregrain::SoftContactLaw law =
         wiregrain::segment_contact_law(effective_modulus_[type[a]][type[b]], 0.5 * (rest[a] + rest[b]),
@@ -404,9 +412,9 @@ void PairWireContact::compute(int eflag, int vflag) {
     // the setup force call of a run must not advance the springs (a restart would
     // otherwise count the step twice): evaluate on a copy, keep the history
     wiregrain::TangentialHistory advanced = h;
-    wiregrain::load_wire_wire_pair(law, sa, sb, setup ? 0.0 : dt, advanced, c);
+    const wiregrain::WireWireContact c = wiregrain::load_wire_wire_pair(law, sa, sb, setup ? 0.0 : dt, advanced, g);
     history_->store(a, tag[b], setup ? h : advanced);
-    scatter(a, b, c);
+    scatter(a, b, law, c);
     if (eflag) eng_vdwl += c.elastic_energy;
     contacts_->add(contact_record(tag[a], tag[b], c));
   }

@@ -50,6 +50,7 @@ PairStyle(wire/contact,PairWireContact)
 namespace wiregrain {
 struct WireSegmentState;
 struct WireWireContact;
+struct SoftContactLaw;
 }  // namespace wiregrain
 
 namespace LAMMPS_NS {
@@ -120,8 +121,9 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
   // the steps of compute()
   void find_segments();
   void select_candidates();
-  wiregrain::WireSegmentState segment_state(int i, bool motion) const;
-  void scatter(int a, int b, const wiregrain::WireWireContact &c);
+  wiregrain::WireSegmentState segment_state(int i) const;
+  void add_motion(int i, wiregrain::WireSegmentState &s) const;
+  void scatter(int a, int b, const wiregrain::SoftContactLaw &law, const wiregrain::WireWireContact &c);
   // reads the keywords from arg[first..narg) into c; `kind` names the command in errors
   void parse(int narg, char **arg, int first, Coefficients &c, const char *kind);
 };

@@ -94,8 +94,9 @@ TEST(WireWireContact, DampingSeesTheBeadVelocitiesAtTheContact) {
   expect_vector(c.force, {0.0, 0.0, 12.0}, "F");
   expect_vector(c.force_b0, {0.0, 0.0, 6.0}, "b0");
   expect_vector(c.force_a1, {0.0, 0.0, -9.0}, "a1");
-  EXPECT_NEAR(c.spring_dashpot.normal_stiffness, 200.0, kTol);
-  EXPECT_NEAR(c.spring_dashpot.normal_damping, 10.0, kTol);
+  const SpringDashpot springs = contact_spring_dashpot(law, c.effective_mass);
+  EXPECT_NEAR(springs.normal_stiffness, 200.0, kTol);
+  EXPECT_NEAR(springs.normal_damping, 10.0, kTol);
 }
 
 // Parallel segments, B above A by d = 0.15 and shifted by 0.4 along x: A = [0, 1], B's
