@@ -774,6 +774,16 @@ class Capstan(DeckTestCase):
         last = [arc[-1] + j * chord * t_out for j in range(1, self.LEG + 1)]
         return np.array(first + [np.array(p) for p in arc] + last), chord, t_in, t_out
 
+    def make_scene(self, grain, shape, sweep, polyline, chord):
+        """The grain (atom 1, group grains) at the pose `grain` and the wire (atoms 2...,
+        group wire) through `polyline`, as a data file; returns the run that wrote it."""
+        return scene([grain], [f"polyline wire.txt segment {chord!r} radius {self.WIRE_RADIUS}"], shape=shape,
+                     sweep=sweep, density=1e6, box=(-3, 3, -3, 3, -3, 3), files={"wire.txt": polyline})
+
+    def make_deck(self, body):
+        """The deck that reads the scene and runs `body` (which defines fix wg)."""
+        return deck("fix             nscd grains nscd/polyhedra\n" + body)
+
     def slip(self, grain, shape, sweep, centre, reach, wrap, k, start, mu, timestep=1e-3, scheme="verlet"):
         """Wrap the wire over `grain` (pose; its contact circle of radius `reach` about
         `centre` in the xz plane), raise T₂ and return the measured and the discrete T₂/T₁
@@ -790,14 +800,12 @@ class Capstan(DeckTestCase):
         # l_w from the last one, which round-off may put just beyond the polyline's end)
         beyond = np.vstack([points, points[-1] + 0.5 * chord * t_out])
         polyline = "\n".join(f"{x + centre[0]!r} 0.0 {z + centre[1]!r}" for x, z in beyond) + "\n"
-        made = scene([grain], [f"polyline wire.txt segment {chord!r} radius {r_w}"], shape=shape, sweep=sweep,
-                     density=1e6, box=(-3, 3, -3, 3, -3, 3), files={"wire.txt": polyline})
+        made = self.make_scene(grain, shape, sweep, polyline, chord)
         settle, ramp = 2.0, 20.0
         low, rise = 0.95 * nominal, 0.1 * nominal / ramp
         steps = [int(round(t / timestep)) for t in (settle, ramp, self.EVERY)]
         last = len(points) + 1
-        r = run(deck(f"""
-fix             nscd grains nscd/polyhedra
+        r = run(self.make_deck(f"""
 group           pulled1 id 2
 group           pulled2 id {last}
 group           legs id 2:{self.LEG + 1} {self.LEG + k + 2}:{last}
