@@ -749,7 +749,7 @@ class Capstan(DeckTestCase):
     tensions' ratio goes on rising after the onset, up to the next output); at 0.005 with
     output every 0.002 (these tests): −1.1e-6 to +4.4e-5; Gear-5 at Table 1's Δt_SP = 1e-4
     +3.8e-5 and Verlet at 5e-4 +6.5e-5 (output every 0.01). The tests' errors are below
-    4.5e-5 (each test's comment); held to 2e-4. Each case takes about 3 s."""
+    4.5e-5 (each test's comment); held to 2e-4. A case takes 5 to 7 s (1 to 4 s of loop time)."""
 
     WIRE_RADIUS = 0.02
     LEG = 10          # segments per straight leg
