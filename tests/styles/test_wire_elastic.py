@@ -68,18 +68,77 @@ def relax_run(deck, files, free_group, damping, dt, t_end, scheme="verlet"):
 fix int {free_group} nve/gear scheme {scheme}
 fix damp {free_group} viscous {damping!r}
 timestep {dt!r}
-dump d all custom {steps} dump.relax id x y z vx vy vz
-dump_modify d format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
+dump d all custom {steps} dump.relax id x y z vx vy vz fx fy
+dump_modify d format "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g"
 thermo {max(steps // 10, 1)}
 run {steps}
 """
     return run(text, files=files)
 
 
+def chain_forces(X, rest, k_s, kappa, load):
+    """Forces on the beads of a planar chain (X: N x 2), independently of the plugin: the
+    axial springs U = ½ k_s (|e| − rest)² of its segments e, the bends U = ½ κ θ² at its
+    inner beads (θ the signed angle from e_a = x_j − x_{j−1} to e_b = x_{j+1} − x_j,
+    θ = atan2(c, d), c = e_a × e_b, d = e_a · e_b: the law of docs/commands/fix_wire_elastic.md
+    in the plane), and the external `load` (N x 2). F = −∇U, with
+    ∂θ/∂e_a = (d (e_b,y, −e_b,x) − c e_b)/(c² + d²), ∂θ/∂e_b = (d (−e_a,y, e_a,x) − c e_a)/(c² + d²)."""
+    e = X[1:] - X[:-1]
+    length = np.hypot(e[:, 0], e[:, 1])
+    tension = (k_s * (length - rest) / length)[:, None] * e
+    F = np.array(load, dtype=float)
+    F[:-1] += tension
+    F[1:] -= tension
+    if np.any(kappa):
+        a, b = e[:-1], e[1:]
+        c = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+        d = a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1]
+        w = (kappa * np.arctan2(c, d) / (c * c + d * d))[:, None]
+        grad_a = w * (d[:, None] * np.stack([b[:, 1], -b[:, 0]], 1) - c[:, None] * b)   # ∂U/∂e_a
+        grad_b = w * (d[:, None] * np.stack([-a[:, 1], a[:, 0]], 1) - c[:, None] * a)   # ∂U/∂e_b
+        F[:-2] += grad_a
+        F[1:-1] -= grad_a - grad_b
+        F[2:] -= grad_b
+    return F
+
+
+def chain_equilibrium(X0, free, forces, reach):
+    """The static equilibrium of the beads `free` (boolean mask) of a planar chain from the
+    guess X0 (N x 2), the others held: Newton's method on forces(X) = 0, the Jacobian by
+    central differences (the force on a bead depends on the beads within `reach` of it only,
+    so beads 2 reach + 1 apart are perturbed together); stops when the step is below 1e-15
+    of the chain's size (round-off)."""
+    X = np.array(X0, dtype=float)
+    idx = np.flatnonzero(free)
+    n = len(idx)
+    size = np.max(np.abs(X))
+    h = 1e-7 * size
+    for _ in range(50):
+        F = forces(X)[idx].ravel()
+        J = np.zeros((2 * n, 2 * n))
+        for colour in range(2 * reach + 1):
+            together = np.arange(colour, n, 2 * reach + 1)
+            for axis in range(2):
+                D = np.zeros_like(X)
+                D[idx[together], axis] = h
+                dF = (forces(X + D)[idx] - forces(X - D)[idx]).ravel() / (2 * h)
+                for k in together:
+                    rows = slice(max(0, 2 * (k - reach)), min(2 * n, 2 * (k + reach + 1)))
+                    J[rows, 2 * k + axis] = dF[rows]
+        step = np.linalg.solve(J, -F)
+        X[idx] += step.reshape(n, 2)
+        if np.max(np.abs(step)) < 1e-15 * size:
+            return X
+    raise AssertionError("the chain's equilibrium did not converge")
+
+
 class Cantilever(DeckTestCase):
     # Tip load P on a cantilever of N free segments (two clamped beads set the root
-    # slope). Continuum: PL^3/3EI. Discrete chain: the moment P(L - x_j) at node j bends
-    # it by θ_j = M_j l/EI, so δ = P l^3/EI Σ k² = PL^3/3EI (1 + 3/(2N) + 1/(2N²)).
+    # slope). Continuum: PL^3/3EI. Discrete chain, small deflections: the moment P(L - x_j)
+    # at node j bends it by θ_j = M_j l/EI (U = ½ κ θ², κ = EI/l), so
+    # δ = P l^3/EI Σ k² = PL^3/3EI (1 + 3/(2N) + 1/(2N²)). Exactly: the chain's static
+    # equilibrium (chain_equilibrium), which the run reaches to 2.2e-11 of δ at N = 10 and
+    # 5e-13 at N = 20..80 (the damped relaxation's rest); held to 1e-10 (δ and every bead).
     E, r, rho, length = 1.0e4, 0.02, 1.0, 1.0
 
     def deflection(self, n):
@@ -110,17 +169,30 @@ fix load tip addforce 0.0 {-load!r} 0.0
         d = read_dump(res.path("dump.relax"))
         # at rest: residual motion below 1e-6 of the deflection per unit time 1/ω1
         self.assertLess(np.max(np.abs(d["vy"])), 1e-6 * 0.005 * L * omega1)
-        return -d["y"][-1], load * L ** 3 / (3 * EI)
+        # the chain's exact equilibrium (finite rotations and the stretch included): n bends
+        # at the beads 2..n+1 of κ = EI/l, springs k_s = EA/l, the two root beads held
+        tip = np.zeros((n + 2, 2))
+        tip[-1, 1] = -load
+        chain = chain_equilibrium(np.array(pos)[:, :2], np.arange(n + 2) >= 2,
+                                  lambda X: chain_forces(X, l, E * math.pi * r * r / l, np.full(n, EI / l), tip),
+                                  reach=2)
+        shape = np.max(np.hypot(d["x"] - chain[:, 0], d["y"] - chain[:, 1]))
+        return -d["y"][-1], load * L ** 3 / (3 * EI), -chain[-1, 1], shape
 
     def test_tip_deflection_converges_first_order(self):
         errors = {}
         for n in (10, 20, 40, 80):
-            delta, continuum = self.deflection(n)
+            delta, continuum, exact, shape = self.deflection(n)
             discrete = continuum * (1 + 1.5 / n + 0.5 / n ** 2)
             errors[n] = delta / continuum - 1
-            print(f"cantilever N={n}: tip deflection {delta:.6e}, PL^3/3EI {continuum:.6e}, "
-                  f"relative error {errors[n]:.4%} (discrete formula {discrete / continuum - 1:.4%})")
-            self.assertAlmostEqual(delta / discrete, 1.0, delta=2e-3)
+            print(f"cantilever N={n}: tip deflection {delta:.10e}, the chain's equilibrium {exact:.10e} "
+                  f"({delta / exact - 1:+.2e}; bead positions off it by {shape / exact:.1e} of the deflection), "
+                  f"the small-deflection formula {discrete:.10e} ({exact / discrete - 1:+.2e} from it), "
+                  f"PL^3/3EI {continuum:.6e} (relative error {errors[n]:.4%})")
+            self.assertAlmostEqual(delta / exact, 1.0, delta=1e-10)
+            self.assertLess(shape / exact, 1e-10)
+            # the finite rotations (tip slope 0.0075) take −2.6e-5 to −3.1e-5 off the linear answer
+            self.assertAlmostEqual(exact / discrete, 1.0, delta=5e-5)
         orders = [math.log2(errors[n] / errors[2 * n]) for n in (10, 20, 40)]
         print("observed orders", ", ".join(f"{o:.3f}" for o in orders))
         for o in orders:
@@ -237,8 +309,12 @@ run {int(round(t_end / dt))}
 
 class Catenary(DeckTestCase):
     # A flexible (m_rot = 0), nearly inextensible chain hanging between two fixed points
-    # at distance S comes to rest with the sag of the catenary of its length L:
-    # L = 2a sinh(S/2a), sag = a (cosh(S/2a) - 1).
+    # at distance S comes to rest with about the sag of the catenary of its length L:
+    # L = 2a sinh(S/2a), sag = a (cosh(S/2a) - 1); exactly, in the static equilibrium of its
+    # 23 free beads on their springs (chain_equilibrium), 1.29e-3 lower. The run reaches that
+    # equilibrium to 2.1e-12 of the sag (every bead) and the pulls on the held ends to
+    # 6.5e-11 of the largest (the damped relaxation's rest, e^-25 after 25 time units);
+    # held to 1e-11 and 3e-10. The vertical pulls add up to the free beads' weight.
     def test_sag(self):
         E, rho, r, l = 1.0e4, 1.0, 0.05, 0.1
         arm, span = 12, 2.0
@@ -270,10 +346,35 @@ fix g free gravity 1.0 vector 0 -1 0
         self.assertRanCleanly(res)
         d = read_dump(res.path("dump.relax"))
         measured = -np.min(d["y"])
-        print(f"catenary sag {measured:.6f}, continuous catenary {sag:.6f}, "
-              f"error {measured / sag - 1:.3e}")
+        # the chain's own equilibrium: 23 free beads of weight m g on springs k_s = EA/l,
+        # from the continuous catenary stretched a little (a guess with tension)
+        n = 2 * arm
+        s = np.linspace(-arm * l, arm * l, n + 1)
+        x = a * np.arcsinh(s / a)
+        guess = np.stack([x, a * np.cosh(x / a) - a * math.cosh(span / (2 * a))], 1)
+        guess[[0, -1]] = [(-span / 2, 0.0), (span / 2, 0.0)]
+        weight = np.zeros((n + 1, 2))
+        weight[1:-1, 1] = -mass * 1.0
+        k_s = E * math.pi * r * r / l
+        chain = chain_equilibrium(guess, np.arange(n + 1) % n != 0,
+                                  lambda X: chain_forces(X, l, k_s, np.zeros(n - 1), weight), reach=1)
+        pull = chain_forces(chain, l, k_s, np.zeros(n - 1), np.zeros((n + 1, 2)))[[0, -1]]
+        sag_chain = -np.min(chain[:, 1])
+        shape = np.max(np.hypot(d["x"] - chain[:, 0], d["y"] - chain[:, 1]))
+        ends = np.stack([d["fx"][[0, -1]], d["fy"][[0, -1]]], 1)
+        print(f"catenary sag {measured:.12f}, the chain's equilibrium {sag_chain:.12f} ({measured / sag_chain - 1:+.2e}; "
+              f"bead positions off it by {shape / sag_chain:.1e} of the sag), continuous catenary {sag:.12f} "
+              f"(the chain's off it by {sag_chain / sag - 1:+.2e}); pull on the ends {ends.tolist()}, the chain's "
+              f"{pull.tolist()} (largest difference {np.max(np.abs(ends - pull)) / np.max(np.abs(pull)):.1e}), "
+              f"their vertical sum over the weight {ends[:, 1].sum() / np.sum(weight[:, 1]) - 1:+.1e} + 1")
         self.assertLess(np.max(np.abs(d["vy"])), 1e-8)
-        self.assertAlmostEqual(measured / sag, 1.0, delta=0.01)
+        self.assertAlmostEqual(measured / sag_chain, 1.0, delta=1e-11)
+        self.assertLess(shape / sag_chain, 1e-11)
+        np.testing.assert_allclose(ends, pull, rtol=0, atol=3e-10 * np.max(np.abs(pull)))
+        # the ends carry the weight of the free beads (the balance of the whole chain)
+        self.assertAlmostEqual(ends[:, 1].sum() / np.sum(weight[:, 1]), 1.0, delta=3e-10)
+        # the discrete, slightly stretched chain hangs 1.29e-3 lower than the continuous catenary
+        self.assertAlmostEqual(sag_chain / sag, 1.0, delta=2e-3)
 
 
 class EnergyConservation(DeckTestCase):

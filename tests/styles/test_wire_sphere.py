@@ -141,9 +141,10 @@ class CapstanOverStockSphere(polyhedra.Capstan):
     nothing integrates (fixed), radius 1, touched by the closed-form sphere contact."""
 
     test_quarter_turn = None  # the half turn is enough here
+    test_over_a_cube_edge = None
 
-    def make_scene(self, polyline, chord):
-        return sphere_scene([(0.0, 0.0, 0.0, self.RADIUS, 1.0)],
+    def make_scene(self, grain, shape, sweep, polyline, chord):
+        return sphere_scene([(0.0, 0.0, 0.0, 1.0, 1.0)],
                             [f"polyline wire.txt segment {chord!r} radius {self.WIRE_RADIUS}"],
                             box=(-3, 3, -3, 3, -3, 3), files={"wire.txt": polyline})
 
