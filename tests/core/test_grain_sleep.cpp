@@ -346,3 +346,46 @@ TEST(GrainSleep, BadOptionsAreRejected) {
   options.sleep.time = NAN;
   EXPECT_THROW(options.validate(), InvalidArgument);
 }
+
+// The stack of four cubes of StackWakesUnderADroppedCubeAndCarriesTheNewWeights across the
+// periodic face x = 10 of a box [0, 10) periodic along x: the cubes stand 0.35, 0.25 and
+// 0.15 off each other's axes, alternately on both sides of the face (the frozen points of a
+// pair lie by its lower cube, a period away from the other's centre). It falls asleep, the
+// fourth cube lands on it, and everything is what the same stack does in the middle of the
+// box (x − 5): nothing wakes, the same loads at every interface (statics, k m g) and the
+// same impact on the floor, to rounding.
+TEST(GrainSleep, StackAcrossAPeriodicFaceSleepsAsInTheMiddle) {
+  const ShapeLibrary library = cube_library();
+  PeriodicBox box;
+  box.lo = Eigen::Vector3d(0, -5, -5);
+  box.hi = Eigen::Vector3d(10, 5, 20);
+  box.periodic = {true, false, false};
+  GrainStepOptions options = options_sleeping(1e-3);
+  options.box = box;
+  const double across[4] = {9.8, 0.15, 9.9, 0.05};  // images 9.8, 10.15, 9.9, 10.05
+  Scene scenes[2];
+  for (int side = 0; side < 2; side++) {
+    Scene& scene = scenes[side];
+    const double shift = side == 0 ? 0.0 : -5.0;
+    for (int k = 0; k < 3; k++) scene.grains.push_back(cube(k + 1, across[k] + (k % 2 && side ? 10.0 : 0.0) + shift, 0.5 + k));
+    scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
+    scene.run(library, options, 60);
+    ASSERT_EQ(scene.last.stats.sleeping, 3) << side;
+    scene.grains.push_back(cube(4, across[3] + (side ? 10.0 : 0.0) + shift, 3.7));
+    scene.largest_wall_force = 0.0;
+    scene.run(library, options, 1000);
+    ASSERT_EQ(scene.last.stats.sleeping, 4) << side;
+    EXPECT_EQ(scene.woken, 0) << side;
+  }
+  const double w = kMass * kG;
+  for (int k = 1; k <= 3; k++)
+    EXPECT_NEAR(scenes[0].load(k, k + 1), (4 - k) * w, 1e-9 * w) << k;
+  EXPECT_NEAR(scenes[0].load(-1, 1), 4 * w, 4e-9 * w);
+  EXPECT_GT(scenes[0].largest_wall_force, 10 * 4 * w);  // the impact
+  EXPECT_NEAR(scenes[0].largest_wall_force, scenes[1].largest_wall_force, 1e-12 * scenes[1].largest_wall_force);
+  for (int k = 0; k < 4; k++)
+    EXPECT_NEAR(box.minimum_image(scenes[0].grains[k].position - scenes[1].grains[k].position - Eigen::Vector3d(5, 0, 0))
+                    .norm(), 0.0, 1e-12) << k;
+  // the loads to the equilibrium checks' tolerance (1e-12): measured 4.4e-10 = 2.2e-11 w apart
+  for (int k = 1; k <= 3; k++) EXPECT_NEAR(scenes[0].load(k, k + 1), scenes[1].load(k, k + 1), 1e-10 * w) << k;
+}
