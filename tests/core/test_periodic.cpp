@@ -101,17 +101,22 @@ TEST(PeriodicBox, BroadPhaseFindsPairsOfPointsOutsideThePeriodicBox) {
   grid.insert(Vector3d(1.0, 0, 0));   // 0.8 from it
   grid.insert(Vector3d(-0.3, 0, 0));  // image at 9.7: 0.5 from the first
   grid.insert(Vector3d(5.0, 0, 0));   // far from all
+  grid.insert(Vector3d(12.6, 0, 0));  // image at 2.6, in the second cell (not the last)
+  grid.insert(Vector3d(3.0, 0, 0));   // 0.4 from it
   for (int indexed = 0; indexed < 2; indexed++) {
     if (indexed) grid.index();
     std::vector<BroadPhaseGrid::Pair> pairs = grid.candidate_pairs(1.0);
-    ASSERT_EQ(pairs.size(), 2u) << indexed;  // (0, 1) and (0, 2); (1, 2) are 1.3 apart
-    std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.j < b.j; });
+    ASSERT_EQ(pairs.size(), 3u) << indexed;  // (0, 1), (0, 2) and (4, 5); (1, 2) are 1.3 apart
+    std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
     EXPECT_EQ(pairs[0].i, 0);
     EXPECT_EQ(pairs[1].i, 0);
     EXPECT_EQ(pairs[0].j, 1);
     EXPECT_EQ(pairs[0].shift, Vector3d(kL, 0, 0));
     EXPECT_EQ(pairs[1].j, 2);
     EXPECT_EQ(pairs[1].shift, Vector3d(kL, 0, 0));
+    EXPECT_EQ(pairs[2].i, 4);
+    EXPECT_EQ(pairs[2].j, 5);
+    EXPECT_EQ(pairs[2].shift, Vector3d(kL, 0, 0));
   }
 }
 

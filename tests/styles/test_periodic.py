@@ -36,28 +36,31 @@ def periodic_difference(a, b, length):
 
 
 class Collision(DeckTestCase):
-    # Two unit cubes (m = 1) collide with restitution 0.5 and friction 0.5: cube 1 at
-    # x = 4.7 moving at vx = 2 crosses the periodic face x = 5 (and wraps to the other side of the box)
-    # and meets cube 2, which sits at x = -3.9 (its image at 6.1), 0.4 apart, offset in y
-    # and z so that friction turns them. The same scene shifted by -5 along x collides in
-    # the middle of the box, where no minimum image is involved: the velocities after the
-    # collision must be equal to round-off and the positions a period apart. Measured:
-    # velocities 3.3e-14, positions 4.8e-14 (the images differ in the last bits, amplified
-    # by the solve); tolerance 2e-13.
+    # Two unit cubes (m = 1) collide with restitution 0.5 and friction 0.5 across the
+    # periodic face x = 5 of a 10-long box: cube 1 at x = 4.75 moving at vx = 2 meets cube 2,
+    # which sits at x = -4.15 (its image at 5.85, 0.1 apart), offset in y and z so that
+    # friction turns them; they touch with their centres on both sides of the face, so the
+    # contact exists in the minimum image only, and cube 1 crosses the face (wraps) after
+    # the collision. The same scene shifted by -5 along x collides in the middle of the box,
+    # where no minimum image is involved: the velocities after the collision must be equal
+    # to round-off and the positions a period apart. Measured: velocities 2.3e-15 (tolerance
+    # 1e-14), positions 1.4e-13: the position updates x += h v round at the scale of |x|,
+    # ~5 on one side and ~0.3 on the other, 400 steps × ulp(5) = 3.6e-13 at most (tolerance
+    # 1e-12).
     BODY = """
 set             atom 1 vx 2.0 vy 0.3
 set             atom 2 vx -0.2 vz 0.1
 fix             nscd all nscd/polyhedra restitution 0.5 friction 0.5 tolerance 1e-13 max_iterations 100000
 timestep        1e-3
 thermo_style    custom step f_nscd[3]
-thermo          10
+thermo          1
 dump            d all custom 400 dump.c id x y z ix vx vy vz omegax omegay omegaz
 run             400
 """
 
     def collide(self, shift):
-        made = grains_data("cube 1.0", [(4.7 + shift, 0.3, 0.0, 1, 0, 0, 0), (-3.9 + shift + (10 if shift else 0), 0.0, 0.2,
-                                                                                   1, 0, 0, 0)],
+        made = grains_data("cube 1.0", [(4.75 + shift, 0.3, 0.0, 1, 0, 0, 0),
+                                        (-4.15 + shift + (10 if shift else 0), 0.0, 0.2, 1, 0, 0, 0)],
                            box=(-5, 5, -3, 3, -3, 3))
         self.assertRanCleanly(made)
         r = run(full_precision(deck(self.BODY, "p f f"), "d"), workdir=made.workdir)
@@ -77,8 +80,8 @@ run             400
               f"{np.hypot(face['omegax'][0], face['omegaz'][0]):.4f}")
         self.assertLess(abs(face["vx"][0] - 2.0), 1.9)   # it collided
         self.assertGreater(abs(face["vx"][0] - 2.0), 0.5)
-        self.assertLess(velocities, 2e-13)
-        self.assertLess(positions, 2e-13)
+        self.assertLess(velocities, 1e-14)
+        self.assertLess(positions, 1e-12)
 
 
 class CornerStack(DeckTestCase):
