@@ -391,7 +391,7 @@ void FixWireGrain::hold_grains() {
       g.superquadric.n2 = r[22];
     }
   }
-  wiregrain::GrainBox box;
+  wiregrain::PeriodicBox box;
   box.lo = vec3(domain->boxlo);
   box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;

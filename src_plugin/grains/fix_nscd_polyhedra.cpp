@@ -383,12 +383,6 @@ void FixNSCDPolyhedra::init() {
   if (atom->map_style == 0)
     wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                "needs an atom map (atom_modify map array or hash before the box is defined)");
-  // detection works on the grains' coordinates as they are, without minimum image
-  for (int d = 0; d < 3; d++)
-    if (domain->periodicity[d])
-      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
-                                 std::string("periodic boundaries are not supported (boundary p along ") + "xyz"[d] +
-                                     "): contacts across them would not be found; use boundary f or m");
   core_->walls_take_grain_friction();
   wall_fixes_.assign(wall_fix_ids_.size(), NULL);
   for (size_t w = 0; w < wall_fix_ids_.size(); w++) {
@@ -420,6 +414,56 @@ void FixNSCDPolyhedra::init() {
   if (missing)
     wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                std::to_string(missing) + " grains have no shape (made by create_atoms? use create_grains)");
+  check_periodic_box();
+}
+
+// The simulation box for the core (core/geometry/periodic_box.h): its bounds and which
+// dimensions are periodic.
+wiregrain::PeriodicBox FixNSCDPolyhedra::periodic_box() const {
+  wiregrain::PeriodicBox box;
+  box.lo = vec3(domain->boxlo);
+  box.hi = vec3(domain->boxhi);
+  for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
+  return box;
+}
+
+// Periodic boundaries: every grain pair is taken in its minimum image, which must be the
+// only image that can touch: each periodic length at least twice the pair reach,
+// L >= 2 (2 R_max + skin + margin) (R_max the largest bounding radius of the group's
+// grains; the core checks it again at every step with the activation distance, which
+// grows with the grains' speeds), and the walls parallel to the periodic dimensions.
+void FixNSCDPolyhedra::check_periodic_box() {
+  const wiregrain::PeriodicBox box = periodic_box();
+  if (!box.any()) return;
+  if (domain->triclinic)
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                               "periodic boundaries need an orthogonal box (triclinic boxes are not supported)");
+  for (size_t w = 0; w < core_->walls.size(); w++) {
+    const Eigen::Vector3d normal = wall_fixes_[w] ? vec3(wall_fixes_[w]->normal()) : core_->walls[w].normal;
+    for (int d = 0; d < 3; d++)
+      if (box.periodic[d] && normal[d] != 0.0)
+        wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                                   "wall " + std::to_string(w + 1) + " is not parallel to the periodic dimension " +
+                                       "xyz"[d] + " (its normal has a component along " + "xyz"[d] +
+                                       "): a wall must not cut a periodic dimension");
+  }
+  double local = 0.0, largest = 0.0;
+  const wiregrain::ShapeLibrary &shapes = grains_->shapes();
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0 && atom->shapetype[i] < shapes.size())
+      local = std::max(local, shapes[atom->shapetype[i]].bounding_radius);
+  MPI_Allreduce(&local, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double skin = core_->pairs ? core_->pair_skin : 0.0, margin = core_->options.margin;
+  const double reach = 2.0 * largest + skin + margin;
+  for (int d = 0; d < 3; d++)
+    if (box.periodic[d] && !(box.length(d) >= 2.0 * reach))
+      wiregrain_lmp::style_error(
+          error, "fix", "nscd/polyhedra", id,
+          std::string("the periodic box is ") + wiregrain::format_number(box.length(d)) + " long along " + "xyz"[d] +
+              ", below 2 x the pair reach (2 x the largest bounding radius " + wiregrain::format_number(largest) +
+              " + skin " + wiregrain::format_number(skin) + " + margin " + wiregrain::format_number(margin) +
+              ") = " + wiregrain::format_number(2.0 * reach) +
+              ": a grain could touch two images of another; enlarge the box along " + "xyz"[d]);
 }
 
 int FixNSCDPolyhedra::solve_interval() const {
@@ -497,6 +541,10 @@ void FixNSCDPolyhedra::initial_integrate(int /*vflag*/) {
         {vec3(x[i]), Eigen::Quaterniond(quat[i][0], quat[i][1], quat[i][2], quat[i][3])}, vec3(atom->inertia[i]),
         vec3(start), vec3(atom->v[i]), vec3(start + 3), vec3(atom->angmom[i]), h, core_->options.law.theta);
     for (int d = 0; d < 3; d++) x[i][d] = pose.position[d];
+    // back into the box along periodic dimensions, with the image flags (LIGGGHTS' own
+    // rule, that of its reneighbouring): every position the fix writes lies in the box, so
+    // a grain wraps at the step it crosses, whatever the ranks and restarts
+    domain->remap(x[i], atom->image[i]);
     quat[i][0] = pose.orientation.w();
     quat[i][1] = pose.orientation.x();
     quat[i][2] = pose.orientation.y();
@@ -526,6 +574,7 @@ void FixNSCDPolyhedra::solve_step() {
   solved_once_ = true;
   sync_wall_fixes();
   const double h = (summed_steps_ > 0 ? summed_steps_ : solve_interval()) * update->dt;
+  core_->options.box = periodic_box();
   const double start = MPI_Wtime();
   const std::vector<wiregrain::GrainState> grains = gather_grains();
   check_lost_grains((bigint)grains.size());
@@ -766,6 +815,7 @@ void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState>
     const int i = atom->map(grains[k].tag);
     if (i < 0 || i >= atom->nlocal) continue;
     for (int d = 0; d < 3; d++) x[i][d] += corrections[k][d];
+    domain->remap(x[i], atom->image[i]);  // as after the move (initial_integrate)
   }
   projections_ += stats.projections;
   projected_depth_ = stats.max_overlap_before;

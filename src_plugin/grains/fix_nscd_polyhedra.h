@@ -46,6 +46,15 @@
    computes the contact points of a block of the candidate pairs and the blocks are
    all-gathered, the same points to the bit; detection replicated: every rank computes all.
 
+   Periodic boundaries (boundary p, orthogonal box): every grain pair is taken in its
+   minimum image (core/geometry/periodic_box.h); the walls must be parallel to the
+   periodic dimensions, each periodic length at least 2 (2 R_max + skin + margin), R_max
+   the largest bounding radius (checked at each run start; the core checks the reach with
+   the step's activation distance at every step), so that only the nearest image of a
+   partner can touch. The grains the fix moves are put back into the box at once with
+   their image flags (Domain::remap), so a grain wraps at the step it crosses on any
+   number of ranks and across restarts.
+
    Outputs: vector [sweeps, residual, contact points, largest overlap at the step start,
    largest predicted penetration, steps that hit the iteration cap, then for each wall
    the force the grains exert on it (x, y, z), then the wall-clock seconds of the last
@@ -88,6 +97,7 @@ class KeywordTable;
 
 namespace wiregrain {
 struct GrainState;
+struct PeriodicBox;
 struct GrainStepResult;
 struct GrainStepProblem;
 struct NscdStep;
@@ -175,6 +185,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::string problem_file_;                // its file name, '*' replaced by the step
 
   void solve_step();
+  wiregrain::PeriodicBox periodic_box() const;
+  void check_periodic_box();
   void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
@@ -345,4 +346,54 @@ TEST(GrainSleep, BadOptionsAreRejected) {
   EXPECT_THROW(options.validate(), InvalidArgument);
   options.sleep.time = NAN;
   EXPECT_THROW(options.validate(), InvalidArgument);
+}
+
+// The stack of four cubes of StackWakesUnderADroppedCubeAndCarriesTheNewWeights across the
+// periodic face x = 10 of a box [0, 10) periodic along x: the cubes stand 0.35, 0.25 and
+// 0.15 off each other's axes, alternately on both sides of the face, the stack's tags (and
+// grain order) from the top down, so that the points of a pair lie by its upper cube, a
+// period away from the lower one's centre, and a sleeper's loads from above and its
+// supports both need the minimum image. It falls asleep, the fourth cube lands on it, and
+// everything is what the same stack does in the middle of the box (x − 5): nothing wakes,
+// the same loads at every interface (statics, k m g) and the same impact on the floor, to
+// rounding.
+TEST(GrainSleep, StackAcrossAPeriodicFaceSleepsAsInTheMiddle) {
+  const ShapeLibrary library = cube_library();
+  PeriodicBox box;
+  box.lo = Eigen::Vector3d(0, -5, -5);
+  box.hi = Eigen::Vector3d(10, 5, 20);
+  box.periodic = {true, false, false};
+  GrainStepOptions options = options_sleeping(1e-3);
+  options.box = box;
+  const double across[4] = {9.8, 0.15, 9.9, 0.05};  // images 9.8, 10.15, 9.9, 10.05
+  Scene scenes[2];
+  for (int side = 0; side < 2; side++) {
+    Scene& scene = scenes[side];
+    const double shift = side == 0 ? 0.0 : -5.0;
+    for (int k = 2; k >= 0; k--)  // tags 1, 2, 3 from the top down
+      scene.grains.push_back(cube(3 - k, across[k] + (k % 2 && side ? 10.0 : 0.0) + shift, 0.5 + k));
+    scene.walls.push_back(wall(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.5));
+    scene.run(library, options, 60);
+    ASSERT_EQ(scene.last.stats.sleeping, 3) << side;
+    scene.grains.push_back(cube(4, across[3] + (side ? 10.0 : 0.0) + shift, 3.7));
+    scene.largest_wall_force = 0.0;
+    scene.run(library, options, 1000);
+    ASSERT_EQ(scene.last.stats.sleeping, 4) << side;
+    EXPECT_EQ(scene.woken, 0) << side;
+  }
+  const double w = kMass * kG;
+  // the force on b of each pair (a, b): the dropped cube 4 on the top cube 1 carries w, cube
+  // 2 carries 1 and 4 (2 w down), cube 3 1, 2 and 4 (3 w down), the floor all four
+  EXPECT_NEAR(scenes[0].load(1, 4), w, 1e-9 * w);
+  EXPECT_NEAR(scenes[0].load(1, 2), -2 * w, 2e-9 * w);
+  EXPECT_NEAR(scenes[0].load(2, 3), -3 * w, 3e-9 * w);
+  EXPECT_NEAR(scenes[0].load(-1, 3), 4 * w, 4e-9 * w);
+  EXPECT_GT(scenes[0].largest_wall_force, 10 * 4 * w);  // the impact
+  EXPECT_NEAR(scenes[0].largest_wall_force, scenes[1].largest_wall_force, 1e-12 * scenes[1].largest_wall_force);
+  for (int k = 0; k < 4; k++)
+    EXPECT_NEAR(box.minimum_image(scenes[0].grains[k].position - scenes[1].grains[k].position - Eigen::Vector3d(5, 0, 0))
+                    .norm(), 0.0, 1e-12) << k;
+  // the loads to the equilibrium checks' tolerance (1e-12): measured 4.4e-10 = 2.2e-11 w apart
+  for (const auto& [a, b] : {std::pair<long, long>{1, 4}, {1, 2}, {2, 3}, {-1, 3}})
+    EXPECT_NEAR(scenes[0].load(a, b), scenes[1].load(a, b), 1e-10 * w) << a << " " << b;
 }

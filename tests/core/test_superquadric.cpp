@@ -464,7 +464,7 @@ TEST(WireOnSuperquadric, HeldAmongOtherGrains) {
   sphere.sphere_radius = 0.4;
   sphere.position = Vector3d(3.0, 0.0, 0.0);
   sphere.motion.mass = 1.0;
-  const HeldGrains held({g, sphere}, library, GrainBox(), 1.0);
+  const HeldGrains held({g, sphere}, library, PeriodicBox(), 1.0);
   const int k = held.index_of(4);
   ASSERT_GE(k, 0);
   EXPECT_NEAR(held.bounding_radius(k), std::sqrt(0.25 + 0.35 * 0.35 + 0.64), 1e-15);
@@ -489,7 +489,7 @@ TEST(WireOnSuperquadric, HeldAmongOtherGrains) {
   EXPECT_EQ(visited, 1);
   g.superquadric.n2 = 1.0;
   try {
-    HeldGrains bad({g}, library, GrainBox(), 1.0);
+    HeldGrains bad({g}, library, PeriodicBox(), 1.0);
     FAIL();
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.argument(), "blockiness");

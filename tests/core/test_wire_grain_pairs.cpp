@@ -100,7 +100,7 @@ class PairCache : public ::testing::Test {
       segments.push_back(seg);
     }
   }
-  HeldGrains hold() const { return HeldGrains(grains, library, GrainBox(), 1.0); }
+  HeldGrains hold() const { return HeldGrains(grains, library, PeriodicBox(), 1.0); }
   std::mt19937_64 rng;
   ShapeLibrary library;
   std::vector<HeldGrain> grains;

@@ -958,12 +958,6 @@ class BadInput(DeckTestCase):
         self.check("\nfix_modify nscd subspace_closing 2", "fix_modify nscd/polyhedra (id nscd): value of 'subspace_closing' must be in [0, 1], got 2")
         self.check("wall 0 0 0 0 0 0", "fix nscd/polyhedra (id nscd): wall 1: the normal (nx ny nz) must not be zero")
         self.check("\nfix twice all nve/polyhedron", "fix nscd/polyhedra (id nscd): 1 grains are also integrated by fix twice")
-        made = grains_data("cube 1.0", [(0, 0, 0.5, 1, 0, 0, 0)])
-        periodic = deck("fix nscd all nscd/polyhedra wall 0 0 0 0 0 1\nrun 1").replace("boundary        f f f",
-                                                                                        "boundary        f p f")
-        self.assertStopsWith(run(periodic, workdir=made.workdir),
-                             "fix nscd/polyhedra (id nscd): periodic boundaries are not supported (boundary p along y): "
-                             "contacts across them would not be found; use boundary f or m")
         wire = """
 units lj
 atom_style wire

@@ -186,7 +186,7 @@ def full_precision(text, dump_id):
         words = line.split()
         if words[:2] == ["dump", dump_id] and words[3] == "custom":
             columns = words[6:]
-            fmt = " ".join("%d" if c in ("id", "type") else "%.17g" for c in columns)
+            fmt = " ".join("%d" if c in ("id", "type", "ix", "iy", "iz") else "%.17g" for c in columns)
             lines.insert(k + 1, f'dump_modify {dump_id} format "{fmt}"')
             return "\n".join(lines) + "\n"
     raise AssertionError(f"no custom dump {dump_id!r} in the deck")

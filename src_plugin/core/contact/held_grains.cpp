@@ -10,9 +10,9 @@
 
 namespace wiregrain {
 
-HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
+HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const PeriodicBox& box,
                        double segment_reach)
-    : grains_(std::move(grains)), library_(&library), segment_reach_(segment_reach),
+    : grains_(std::move(grains)), library_(&library), segment_reach_(segment_reach), box_(box),
       grid_(BroadPhaseGrid::unbounded(1.0)) {
   {  // in tag order
     const std::vector<std::size_t> order = stable_order(grains_.size(), [&](std::size_t k) { return grains_[k].tag; });
@@ -50,11 +50,12 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
     index_of_tag_[g.tag] = static_cast<int>(k);
   }
   const double cell = largest + segment_reach;
+  box.validate();
   for (int d = 0; d < 3; ++d)
-    if (box.periodic[d] && 2.0 * cell > box.hi[d] - box.lo[d])
-      throw InvalidArgument("box", "periodic box length " + format_number(box.hi[d] - box.lo[d]) + " in dimension " +
-                                       std::to_string(d) + " is below twice the wire–grain reach " +
-                                       format_number(cell));
+    if (box.periodic[d] && 2.0 * cell > box.length(d))
+      throw InvalidArgument("box", std::string("the periodic box is ") + format_number(box.length(d)) + " long along " +
+                                       "xyz"[d] + ", below twice the wire-grain reach " + format_number(cell) +
+                                       " (the largest bounding radius + half the longest segment + the wire radius + the skin)");
   grid_ = box.periodic[0] || box.periodic[1] || box.periodic[2]
               ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell)
               : BroadPhaseGrid::unbounded(cell);

@@ -32,6 +32,7 @@
 #include "core/contact/wire_grain_contact.h"
 #include "core/geometry/broad_phase.h"
 #include "core/geometry/gjk.h"
+#include "core/geometry/periodic_box.h"
 #include "core/geometry/posed_shape.h"
 #include "core/geometry/superquadric_contact.h"
 #include "core/geometry/shape_library.h"
@@ -52,12 +53,6 @@ struct HeldGrain {
   GrainMotion motion;
 };
 
-// The simulation box the grains live in (periodic dimensions wrap).
-struct GrainBox {
-  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Ones();
-  std::array<bool, 3> periodic = {false, false, false};
-};
-
 class HeldGrains {
  public:
   // segment_reach: the largest ℓ/2 + r_w of a segment that will be queried (> 0).
@@ -65,7 +60,8 @@ class HeldGrains {
   // radius is not finite and > 0 ("sphere_radius"), a superquadric with bad half-axes or
   // blockiness ("half_axes", "blockiness"), a non-finite pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
   // shorter than twice the interaction distance ("box").
-  HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const GrainBox& box,
+  // box: the simulation box the grains live in (core/geometry/periodic_box.h).
+  HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const PeriodicBox& box,
              double segment_reach);
 
   int size() const { return static_cast<int>(grains_.size()); }
@@ -80,6 +76,11 @@ class HeldGrains {
   // index of the grain with this tag, −1 if none
   int index_of(long tag) const;
   double segment_reach() const { return segment_reach_; }
+  const PeriodicBox& box() const { return box_; }
+  // the shift of grain k's image nearest to `point` (as for_each_candidate gives it)
+  Eigen::Vector3d image_shift(int k, const Eigen::Vector3d& point) const {
+    return box_.image_shift(point, grains_[k].position);
+  }
 
   // Calls visit(k, shift) for every grain k whose bounding sphere, moved by the periodic
   // image shift and grown by `margin` ≥ 0, meets the segment's bounding sphere (centre
@@ -122,6 +123,7 @@ class HeldGrains {
   std::vector<double> bounding_radius_;
   std::unordered_map<long, int> index_of_tag_;
   double segment_reach_;
+  PeriodicBox box_;
   BroadPhaseGrid grid_;
   struct Candidate {
     int k;

@@ -25,7 +25,8 @@ void WireGrainPairCache::hold(const HeldGrains& held) {
     if (it == reference_.end() || it->second.shape != g.shape || it->second.bounding_radius != held.bounding_radius(k))
       return reset(held);
     const Pose& ref = it->second;
-    grain_moved_[k] = rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation, ref.bounding_radius);
+    grain_moved_[k] = rigid_motion_bound(held.box().minimum_image(g.position - ref.position), ref.orientation,
+                                         g.orientation, ref.bounding_radius);
     bound = std::max(bound, grain_moved_[k]);
   }
   grain_bound_ = bound;
@@ -45,10 +46,10 @@ void WireGrainPairCache::reset(const HeldGrains& held) {
   }
 }
 
-double WireGrainPairCache::motion_since_build(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
-                                              double radius) const {
+double WireGrainPairCache::motion_since_build(const Entry& e, const PeriodicBox& box, const Eigen::Vector3d& x0,
+                                              const Eigen::Vector3d& x1, double radius) const {
   if (e.epoch != epoch_ || e.radius != radius) return std::numeric_limits<double>::infinity();
-  const double moved = std::max((x0 - e.x0).norm(), (x1 - e.x1).norm()) + grain_bound_ + e.grain_bound;
+  const double moved = segment_motion(box, e, x0, x1) + grain_bound_ + e.grain_bound;
   return std::isnan(moved) ? std::numeric_limits<double>::infinity() : moved;
 }
 

@@ -10,7 +10,10 @@
 //   d_seg + D_grains(now) + D_grains(build) < s,
 // d_seg = max(|x0 − x0_build|, |x1 − x1_build|) (every point of the segment is a convex
 // combination of its ends, so it moved at most that far), D_grains(t) the bound on how
-// far any surface point of any grain has moved from the reference poses by time t,
+// far any surface point of any grain has moved from the reference poses by time t
+// (displacements in the minimum image of HeldGrains' box: a bead or a grain that wrapped
+// across a periodic face keeps the entry; a kept pair takes the grain's image nearest
+// to the segment at each evaluation),
 //   D = max_g |c_g − c_g,ref| + 2 R_g |vec(q_g,ref⁻¹ q_g)|
 // (a body point at distance ≤ R_g from the centre of mass moves by the translation plus
 // at most 2 R_g sin(θ/2) for a rotation by θ; R_g the bounding radius); by the triangle
@@ -79,16 +82,19 @@ class WireGrainPairCache {
     if (static_cast<int>(grain_moved_.size()) != held.size())
       throw InvalidArgument("held", "the pair cache was not given this set of grains (hold()) before its pairs");
     Entry& entry = entries_[key];
-    const double moved = motion_since_build(entry, x0, x1, wire_radius);
+    const double moved = motion_since_build(entry, held.box(), x0, x1, wire_radius);
     if (moved < skin_) {  // the entry is valid
-      const double moved_segment = std::max((x0 - entry.x0).norm(), (x1 - entry.x1).norm());
+      const double moved_segment = segment_motion(held.box(), entry, x0, x1);
+      const Eigen::Vector3d middle = 0.5 * (x0 + x1);
       for (Pair& p : entry.pairs) {
         const int k = held.index_of(p.tag);
         if (p.gap > moved_segment + grain_moved_[k] + p.grain_moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
           ++skipped_;
           continue;
         }
-        evaluate(k, p.shift, 0.0, warm_geometry_ ? &p.simplex : nullptr);
+        // the grain's image nearest to the segment now (the segment or the grain may have
+        // wrapped across a periodic face since the build)
+        evaluate(k, held.image_shift(k, middle), 0.0, warm_geometry_ ? &p.simplex : nullptr);
       }
       return;
     }
@@ -102,7 +108,7 @@ class WireGrainPairCache {
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
       GjkSimplex simplex;
       const double gap = evaluate(k, shift, skin_, warm_geometry_ ? &simplex : nullptr);
-      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, shift, gap, grain_moved_[k], simplex});
+      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, gap, grain_moved_[k], simplex});
     });
   }
 
@@ -115,7 +121,6 @@ class WireGrainPairCache {
  private:
   struct Pair {
     long tag;
-    Eigen::Vector3d shift;
     double gap;          // exact, at the entry's build
     double grain_moved;  // D_k at the entry's build
     GjkSimplex simplex;  // of its last evaluation
@@ -144,8 +149,14 @@ class WireGrainPairCache {
 
   // d_seg + D(now) + D(build) for an entry of the current reference with the same radius
   // (valid while below the skin), else infinity
-  double motion_since_build(const Entry& e, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
-                            double radius) const;
+  double motion_since_build(const Entry& e, const PeriodicBox& box, const Eigen::Vector3d& x0,
+                            const Eigen::Vector3d& x1, double radius) const;
+  // d_seg, the larger displacement of the segment's ends since the entry's build (in the
+  // minimum image: a bead wrapped across a periodic face moved by its step)
+  static double segment_motion(const PeriodicBox& box, const Entry& e, const Eigen::Vector3d& x0,
+                               const Eigen::Vector3d& x1) {
+    return std::max(box.minimum_image(x0 - e.x0).norm(), box.minimum_image(x1 - e.x1).norm());
+  }
   void reset(const HeldGrains& held);
 };
 

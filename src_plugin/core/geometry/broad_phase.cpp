@@ -79,8 +79,14 @@ std::array<long, 3> BroadPhaseGrid::cell_of(const Eigen::Vector3d& x) const {
   std::array<long, 3> c;
   for (int d = 0; d < 3; d++) {
     const double f = std::floor((x[d] - lo_[d]) / cell_[d]);
-    if (count_[d] == 0) c[d] = static_cast<long>(f);
-    else c[d] = f < 0.0 ? 0 : (f >= count_[d] ? count_[d] - 1 : static_cast<long>(f));
+    if (count_[d] == 0) {
+      c[d] = static_cast<long>(f);
+    } else if (period_[d] > 0.0) {  // a point outside the box: the cell of its image inside
+      const long i = static_cast<long>(f) % count_[d];
+      c[d] = i < 0 ? i + count_[d] : i;
+    } else {
+      c[d] = f < 0.0 ? 0 : (f >= count_[d] ? count_[d] - 1 : static_cast<long>(f));
+    }
   }
   return c;
 }

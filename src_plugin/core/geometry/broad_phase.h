@@ -7,8 +7,9 @@
 // Per dimension the grid is either
 //   unbounded: cell index ⌊x / cell⌋ over all integers (hashed), never periodic, or
 //   bounded over a box [lo, hi): n = clamp(⌊(hi − lo) / min_cell⌋, 1, 100000) cells of
-//     width (hi − lo) / n; a point outside the box falls into the nearest end cell. A
-//     periodic dimension wraps the cell indices and gives each neighbour its minimum image:
+//     width (hi − lo) / n; a point outside the box falls into the nearest end cell, or in a
+//     periodic dimension into the cell of its image in the box. A periodic dimension
+//     wraps the cell indices and gives each neighbour its minimum image:
 //     with d = x_j − x and L = hi − lo, if |d| > L/2 the shift −sign(d) L is applied (the
 //     rule of LIGGGHTS' Domain::minimum_image for orthogonal boxes), so the image of j is
 //     x_j + shift and d + shift is the minimum-image displacement.

@@ -11,12 +11,12 @@
 
 namespace wiregrain {
 
-// reference_orientation must be a unit quaternion; orientation any non-zero one.
-inline double rigid_motion_bound(const Eigen::Vector3d& reference_position,
-                                 const Eigen::Quaterniond& reference_orientation, const Eigen::Vector3d& position,
+// translation: c − c_ref (in a periodic box its minimum image); reference_orientation must
+// be a unit quaternion, orientation any non-zero one.
+inline double rigid_motion_bound(const Eigen::Vector3d& translation, const Eigen::Quaterniond& reference_orientation,
                                  const Eigen::Quaterniond& orientation, double radius) {
   const double turn = (reference_orientation.conjugate() * orientation.normalized()).vec().norm();
-  return (position - reference_position).norm() + 2.0 * radius * turn;
+  return translation.norm() + 2.0 * radius * turn;
 }
 
 }  // namespace wiregrain

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/common/errors.h"
+#include "core/common/validation.h"
 #include "core/nscd/grain_detection.h"
 #include "core/nscd/grain_sleep.h"
 
@@ -43,8 +44,10 @@ GrainContactPoint make_point(const std::vector<GrainState>& grains, int body_a, 
   c.frame = contact_frame(normal);
   c.constraint.body_a = body_a;
   c.constraint.body_b = body_b;
-  if (body_a >= 0) c.constraint.jacobian_a = contact_jacobian(c.frame, position - grains[body_a].position, -1.0);
-  c.constraint.jacobian_b = contact_jacobian(c.frame, position - grains[body_b].position, 1.0);
+  const PeriodicBox& box = problem.box;  // the lever arms in the minimum image
+  if (body_a >= 0)
+    c.constraint.jacobian_a = contact_jacobian(c.frame, box.minimum_image(position - grains[body_a].position), -1.0);
+  c.constraint.jacobian_b = contact_jacobian(c.frame, box.minimum_image(position - grains[body_b].position), 1.0);
   c.constraint.velocity_offset = -c.frame.transpose() * wall_velocity;
   c.constraint.friction = mu;
   c.constraint.gap = gap;
@@ -89,7 +92,7 @@ void sort_top_down(GrainStepProblem& problem) {
 namespace {
 
 void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
-                  const std::vector<PlaneWall>& walls, double h) {
+                  const std::vector<PlaneWall>& walls, double h, const PeriodicBox& box) {
   if (!(h > 0.0) || !std::isfinite(h)) throw InvalidArgument("time_step", "grain step: h must be > 0 and finite");
   for (const GrainState& g : grains) {
     if (!(g.quiet_time >= 0.0) || !std::isfinite(g.quiet_time) || !g.drift.allFinite() || !g.drift_angular.allFinite() ||
@@ -110,6 +113,24 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
     if (!(w.point.allFinite() && w.velocity.allFinite()) || !(std::fabs(w.normal.norm() - 1.0) <= 1e-9) ||
         !(w.friction >= 0.0))
       throw InvalidArgument("walls", "grain step: a wall needs a finite point and velocity, a unit normal and friction >= 0");
+  for (std::size_t w = 0; w < walls.size(); w++)
+    for (int d = 0; d < 3; d++)
+      if (box.periodic[d] && walls[w].normal[d] != 0.0)
+        throw InvalidArgument("walls", "grain step: wall " + std::to_string(w + 1) +
+                                           " is not parallel to the periodic dimension " + "xyz"[d] +
+                                           " (its normal has a component along " + "xyz"[d] + ")");
+}
+
+// Each periodic length at least twice the reach of a pair, so that no grain is within
+// reach of two images of one partner (or of its own image): the minimum image is then
+// the only one that can touch.
+void check_periodic_reach(const PeriodicBox& box, double reach) {
+  for (int d = 0; d < 3; d++)
+    if (box.periodic[d] && !(box.length(d) >= 2.0 * reach))
+      throw InvalidArgument("box", std::string("grain step: the periodic box is ") + format_number(box.length(d)) +
+                                       " long along " + "xyz"[d] + ", below twice the pair reach " +
+                                       format_number(reach) +
+                                       " (2 x the largest bounding radius + the activation distance + the skin)");
 }
 
 
@@ -186,7 +207,7 @@ void recall_warm_start(GrainStepProblem& problem, const GrainImpulseMemory& memo
   const double near2 = std::pow(0.25 * largest_radius, 2);
   for (size_t d = 0; d < order.detected.size(); d++) {
     const size_t c = order.place[d];
-    if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2)) {
+    if (const GrainImpulseMemory::Impulse* stored = memory.recall(points[c].pair, points[c].position, near2, problem.box)) {
       problem.warm_start[c] = points[c].frame.transpose() * stored->impulse;
       if (!problem.couple_warm_start.empty())
         problem.couple_warm_start[c] = points[c].frame.rightCols<2>().transpose() * stored->couple;
@@ -204,12 +225,13 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
                                      const GrainImpulseMemory& memory, GrainPairCache* pairs,
                                      const WorkShare* share) {
   options.validate();
-  check_inputs(grains, library, walls, h);
+  check_inputs(grains, library, walls, h, options.box);
   const int n = static_cast<int>(grains.size());
   GrainStepProblem problem;
   problem.wall_count = static_cast<int>(walls.size());
   problem.step.time_step = h;
   problem.step.law = options.law;
+  problem.box = options.box;
   if (options.rolling_friction > 0.0) {
     problem.rolling_friction = options.rolling_friction;
     problem.sweep_radius.resize(n);
@@ -224,6 +246,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   double wall_speed = 0.0;
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
   const double activation = options.margin + 2.0 * h * (2.0 * extent.fastest + wall_speed) + 1e-12;
+  if (options.box.any()) check_periodic_reach(options.box, 2.0 * extent.largest_radius + activation + (pairs ? pairs->skin() : 0.0));
   const DetectedContacts contacts = detect_contacts(grains, library, walls, options, problem.asleep, activation,
                                                     extent.largest_radius, pairs, share);
   // 3. the points from the top down

@@ -92,10 +92,13 @@ void kept_pair_candidates(GrainPairCache& pairs, const std::vector<char>& asleep
 // within activation + skin.
 void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                      const std::vector<char>& asleep, double activation, double skin, double largest_radius,
-                     std::vector<NarrowPhaseCandidate>& candidates) {
+                     const PeriodicBox& box, std::vector<NarrowPhaseCandidate>& candidates) {
   const auto sleeping = [&](int k) { return !asleep.empty() && asleep[k]; };
   const int n = static_cast<int>(grains.size());
-  BroadPhaseGrid grid = BroadPhaseGrid::unbounded(2.0 * largest_radius + activation + skin);
+  const double cell = 2.0 * largest_radius + activation + skin;
+  // periodic dimensions: the grid wraps its cells (its box's other dimensions only place
+  // the cells; a grain outside them falls into the end cell)
+  BroadPhaseGrid grid = box.any() ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell) : BroadPhaseGrid::unbounded(cell);
   for (const GrainState& g : grains) grid.insert(g.position);
   grid.index();
   std::vector<int> near;
@@ -105,7 +108,7 @@ void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& 
     grid.for_each_near(grains[a].position, [&](int b, const Eigen::Vector3d&) {
       if (b <= a) return;
       const double reach = ra + library[grains[b].shape].bounding_radius + activation + skin;
-      if ((grains[b].position - grains[a].position).squaredNorm() < reach * reach) near.push_back(b);
+      if (box.minimum_image(grains[b].position - grains[a].position).squaredNorm() < reach * reach) near.push_back(b);
     });
     std::sort(near.begin(), near.end());
     // a pair of sleepers is frozen: not computed, kept in the cache for when one wakes
@@ -159,13 +162,13 @@ DetectedContacts detect_contacts(const std::vector<GrainState>& grains, const Sh
   contact_options.near_vertices = options.near_vertices;
   DetectedContacts detected;
   std::vector<NarrowPhaseCandidate>& candidates = detected.candidates;
-  const bool reuse = n > 0 && pairs && pairs->valid(grains, library, activation);
+  const bool reuse = n > 0 && pairs && pairs->valid(grains, library, activation, options.box);
   const double skin = pairs && !reuse ? pairs->skin() : 0.0;
   const bool warm_geometry = options.warm_geometry && pairs;
   if (reuse)
     kept_pair_candidates(*pairs, asleep, activation, warm_geometry, candidates);
   else if (n > 0)
-    grid_candidates(grains, library, asleep, activation, skin, largest_radius, candidates);
+    grid_candidates(grains, library, asleep, activation, skin, largest_radius, options.box, candidates);
   wall_candidates(grains, library, walls, asleep, activation, candidates);
   ContactOptions build_options = contact_options;  // a cache build learns which pairs lie beyond activation + skin
   build_options.exit_beyond_activation = skin;
@@ -181,8 +184,14 @@ DetectedContacts detect_contacts(const std::vector<GrainState>& grains, const Sh
       plane.normal = walls[c.wall].normal;
       return plane_contact(plane, posed_grain(c.b), activation, contact_options);
     }
-    return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, reuse ? contact_options : build_options,
-                            simplex);
+    const ContactOptions& pair_options = reuse ? contact_options : build_options;
+    // grain b's image nearest to grain a: the points lie by a
+    const Eigen::Vector3d shift = options.box.image_shift(grains[c.a].position, grains[c.b].position);
+    if (!shift.isZero(0.0)) {
+      const PosedShape image(library[grains[c.b].shape].shape, grains[c.b].position + shift, grains[c.b].orientation);
+      return contact_manifold(posed_grain(c.a), image, activation, pair_options, simplex);
+    }
+    return contact_manifold(posed_grain(c.a), posed_grain(c.b), activation, pair_options, simplex);
   };
   detected.found = narrow_phase(candidates, share, warm_geometry, compute);
   if (pairs) update_pair_cache(*pairs, reuse, warm_geometry, grains, library, activation, skin, detected);

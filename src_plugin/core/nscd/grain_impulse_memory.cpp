@@ -26,13 +26,13 @@ const std::vector<GrainImpulseMemory::Entry>& GrainImpulseMemory::points() const
 }
 
 const GrainImpulseMemory::Impulse* GrainImpulseMemory::recall(const PairKey& pair, const Eigen::Vector3d& position,
-                                                               double radius2) const {
+                                                               double radius2, const PeriodicBox& box) const {
   const std::vector<Entry>& all = points();
   const Impulse* nearest = nullptr;
   double best = radius2;
   for (auto it = all.begin() + (std::lower_bound(keys_.begin(), keys_.end(), pair) - keys_.begin());
        it != all.end() && it->pair == pair; ++it) {
-    const double d2 = (it->impulse.position - position).squaredNorm();
+    const double d2 = box.minimum_image(it->impulse.position - position).squaredNorm();
     if (d2 < best) {
       best = d2;
       nearest = &it->impulse;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/contact/contact_list.h"
+#include "core/geometry/periodic_box.h"
 #include "core/nscd/gauss_seidel.h"
 
 namespace wiregrain {
@@ -34,9 +35,12 @@ class GrainImpulseMemory {
     PairKey pair;
     Impulse impulse;
   };
-  // the pair's stored point nearest to `position` if its squared distance is below
-  // `radius2`, else nullptr; std::logic_error if points were added since the last commit
-  const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2) const;
+  // the pair's stored point nearest to `position` if its squared distance (in the
+  // minimum image of `box`: a grain that wrapped across a periodic face since keeps its
+  // warm start) is below `radius2`, else nullptr; std::logic_error if points were added
+  // since the last commit
+  const Impulse* recall(const PairKey& pair, const Eigen::Vector3d& position, double radius2,
+                        const PeriodicBox& box = PeriodicBox()) const;
   void clear() {  // the impulses; the backoff stays
     entries_.clear();
     keys_.clear();

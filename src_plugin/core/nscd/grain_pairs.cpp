@@ -16,7 +16,7 @@ GrainPairCache::GrainPairCache(double skin) : skin_(skin) {
 }
 
 bool GrainPairCache::valid(const std::vector<GrainState>& grains, const ShapeLibrary& library,
-                           double activation) {
+                           double activation, const PeriodicBox& box) {
   if (!built_ || grains.size() != reference_.size()) return false;
   moved_.resize(grains.size());
   double moved = 0.0;
@@ -24,7 +24,8 @@ bool GrainPairCache::valid(const std::vector<GrainState>& grains, const ShapeLib
     const GrainState& g = grains[k];
     const Pose& ref = reference_[k];
     if (g.tag != ref.tag || g.shape != ref.shape || g.shape >= library.size()) return false;
-    moved_[k] = rigid_motion_bound(ref.position, ref.orientation, g.position, g.orientation, ref.bounding_radius);
+    moved_[k] = rigid_motion_bound(box.minimum_image(g.position - ref.position), ref.orientation, g.orientation,
+                                   ref.bounding_radius);
     moved = std::max(moved, moved_[k]);
   }
   return 2.0 * moved + (activation - activation_) < skin_;  // false for NaN

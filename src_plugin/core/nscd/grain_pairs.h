@@ -28,6 +28,7 @@
 #include <Eigen/Geometry>
 
 #include "core/geometry/gjk.h"
+#include "core/geometry/periodic_box.h"
 #include "core/geometry/shape_library.h"
 
 namespace wiregrain {
@@ -48,8 +49,10 @@ class GrainPairCache {
 
   // Whether the pairs of the last build still hold every pair within `activation` of the
   // grains as they are now (see above); when they do, also each grain's motion bound D_k
-  // for still_apart().
-  bool valid(const std::vector<GrainState>& grains, const ShapeLibrary& library, double activation);
+  // for still_apart(). The translations are taken in the minimum image of `box`: a grain
+  // that wrapped across a periodic face has moved by its step, not by the period.
+  bool valid(const std::vector<GrainState>& grains, const ShapeLibrary& library, double activation,
+             const PeriodicBox& box = PeriodicBox());
   // A build: start, keep each pair (a < b, grain indices) in visiting order with its gap,
   // end with the grains and the activation distance of the build.
   void begin_build();

@@ -93,7 +93,7 @@ SleeperLoad sleeper_load(const GrainStepProblem& problem, const std::vector<Grai
   // an impulse at `position` and a rolling couple
   const auto add_load = [&](const Eigen::Vector3d& position, const Eigen::Vector3d& impulse, const Eigen::Vector3d& couple) {
     load += impulse;
-    moment += (position - g.position).cross(impulse) + couple;
+    moment += problem.box.minimum_image(position - g.position).cross(impulse) + couple;
   };
   for (const auto& [c, sign] : on.solved_on[k]) {
     const GrainContactPoint& point = problem.points[c];
@@ -149,7 +149,7 @@ NscdStepResult solve_sleeper_alone(const GrainStepProblem& problem, const GrainS
     const Eigen::Matrix3d frame = contact_frame(sign * stored.normal);  // from the partner to k
     NscdContact row;
     row.body_b = 0;
-    row.jacobian_b = contact_jacobian(frame, stored.position - g.position, 1.0);
+    row.jacobian_b = contact_jacobian(frame, problem.box.minimum_image(stored.position - g.position), 1.0);
     row.friction = pair.first < 0 ? problem.walls[-pair.first - 1].friction : options.friction;
     set_rolling(row, problem, problem.frozen_bodies[f].first, problem.frozen_bodies[f].second);
     local.contacts.push_back(row);

@@ -43,6 +43,7 @@ SolverSettings GrainStepOptions::solver_for_step(std::uint64_t step_number) cons
 void GrainStepOptions::validate() const {
   solver.validate();
   law.validate();
+  box.validate();
   if (!(friction >= 0.0)) throw InvalidArgument("friction", "grain step: friction must be >= 0, got " + std::to_string(friction));
   if (!(damping >= 0.0)) throw InvalidArgument("damping", "grain step: damping must be >= 0, got " + std::to_string(damping));
   if (!(margin >= 0.0)) throw InvalidArgument("margin", "grain step: margin must be >= 0, got " + std::to_string(margin));
@@ -67,12 +68,13 @@ ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vec
   out.on_grain.assign(n, Eigen::Vector3d::Zero());
   out.moment.assign(n, Eigen::Vector3d::Zero());
   out.on_wall.assign(problem.wall_count, Eigen::Vector3d::Zero());
+  const PeriodicBox& box = problem.box;
   const auto add = [&](int a, int b, long wall_key, const Eigen::Vector3d& position, const Eigen::Vector3d& impulse) {
     out.on_grain[b] += impulse;
-    out.moment[b] += (position - grains[b].position).cross(impulse);
+    out.moment[b] += box.minimum_image(position - grains[b].position).cross(impulse);
     if (a >= 0) {
       out.on_grain[a] -= impulse;
-      out.moment[a] -= (position - grains[a].position).cross(impulse);
+      out.moment[a] -= box.minimum_image(position - grains[a].position).cross(impulse);
     } else {
       out.on_wall[-wall_key - 1] -= impulse;
     }

@@ -63,6 +63,7 @@
 
 #include "core/common/work_share.h"
 #include "core/contact/contact_list.h"
+#include "core/geometry/periodic_box.h"
 #include "core/geometry/shape_library.h"
 #include "core/nscd/grain_impulse_memory.h"
 #include "core/nscd/grain_pairs.h"
@@ -144,6 +145,13 @@ struct GrainStepOptions {
   // couples are warm-started as the impulses are.
   double rolling_friction = 0.0;
   SleepOptions sleep;
+  // the simulation box (core/geometry/periodic_box.h): along its periodic dimensions
+  // every grain pair is taken in its minimum image (the contact points lie by grain a,
+  // the lever arms, warm starts, pair cache and overlap projection use minimum-image
+  // displacements), walls must be parallel to them, and each periodic length must be at
+  // least twice the pair reach 2 R_max + d_act + skin (InvalidArgument("box", ...) at the
+  // step that exceeds it); no periodic dimension by default
+  PeriodicBox box;
   // the solver's settings of a step: seed = solver.seed + step_number (a new random order
   // per step)
   SolverSettings solver_for_step(std::uint64_t step_number) const;
@@ -181,6 +189,7 @@ struct GrainStepProblem {
   // point's rolling radius R is the sum of its two grains'; a wall's is 0); else empty
   double rolling_friction = 0.0;
   std::vector<double> sweep_radius;
+  PeriodicBox box;  // the options' (lever arms in the minimum image)
 };
 
 struct GrainStepStats {
@@ -210,8 +219,9 @@ struct GrainStepResult {
   ContactList contacts;  // every point (open ones too), force = impulse / h on b
 };
 
-// InvalidArgument("time_step" | "grains" | "walls" | options keywords, ...) on bad input
-// (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data).
+// InvalidArgument("time_step" | "grains" | "walls" | "box" | options keywords, ...) on bad
+// input (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data, a
+// wall not parallel to a periodic dimension, a periodic length below twice the reach).
 // With `share` (several workers holding the same grains: fix nscd/polyhedra's MPI ranks)
 // the narrow phase is shared out (core/common/work_share.h): the candidate pairs (grain
 // pairs in their fixed order, then the wall pairs) in one block per worker, the contact

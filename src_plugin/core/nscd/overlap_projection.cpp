@@ -104,7 +104,12 @@ class ProjectedGrains {
     }
     const PosedShape& a = posed_grain(pair.a);
     const double sweeps = a.sweep_radius() + b.sweep_radius();
-    const CoreDistance d = core_distance(a, b, sweeps);
+    // grain b's image nearest to grain a
+    const Eigen::Vector3d shift = image_shift(pair);
+    std::optional<PosedShape> image;
+    if (!shift.isZero(0.0))
+      image.emplace(library_[grains_[pair.b].shape].shape, poses_[pair.b].position + shift, poses_[pair.b].orientation);
+    const CoreDistance d = core_distance(a, image ? *image : b, sweeps);
     if (d.method == DistanceMethod::gjk_far) return out;
     out.near = true;
     out.gap = d.distance - sweeps;
@@ -123,7 +128,15 @@ class ProjectedGrains {
     }
     if (!(pair.deepest < std::numeric_limits<double>::infinity())) return -std::numeric_limits<double>::infinity();
     const ConvexShape& a = library_[grains_[pair.a].shape].shape;
-    return lowest_along(pair.b, pair.axis) + lowest_along(pair.a, -pair.axis) - a.sweep_radius() - b.sweep_radius();
+    const double bound = lowest_along(pair.b, pair.axis) + lowest_along(pair.a, -pair.axis) - a.sweep_radius() - b.sweep_radius();
+    const Eigen::Vector3d shift = image_shift(pair);  // grain b's image nearest to grain a
+    return shift.isZero(0.0) ? bound : bound + pair.axis.dot(shift);
+  }
+
+  // the shift of grain b's image nearest to grain a at the current poses (zero without
+  // periodic dimensions)
+  Eigen::Vector3d image_shift(const ProjectedPair& pair) const {
+    return problem_.box.image_shift(poses_[pair.a].position, poses_[pair.b].position);
   }
 
   // a sleeping grain (grain_step.h) is held, as a wall
