@@ -601,7 +601,7 @@ void wiregrain_data_atom_unassigned(LAMMPS *lmp, char **values, int xptr) {
     if (!wiregrain_lmp::parse_finite_number(values[xptr + d], x[d]))
       lmp->error->all(FLERR, (prefix + "xyz"[d] + " of atom " + atom_id + " must be a finite number, got '" +
                               values[xptr + d] + "'").c_str());
-  std::string where;  // the non-periodic direction in which it is out (periodic ones were wrapped)
+  std::string where;  // the non-periodic direction in which it is out (remap wraps the periodic ones)
   for (int d = 0; d < 3 && !domain->triclinic && where.empty(); d++)
     if (!domain->periodicity[d] && !(x[d] >= domain->boxlo[d] && x[d] < domain->boxhi[d]))
       where = std::string(": ") + "xyz"[d] + " = " + wiregrain::format_number(x[d]) + ", the box spans [" +

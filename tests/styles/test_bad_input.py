@@ -189,10 +189,10 @@ class WireDataFile(Table):
 
 
 class DataFileCoordinates(Table):
-    # An Atoms line that no processor takes, named with its atom and the cause. Before:
-    # LIGGGHTS' "Did not assign all atoms correctly" after the section (a NaN, a point
-    # outside a non-periodic box, 'x = 5' of the box [-5, 5): the high end is outside); in a
-    # periodic box a NaN was put at the box's low edge without a word and an inf made
+    # An Atoms line that no processor takes, named with its atom and the cause. Unchecked,
+    # LIGGGHTS stops after the section with "Did not assign all atoms correctly" (a NaN, a
+    # point outside a non-periodic box, 'x = 5' of the box [-5, 5): the high end is outside);
+    # in a periodic box it puts a NaN at the box's low edge without a word, and an inf makes
     # remap loop for ever.
     W = "atom_style wire: Atoms section of data file: "
     P = "atom_style polyhedron: Atoms section of data file: "
@@ -251,8 +251,8 @@ def loop_beads(radius, turns, segment):
 
 class CreateWireCount(Table):
     # More beads than a wire may have (1e8, create_grains' cap on N) are refused by their
-    # count, before a node is stored: unchecked, a loop of R = 1e12 aborted with
-    # std::bad_alloc and no ERROR, and counts beyond a long had no defined conversion.
+    # count, before a node is stored: unchecked, a loop of R = 1e12 aborts with
+    # std::bad_alloc and no ERROR, and a count beyond a long has no defined conversion.
     CW = "command create_wire (id -): 'segment_length': segment_length "
     TAIL = " (take a longer segment_length or a shorter layout)"
     CASES = (
@@ -282,11 +282,11 @@ group           wire type 2
 
 class MixedGroups(Table):
     # A group holding grains and wire beads (here 'all': the cube or sphere and 3 beads) is
-    # refused by every style that acts on one kind. Unchecked, fix wire/wall pushed the cube
-    # as a bead of its bounding radius, fix wire/elastic took its radius and mass into its
-    # time-step check, fix nve/gear integrated it as a point mass (its rotation dropped),
-    # fix nscd/polyhedra said "3 grains have no shape (made by create_atoms?...)" of the
-    # beads, and fix wire/grain ignored beads in a grain group of polyhedra.
+    # refused by every style that acts on one kind. Unchecked, fix wire/wall pushes the cube
+    # as a bead of its bounding radius, fix wire/elastic takes its radius and mass into its
+    # time-step check, fix nve/gear integrates it as a point mass (its rotation dropped),
+    # fix nscd/polyhedra says "3 grains have no shape (made by create_atoms?...)" of the
+    # beads, and fix wire/grain ignores beads in a grain group of polyhedra.
     CASES = (
         (HYBRID + "fix w all wire/wall plane 0 0 -1 0 0 1\nrun 0",
          "fix wire/wall (id w): group 'all' holds 1 grains (give the wire beads only)"),
@@ -357,8 +357,8 @@ class PairWireContact(Table):
 class ThickWire(Table):
     # Segments that share no bead touch (docs/design.md, 1.2): the segments on either side of
     # a segment of rest length l overlap in the straight wire at rest when their radii sum
-    # to more than l. Before, such a wire ran, with overlap warnings that advised a smaller
-    # time step. The paper's wire (r_w = 0.1, l_w = 0.2) is at the limit and runs.
+    # to more than l. Unchecked, such a wire runs, with overlap warnings that advise a
+    # smaller time step. The paper's wire (r_w = 0.1, l_w = 0.2) is at the limit and runs.
     PAIR = "pair_style wire/contact\npair_coeff * *\nrun 0"
     WHY = (": these segments, which share no bead, overlap in the straight wire at rest; a wire's segments "
            "must be at least twice its radius long (create_wire: segment >= 2 radius)")

@@ -347,8 +347,8 @@ run             20
 
     def test_beads_of_the_group_are_left_out(self):
         # 'all' of atom_style hybrid polyhedron wire: the 3 cubes (6 faces of 4 points each)
-        # and nothing of the 31 beads, without a warning (each bead was counted as a grain
-        # without a shape)
+        # and nothing of the 31 beads, without a warning (unfiltered, each bead is counted as a
+        # grain without a shape)
         deck = """
 units           lj
 atom_style      hybrid polyhedron wire

@@ -259,8 +259,8 @@ class WireVTK(DeckTestCase):
 
     def test_grains_of_the_group_are_left_out(self):
         # 'all' of atom_style hybrid polyhedron wire (two cubes, ids 1-2, and a line of 11
-        # beads, ids 3-13): the file holds the one polyline of the beads, no grain (each
-        # grain was written as a lone vertex)
+        # beads, ids 3-13): the file holds the one polyline of the beads, no grain (unfiltered,
+        # each grain is written as a lone vertex)
         deck = """
 units           lj
 atom_style      hybrid polyhedron wire

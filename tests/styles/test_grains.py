@@ -116,7 +116,7 @@ run             10000
 class GrainRotationOfAMixedGroup(DeckTestCase):
     def test_beads_get_zero_rows(self):
         # compute grain/rotation on 'all' of atom_style hybrid polyhedron wire: the 11 beads
-        # get zero rows (they had the quaternion of a shapeless atom), the cube its unit
+        # get zero rows (unfiltered, the quaternion of a shapeless atom), the cube its unit
         # quaternion, and the vector is that of the grain group
         r = run("""
 units           lj

@@ -179,7 +179,7 @@ class ContactsComputeOfAMixedGroup(DeckTestCase):
     def test_overlap_over_the_beads_radius(self):
         # compute wire/contacts on 'all' of atom_style hybrid wire sphere: two one-segment
         # wires (r_w = 0.1) crossed at the overlap ξ = 2e-3 and a sphere of radius 0.02 far
-        # off. c_ID[3] is ξ / r_w = 0.02: the sphere's radius is no bead's (it gave ξ / 0.02)
+        # off. c_ID[3] is ξ / r_w = 0.02: the sphere's radius is no bead's (unfiltered: ξ / 0.02)
         xi = 2e-3
         r = run(f"""
 units           lj
