@@ -3,12 +3,16 @@
 #include <cstdlib>
 
 #include "atom.h"
+#include "atom_vec_hybrid.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "memory.h"
 #include "modify.h"
 
+#include "atom_style_part.h"
+#include "core/common/validation.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
 
@@ -574,3 +578,37 @@ int PluginAtomVec::write_vel_hybrid(FILE *fp, double *buf) {
   write_columns(fp, lists_.data_vel, buf);
   return count(lists_.data_vel);
 }
+
+// ---------------------------------------------------------------------------------------
+// An Atoms line that no sub-domain takes (cmake/patches/0008: Atom::data_atoms calls this on
+// every rank alike, for a coordinate that is not a finite number or a point outside the
+// box): with a plugin atom style (plain or in a hybrid) the run stops naming the atom and
+// the cause; other atom styles keep LIGGGHTS' "Did not assign all atoms correctly".
+namespace LAMMPS_NS {
+
+void wiregrain_data_atom_unassigned(LAMMPS *lmp, char **values, int xptr) {
+  bool plugin = false;
+  for (AtomVec *part : wiregrain_lmp::atom_style_parts(lmp->atom)) plugin = plugin || dynamic_cast<PluginAtomVec *>(part);
+  if (!plugin) return;
+  std::string style = lmp->atom->atom_style;
+  if (AtomVecHybrid *hybrid = dynamic_cast<AtomVecHybrid *>(lmp->atom->avec))
+    for (int k = 0; k < hybrid->nstyles; k++) style += std::string(" ") + hybrid->keywords[k];
+  const std::string prefix = "atom_style " + style + ": Atoms section of data file: ";
+  const std::string atom_id = values[0];
+  Domain *domain = lmp->domain;
+  double x[3];
+  for (int d = 0; d < 3; d++)
+    if (!wiregrain_lmp::parse_finite_number(values[xptr + d], x[d]))
+      lmp->error->all(FLERR, (prefix + "xyz"[d] + " of atom " + atom_id + " must be a finite number, got '" +
+                              values[xptr + d] + "'").c_str());
+  std::string where;  // the non-periodic direction in which it is out (remap wraps the periodic ones)
+  for (int d = 0; d < 3 && !domain->triclinic && where.empty(); d++)
+    if (!domain->periodicity[d] && !(x[d] >= domain->boxlo[d] && x[d] < domain->boxhi[d]))
+      where = std::string(": ") + "xyz"[d] + " = " + wiregrain::format_number(x[d]) + ", the box spans [" +
+              wiregrain::format_number(domain->boxlo[d]) + ", " + wiregrain::format_number(domain->boxhi[d]) +
+              ") in " + "xyz"[d] + " (a non-periodic boundary)";
+  lmp->error->all(FLERR, (prefix + "atom " + atom_id + " lies outside the " +
+                          (domain->triclinic ? "(triclinic) " : "") + "simulation box" + where).c_str());
+}
+
+}  // namespace LAMMPS_NS

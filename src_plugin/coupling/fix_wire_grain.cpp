@@ -229,18 +229,17 @@ void FixWireGrain::init() {
     fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kPolyhedraInWire]) +
          " grains (give the wire beads only)");
   stock_grains_ = global[kPolyhedra] == 0.0;
-  if (stock_grains_) {  // stock granular spheres or superquadrics
-    if (global[kOthers] == 0.0 || !(atom->sphere_flag || atom->superquadric_flag))
-      fail("grain group '" + grain_group_ +
-           "' has no grains (polyhedra, or spheres of atom_style sphere or granular, or superquadrics, in the "
-           "hybrid)");
-    if (global[kOthersLinked] > 0.0)
-      fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[kOthersLinked]) +
-           " wire beads (give the grains only)");
-    if (global[kOthersInWire] > 0.0)
-      fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kOthersInWire]) +
-           " grains (give the wire beads only)");
-  }
+  // stock granular spheres or superquadrics when the grain group has no polyhedra
+  if (stock_grains_ && (global[kOthers] == 0.0 || !(atom->sphere_flag || atom->superquadric_flag)))
+    fail("grain group '" + grain_group_ +
+         "' has no grains (polyhedra, or spheres of atom_style sphere or granular, or superquadrics, in the "
+         "hybrid)");
+  if (global[kOthersLinked] > 0.0)  // beads beside polyhedra would be ignored, beside spheres taken as grains
+    fail("grain group '" + grain_group_ + "' holds " + std::to_string((long)global[kOthersLinked]) +
+         " wire beads (give the grains only)");
+  if (stock_grains_ && global[kOthersInWire] > 0.0)
+    fail("wire group '" + wire_group + "' holds " + std::to_string((long)global[kOthersInWire]) +
+         " grains (give the wire beads only)");
   segment_reach_ = 0.5 * (1.0 + max_stretch_) * global[kMaxRest] + global[kMaxRadius];
   const double longest_segment = global[kMaxRest];
 

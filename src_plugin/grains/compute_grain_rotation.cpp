@@ -17,7 +17,7 @@
 using namespace LAMMPS_NS;
 
 ComputeGrainRotation::ComputeGrainRotation(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), values_(NULL), nmax_(0) {
+    : Compute(lmp, iarg, narg, arg), values_(NULL), nmax_(0), kinds_(lmp) {
   wiregrain_lmp::StyleArgs args(error, "compute", "grain/rotation", id, narg, arg, iarg);
   if (!AtomVecPolyhedron::of(atom))
     args.fail("needs atom_style polyhedron (or hybrid with polyhedron), not '" + std::string(atom->atom_style) + "'");
@@ -36,11 +36,15 @@ ComputeGrainRotation::~ComputeGrainRotation() {
   memory->destroy(values_);
 }
 
+bool ComputeGrainRotation::counts(int i) const {
+  return (atom->mask[i] & groupbit) && kinds_.of(i) == wiregrain_lmp::AtomKind::polyhedron;
+}
+
 void ComputeGrainRotation::compute_vector() {
   invoked_vector = update->ntimestep;
   double local[4] = {0.0, 0.0, 0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!counts(i)) continue;
     for (int d = 0; d < 3; d++) {
       local[0] += 0.5 * atom->omega[i][d] * atom->angmom[i][d];
       local[1 + d] += atom->angmom[i][d];
@@ -60,7 +64,7 @@ void ComputeGrainRotation::compute_peratom() {
   for (int i = 0; i < atom->nlocal; i++) {
     double *out = values_[i];
     for (int k = 0; k < size_peratom_cols; k++) out[k] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!counts(i)) continue;
     const double *q = atom->quaternion[i];
     const Eigen::Quaterniond r = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
     const Eigen::Vector3d w_body = r.conjugate() * Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);

@@ -5,7 +5,9 @@
    per-atom array: [qw, qi, qj, qk (body → space), ω₁, ω₂, ω₃ (angular velocity in the
    body frame, principal axes with ascending moments), rotational kinetic energy ½ ω·L]
    vector: [rotational kinetic energy of the group, Lx, Ly, Lz (total angular momentum
-   about the grains' own centres, space frame)] */
+   about the grains' own centres, space frame)]
+   Only the grains with a shape count: other atoms of the group (wire beads, atoms without a
+   shape) get zero rows and add nothing. */
 
 #ifdef COMPUTE_CLASS
 
@@ -16,6 +18,7 @@ ComputeStyle(grain/rotation,ComputeGrainRotation)
 #ifndef LMP_COMPUTE_GRAIN_ROTATION_H
 #define LMP_COMPUTE_GRAIN_ROTATION_H
 
+#include "common/atom_kinds.h"
 #include "compute.h"
 
 namespace LAMMPS_NS {
@@ -32,6 +35,9 @@ class ComputeGrainRotation : public Compute {
  private:
   double **values_;
   int nmax_;
+  wiregrain_lmp::AtomKinds kinds_;
+
+  bool counts(int i) const;  // a grain of the group with a shape
 };
 
 }  // namespace LAMMPS_NS

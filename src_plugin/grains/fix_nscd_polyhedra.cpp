@@ -27,6 +27,7 @@
 #include "core/nscd/grain_step.h"
 #include "core/nscd/overlap_projection.h"
 #include "core/nscd/reduced_problem_io.h"
+#include "atom_kinds.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
@@ -378,6 +379,8 @@ double FixNSCDPolyhedra::memory_usage() { return double(atom->nmax) * (18 + kSle
 int FixNSCDPolyhedra::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNSCDPolyhedra::init() {
+  // a bead in the group would be a grain without a shape
+  wiregrain_lmp::require_no_beads(lmp, igroup, "fix", "nscd/polyhedra", id);
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nscd/polyhedra", "grains");
   // the solve's results go back to the grains by tag (atom_style polyhedron turns the map on)
   if (atom->map_style == 0)

@@ -16,6 +16,7 @@
 #include "update.h"
 
 #include "core/nscd/rigid_body.h"
+#include "atom_kinds.h"
 #include "plugin_args.h"
 
 using namespace LAMMPS_NS;
@@ -44,6 +45,7 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg)
 int FixNVEPolyhedron::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
 
 void FixNVEPolyhedron::init() {
+  wiregrain_lmp::require_no_beads(lmp, igroup, "fix", "nve/polyhedron", id);
   wiregrain_lmp::ensure_sole_integrator(lmp, this, "fix", "nve/polyhedron", "grains");
   const int missing = grains_->count_without_shape(groupbit);
   if (missing)

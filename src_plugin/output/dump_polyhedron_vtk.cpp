@@ -109,7 +109,7 @@ vtkSmartPointer<vtkPolyData> grain_polydata(const wiregrain_lmp::GatheredRows &v
 }  // namespace
 
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg)
-    : DumpVtp(lmp, narg, arg, kStyle), sweep_(false), grains_(NULL), warned_shapeless_(false) {
+    : DumpVtp(lmp, narg, arg, kStyle), sweep_(false), grains_(NULL), kinds_(lmp), warned_shapeless_(false) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5, {"format", "sweep"});
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");

@@ -5,7 +5,7 @@
    dump ID group polyhedron/vtk N file [format binary|ascii] [sweep yes|no]
 
    file must contain one '*' (replaced by the time step) in its name and end in ".vtp".
-   Every grain of the group with a shape becomes the polygon faces of its polyhedron
+   The wire beads of the group are left out. Every grain of the group with a shape becomes the polygon faces of its polyhedron
    (shape library, body frame) placed at x + R·v; each face has its own points (the
    points of a file are Σ over grains and faces of the face's vertex count), so faces
    render flat. Cell data per face: id, type, shape; point data: velocity and
@@ -30,6 +30,7 @@ DumpStyle(polyhedron/vtk,DumpPolyhedronVTK)
 #include <string>
 #include <vector>
 
+#include "common/atom_kinds.h"
 #include "output/dump_vtp.h"
 #include "output/plugin_vtk.h"
 
@@ -47,9 +48,11 @@ class DumpPolyhedronVTK : public DumpVtp {
  private:
   bool sweep_;            // offset each face outward by the sweep radius
   class AtomVecPolyhedron *grains_;
+  wiregrain_lmp::AtomKinds kinds_;
 
   bool warned_shapeless_;              // rank 0: warned once about grains without a shape
 
+  bool writes(int i) const { return kinds_.of(i) != wiregrain_lmp::AtomKind::bead; }
   void write_snapshot(const std::string &path);
 };
 

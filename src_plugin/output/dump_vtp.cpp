@@ -45,12 +45,20 @@ void DumpVtp::write() {
   }
 }
 
+int DumpVtp::count() {
+  const int *mask = atom->mask;
+  int n = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && writes(i)) n++;
+  return n;
+}
+
 void DumpVtp::pack_group(int *ids, const std::function<void(int, double *)> &row) {
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask, *tag = atom->tag;
   int m = 0, n = 0;
   for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
+    if (!((mask[i] & groupbit) && writes(i))) continue;
     row(i, buf + m);
     if (ids) ids[n] = tag[i];
     m += size_one;

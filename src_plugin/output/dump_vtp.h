@@ -49,8 +49,13 @@ class DumpVtp : public Dump {
   // the value of keyword 'format'
   void take_format(wiregrain_lmp::StyleArgs &args);
   virtual void write_snapshot(const std::string &path) = 0;
-  // Dump::pack over the local atoms of the group: row(i, values) writes the size_one
-  // values of atom i; ids, when given, receive the tags
+  // whether the dump writes atom i of its group: a dump of one kind of atom (beads, grains)
+  // leaves the other kind out (common/atom_kinds.h)
+  virtual bool writes(int i) const = 0;
+  // Dump::count: the local atoms of the group that the dump writes
+  int count();
+  // Dump::pack over those atoms: row(i, values) writes the size_one values of atom i; ids,
+  // when given, receive the tags
   void pack_group(int *ids, const std::function<void(int, double *)> &row);
   // gathered_ by rows of size_one values
   wiregrain_lmp::GatheredRows gathered_rows() const { return wiregrain_lmp::GatheredRows(gathered_, size_one); }

@@ -105,7 +105,8 @@ std::vector<Chain> assemble_chains(const wiregrain_lmp::GatheredRows &value) {
 
 DumpWireVTK::DumpWireVTK(LAMMPS *lmp, int narg, char **arg)
     : DumpVtp(lmp, narg, arg, kStyle), energy_fix_(-1), grain_fix_(-1), energy_column_(-1), grain_column_(-1),
-      wire_(NULL) {
+      wire_(NULL),
+      kinds_(lmp) {
   wiregrain_lmp::StyleArgs args(error, kKind, kStyle, id, narg, arg, 5, {"energy", "grains", "format"});
 #ifndef LAMMPS_VTK
   args.fail("this build has no VTK (configure with VTK 9 and WIREGRAIN_WITH_VTK=ON)");

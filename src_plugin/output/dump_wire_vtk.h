@@ -5,7 +5,8 @@
 
    file must contain one '*' (replaced by the time step) in its name and end in ".vtp".
    Each wire (chain of beads linked by wire_prev/wire_next) becomes one polyline; only
-   beads of the group are written and a chain is cut where a link leaves the group. Point
+   beads of the group are written (its grains are left out) and a chain is cut where a
+   link leaves the group. Point
    data per bead: id, type, velocity and, with `energy fix-ID` (a fix wire/elastic),
    stretching_energy, bending_energy, elastic_energy; with `grains fix-ID` (a fix
    wire/grain) grain_force and grain_contacts. Cell data: wire (index of the chain
@@ -27,6 +28,7 @@ DumpStyle(wire/vtk,DumpWireVTK)
 #include <utility>
 #include <vector>
 
+#include "common/atom_kinds.h"
 #include "output/dump_vtp.h"
 #include "output/plugin_vtk.h"
 
@@ -48,7 +50,9 @@ class DumpWireVTK : public DumpVtp {
   int grain_fix_;                // index of that fix wire/grain, -1 if none
   int energy_column_, grain_column_;  // first buffer column of each, -1 if absent
   class AtomVecWire *wire_;
+  wiregrain_lmp::AtomKinds kinds_;
 
+  bool writes(int i) const { return !kinds_.is_grain(i); }
   int find_fix(const std::string &fix_id, const char *keyword, bool at_init);
   int find_energy_fix(bool at_init);
   int find_grain_fix(bool at_init);

@@ -13,6 +13,7 @@
 #include "modify.h"
 #include "update.h"
 
+#include "atom_kinds.h"
 #include "contact_publisher.h"
 #include "core/contact/contact_list.h"
 #include "plugin_args.h"
@@ -60,10 +61,11 @@ void ComputeWireContacts::init() {
                                  std::string("kind ") + wiregrain::contact_kind_name(kind) + " needs a fix " + needed);
   }
   AtomVecWire *wire = AtomVecWire::of(atom);
+  const wiregrain_lmp::AtomKinds kinds(lmp);
   double local = 1e300;
   long segments = 0;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!(atom->mask[i] & groupbit) || kinds.is_grain(i)) continue;  // the beads of the group
     local = std::min(local, atom->radius[i]);
     if (wire && wire->wire_next[i]) segments++;
   }

@@ -3,6 +3,8 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <climits>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -89,6 +91,8 @@ std::vector<Eigen::Vector3d> wire_nodes(const WireSettings &s, const wiregrain_l
     }
   } catch (const wiregrain::InvalidArgument &e) {
     args.fail("'" + e.argument() + "': " + e.what());
+  } catch (const std::bad_alloc &) {  // within the bead limit, beyond this machine's memory
+    args.fail("not enough memory for the wire's nodes");
   }
   if (nodes.size() < 2) args.fail("the layout gives fewer than 2 beads");
   return nodes;
@@ -141,6 +145,8 @@ void CreateWire::command(int narg, char **arg) {
   // Every rank computes the same node list; each keeps the beads in its subdomain.
   const std::vector<Eigen::Vector3d> nodes = wire_nodes(s, args);
   const int maxtag = wiregrain_lmp::max_atom_tag(lmp);
+  if (static_cast<long>(maxtag) + static_cast<long>(nodes.size()) > MAXSMALLINT)
+    args.fail("too many atoms: atom IDs would exceed the int range");
   const int n = static_cast<int>(nodes.size());
   const bigint created = create_beads(lmp, s, nodes, maxtag);
   if (created != n)

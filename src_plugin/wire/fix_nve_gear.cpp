@@ -12,9 +12,11 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "group.h"
 #include "memory.h"
 #include "update.h"
 
+#include "atom_kinds.h"
 #include "atom_vec_wire.h"
 #include "core/common/validation.h"
 #include "core/contact/contact_time_step.h"
@@ -130,6 +132,21 @@ void FixNVEGear::init() {
                                    "mass of atom type " + std::to_string(t) + " is " +
                                        wiregrain::format_number(atom->mass[t]) + " (must be a finite number > 0)");
   }
+  // Point masses only: a grain of atom_style polyhedron is a rigid body whose rotation this
+  // fix would drop; wire beads and stock grains (spheres integrated as point masses) are
+  // given by separate groups
+  const wiregrain_lmp::AtomKindCounts kinds = wiregrain_lmp::AtomKinds(lmp).count(groupbit);
+  const std::string group_name = std::string("group '") + group->names[igroup] + "' holds ";
+  if (kinds.polyhedra > 0)
+    wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                               group_name + std::to_string(kinds.polyhedra) +
+                                   " grains of atom_style polyhedron (rigid bodies: integrate them by fix "
+                                   "nscd/polyhedra or fix nve/polyhedron)");
+  if (kinds.beads > 0 && kinds.stock_grains > 0)
+    wiregrain_lmp::style_error(error, "fix", "nve/gear", id,
+                               group_name + std::to_string(kinds.beads) + " wire beads and " +
+                                   std::to_string(kinds.stock_grains) +
+                                   " grains (give the wire beads only, or the grains only)");
   dt_ = update->dt;
   wire_ = AtomVecWire::of(atom);
 }

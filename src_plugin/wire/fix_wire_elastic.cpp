@@ -25,6 +25,7 @@
 #include "core/common/validation.h"
 #include "core/wire/gear_integrator.h"
 #include "core/wire/wire_elasticity.h"
+#include "atom_kinds.h"
 #include "contact_checks.h"
 #include "plugin_args.h"
 #include "plugin_comm.h"
@@ -101,6 +102,8 @@ int FixWireElastic::setmask() {
 }
 
 void FixWireElastic::init() {
+  // a grain in the group would enter the time-step check as a bead of its radius and mass
+  wiregrain_lmp::require_no_grains(lmp, igroup, "fix", "wire/elastic", id);
   // E_w of each atom type (plugin_material.h)
   youngs_modulus_of_type_.assign(atom->ntypes + 1, 0.0);
   for (int type = 1; type <= atom->ntypes; type++)

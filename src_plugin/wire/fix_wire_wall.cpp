@@ -22,6 +22,7 @@
 #include "core/contact/contact_list.h"
 #include "core/contact/contact_time_step.h"
 #include "core/contact/soft_contact.h"
+#include "atom_kinds.h"
 #include "bead_contact_load.h"
 #include "companion_fix.h"
 #include "plugin_args.h"
@@ -92,6 +93,8 @@ const wiregrain::ContactList &FixWireWall::published_contacts() const { return *
 int FixWireWall::setmask() { return POST_FORCE; }
 
 void FixWireWall::init() {
+  // a grain in the group would be pushed as a bead of its bounding radius
+  wiregrain_lmp::require_no_grains(lmp, igroup, "fix", "wire/wall", id);
   // re-reference at every run start, so a `timestep` command between runs is honoured
   rereference();
   history_ = dynamic_cast<FixWireContactHistory *>(wiregrain_lmp::find_companion_fix(lmp, history_id_));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "update.h"
 
 #include "core/common/errors.h"
+#include "core/common/validation.h"
 #include "core/geometry/segment_distance.h"
 #include "core/contact/contact_laws.h"
 #include "core/contact/contact_list.h"
@@ -380,7 +382,10 @@ void PairWireContact::compute(int eflag, int vflag) {
   long evaluations = 0;  // exact segment–segment distances computed
   const double dt = update->dt;
   const bool setup = update->setupflag != 0;
-  if (setup) check_time_step();
+  if (setup) {
+    check_rest_geometry();
+    check_time_step();
+  }
   LargestOverlap largest;  // this rank's largest overlap / r_w of the step, and its pair
 
   // The candidates are chosen again at a run's setup: LIGGGHTS' Verlet::setup sorts and
@@ -426,6 +431,45 @@ void PairWireContact::compute(int eflag, int vflag) {
                            "a stiffer material (E)");
 
   if (own_reverse_comm) comm->reverse_comm_pair(this);
+}
+
+// At the setup of each run (all ranks), after find_segments: segments that share no bead
+// touch (docs/design.md, section 1.2), so the segments on either side of a segment of rest
+// length l, of radii r_a and r_b, overlap in the straight wire at rest when r_a + r_b > l
+// (the paper's wire, r_w = 0.1 and l_w = 0.2, is at the limit). Such a wire is refused: its
+// contacts would push at rest and keep it vibrating.
+void PairWireContact::check_rest_geometry() {
+  const int *tag = atom->tag, *prev = wire_->wire_prev, *next = wire_->wire_next;
+  const double *radius = atom->radius, *rest = wire_->wire_rest;
+  constexpr int kNone = std::numeric_limits<int>::max();
+  int mine = kNone;  // this rank's lowest first bead of such a middle segment
+  double mine_values[4] = {0.0, 0.0, 0.0, 0.0};  // its rest length, the two radii, its next bead
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int j = segment_next_[i];
+    if (j < 0 || !prev[i] || !next[j] || tag[i] >= mine) continue;
+    const int p = wire_->linked_bead(prev[i]);
+    if (p < 0 || !(radius[p] + radius[j] > rest[i] * (1.0 + 1e-12))) continue;
+    mine = tag[i];
+    mine_values[0] = rest[i];
+    mine_values[1] = radius[p];
+    mine_values[2] = radius[j];
+    mine_values[3] = next[i];
+  }
+  int lowest = kNone;
+  MPI_Allreduce(&mine, &lowest, 1, MPI_INT, MPI_MIN, world);
+  if (lowest == kNone) return;
+  double owned[4] = {0.0, 0.0, 0.0, 0.0}, values[4];  // only the owner adds its values
+  if (mine == lowest)
+    for (int k = 0; k < 4; k++) owned[k] = mine_values[k];
+  MPI_Allreduce(owned, values, 4, MPI_DOUBLE, MPI_SUM, world);
+  error->all(FLERR, ("pair wire/contact (id -): the segment from bead " + std::to_string(lowest) + " to bead " +
+                     std::to_string(static_cast<long>(values[3])) + " (rest length " +
+                     wiregrain::format_number(values[0]) + ") is shorter than the radii of the segments on "
+                     "either side, " + wiregrain::format_number(values[1]) + " + " +
+                     wiregrain::format_number(values[2]) + ": these segments, which share no bead, overlap "
+                     "in the straight wire at rest; a wire's segments must be at least twice its radius long "
+                     "(create_wire: segment >= 2 radius)")
+                        .c_str());
 }
 
 // At the setup of each run (all ranks): the stiffest contact spring of every pair of

@@ -118,6 +118,7 @@ class PairWireContact : public Pair, public wiregrain_lmp::ContactPublisher {
 
   void allocate();
   void check_time_step();
+  void check_rest_geometry();
   // the steps of compute()
   void find_segments();
   void select_candidates();

@@ -190,6 +190,40 @@ TEST(WireLayout, PolylineErrors) {
   }
 }
 
+// More beads than kMaxWireBeads (1e8) are refused by their count, before any node is
+// stored (a std::bad_alloc otherwise). The counts here from the curves' lengths: a line of 1
+// in chords of 1e-8 has 1e8 segments, 1e8 + 1 beads; a flat loop of R = 1e7 in chords of 0.2
+// has floor(2π / (2 asin(0.01 / 1e6))) = floor(π · 1e8) = 314159265 segments.
+TEST(WireLayout, TooManyBeads) {
+  const auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.argument(), "segment_length");
+      return std::string(e.what());
+    }
+    return std::string("no InvalidArgument");
+  };
+  const Vector3d o(0, 0, 0), x(1, 0, 0);
+  EXPECT_EQ(message([&] { wire_line(o, x, 1.0, 1e-8); }),
+            "segment_length 1e-08 gives 100000001 beads, more than the 100000000 one wire may have "
+            "(take a longer segment_length or a shorter layout)");
+  const double segments = std::floor(2.0 * kPi / (2.0 * std::asin(0.2 / 2e7)));
+  EXPECT_EQ(segments, 314159265.0);
+  EXPECT_EQ(message([] { wire_loop(0, 0, 0, 1e7, 1.0, 0.0, 0.2); }),
+            "segment_length 0.2 gives 314159266 beads, more than the 100000000 one wire may have "
+            "(take a longer segment_length or a shorter layout)");
+  // a ratio beyond any integer type: 1e300 / 1e-300 = inf
+  EXPECT_EQ(message([&] { wire_line(o, x, 1e300, 1e-300); }),
+            "segment_length 1e-300 gives inf beads, more than the 100000000 one wire may have "
+            "(take a longer segment_length or a shorter layout)");
+  // a polyline is counted by walking it (its length only bounds the count): 1 / 0.99e-8
+  // = 101010101 chords
+  EXPECT_EQ(message([&] { wire_polyline({o, x}, 0.99e-8); }),
+            "segment_length 9.9e-09 gives more than 100000000 beads, the most one wire may have "
+            "(take a longer segment_length or a shorter layout)");
+}
+
 TEST(WireLayout, ReadPolyline) {
   std::istringstream in(
       "# a wire\n"

@@ -3,6 +3,8 @@ deck (a few atoms, run 0 or run 1) and the exact ERROR text it must stop with, n
 style, its ID and the argument. Cases that the code handled badly before (a crash, a
 silent acceptance, a misleading or generic message) say so in a comment."""
 
+import math
+
 from liggghts_run import DeckTestCase, main, run
 
 
@@ -186,6 +188,36 @@ class WireDataFile(Table):
     )
 
 
+class DataFileCoordinates(Table):
+    # An Atoms line that no processor takes, named with its atom and the cause. Unchecked,
+    # LIGGGHTS stops after the section with "Did not assign all atoms correctly" (a NaN, a
+    # point outside a non-periodic box, 'x = 5' of the box [-5, 5): the high end is outside);
+    # in a periodic box it puts a NaN at the box's low edge without a word, and an inf makes
+    # remap loop for ever.
+    W = "atom_style wire: Atoms section of data file: "
+    P = "atom_style polyhedron: Atoms section of data file: "
+    PERIODIC_WIRE = READ_WIRE.replace("boundary        f f f", "boundary        p p p")
+    CASES = (
+        (READ_WIRE + "run 0", W + "z of atom 2 must be a finite number, got 'nan'",
+         chain_with(1, "2 1 1 3 0.2 0.1 1.0 0.2 0 nan")),
+        (READ_WIRE + "run 0", W + "x of atom 3 must be a finite number, got '1e400'",
+         chain_with(2, "3 1 2 0 0 0.1 1.0 1e400 0 0")),
+        (READ_WIRE + "run 0", W + "atom 3 lies outside the simulation box: y = -7.5, the box spans [-5, 5) in y "
+         "(a non-periodic boundary)", chain_with(2, "3 1 2 0 0 0.1 1.0 0.4 -7.5 0")),
+        (PERIODIC_WIRE + "run 0", W + "z of atom 2 must be a finite number, got 'nan'",
+         chain_with(1, "2 1 1 3 0.2 0.1 1.0 0.2 0 nan")),
+        (PERIODIC_WIRE + "run 0", W + "y of atom 2 must be a finite number, got 'inf'",
+         chain_with(1, "2 1 1 3 0.2 0.1 1.0 0.2 inf 0")),
+        (READ_GRAIN + "run 0", P + "atom 1 lies outside the simulation box: z = 7, the box spans [-5, 5) in z "
+         "(a non-periodic boundary)", grain_data("1 1 0 1.5 1 0 0 0 0 0 7")),
+        # the box's high end belongs to no sub-domain
+        (READ_GRAIN + "run 0", P + "atom 1 lies outside the simulation box: x = 5, the box spans [-5, 5) in x "
+         "(a non-periodic boundary)", grain_data("1 1 0 1.5 1 0 0 0 5 0 0")),
+        (READ_GRAIN + "run 0", P + "y of atom 1 must be a finite number, got 'nan'",
+         grain_data("1 1 0 1.5 1 0 0 0 0 nan 0")),
+    )
+
+
 class CreateWire(Table):
     CW = "command create_wire (id -): "
     CASES = (
@@ -208,6 +240,77 @@ class CreateWire(Table):
         (WIRE + "create_wire 1 polyline p.txt", CW + "'points': a polyline needs at least 2 points, got 1",
          {"p.txt": "0 0 0\n"}),
         ("units lj\natom_style wire\ncreate_wire 1 line 0 0 0 1 0 0", CW + "create a simulation box first"),
+    )
+
+
+def loop_beads(radius, turns, segment):
+    """The beads of a flat loop: chords of length l subtend Δφ = 2 asin(l / 2R), so the turns
+    hold floor(2π turns / Δφ) whole chords, one bead more than chords."""
+    return math.floor(2 * math.pi * turns / (2 * math.asin(segment / (2 * radius)))) + 1
+
+
+class CreateWireCount(Table):
+    # More beads than a wire may have (1e8, create_grains' cap on N) are refused by their
+    # count, before a node is stored: unchecked, a loop of R = 1e12 aborts with
+    # std::bad_alloc and no ERROR, and a count beyond a long has no defined conversion.
+    CW = "command create_wire (id -): 'segment_length': segment_length "
+    TAIL = " (take a longer segment_length or a shorter layout)"
+    CASES = (
+        (WIRE + "create_wire 1 loop 0 0 0 1e12 1 0",
+         CW + f"0.2 gives {loop_beads(1e12, 1, 0.2)} beads, more than the 100000000 one wire may have" + TAIL),
+        (WIRE + "create_wire 1 loop 0 0 0 1e7 1 0",
+         CW + f"0.2 gives {loop_beads(1e7, 1, 0.2)} beads, more than the 100000000 one wire may have" + TAIL),
+        # a line of 1 in chords of 1e-8: 1e8 segments, one bead over the limit
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 segment 1e-8",
+         CW + "1e-08 gives 100000001 beads, more than the 100000000 one wire may have" + TAIL),
+        # a polyline is counted by walking it: 1 / 0.99e-8 = 101010101 chords
+        (WIRE + "create_wire 1 polyline p.txt segment 0.99e-8",
+         CW + "9.9e-09 gives more than 100000000 beads, the most one wire may have" + TAIL,
+         {"p.txt": "0 0 0\n1 0 0\n"}),
+    )
+
+
+# HYBRID with a stock sphere instead of the cube: atom_style hybrid wire sphere, a sphere
+# (type 1) and the same wire (type 2)
+SPHERE_HYBRID = box("hybrid wire sphere", 4, (-1, 6), 2) + """create_atoms    1 single 0 0 1
+set             atom 1 diameter 1 density 1
+create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
+group           grains type 1
+group           wire type 2
+"""
+
+
+class MixedGroups(Table):
+    # A group holding grains and wire beads (here 'all': the cube or sphere and 3 beads) is
+    # refused by every style that acts on one kind. Unchecked, fix wire/wall pushes the cube
+    # as a bead of its bounding radius, fix wire/elastic takes its radius and mass into its
+    # time-step check, fix nve/gear integrates it as a point mass (its rotation dropped),
+    # fix nscd/polyhedra says "3 grains have no shape (made by create_atoms?...)" of the
+    # beads, and fix wire/grain ignores beads in a grain group of polyhedra.
+    CASES = (
+        (HYBRID + "fix w all wire/wall plane 0 0 -1 0 0 1\nrun 0",
+         "fix wire/wall (id w): group 'all' holds 1 grains (give the wire beads only)"),
+        (SPHERE_HYBRID + "fix w all wire/wall plane 0 0 -1 0 0 1\nrun 0",
+         "fix wire/wall (id w): group 'all' holds 1 grains (give the wire beads only)"),
+        (HYBRID + "fix el all wire/elastic\nrun 0",
+         "fix wire/elastic (id el): group 'all' holds 1 grains (give the wire beads only)"),
+        (HYBRID + "fix i all nve/gear\nrun 0",
+         "fix nve/gear (id i): group 'all' holds 1 grains of atom_style polyhedron (rigid bodies: integrate "
+         "them by fix nscd/polyhedra or fix nve/polyhedron)"),
+        (HYBRID + "fix i grains nve/gear\nrun 0",
+         "fix nve/gear (id i): group 'grains' holds 1 grains of atom_style polyhedron (rigid bodies: integrate "
+         "them by fix nscd/polyhedra or fix nve/polyhedron)"),
+        (SPHERE_HYBRID + "fix i all nve/gear\nrun 0",
+         "fix nve/gear (id i): group 'all' holds 3 wire beads and 1 grains (give the wire beads only, or the "
+         "grains only)"),
+        (HYBRID + "fix nscd all nscd/polyhedra\nrun 0",
+         "fix nscd/polyhedra (id nscd): group 'all' holds 3 wire beads (give the grains only)"),
+        (HYBRID + "fix nscd wire nscd/polyhedra\nrun 0",
+         "fix nscd/polyhedra (id nscd): group 'wire' holds 3 wire beads (give the grains only)"),
+        (HYBRID + "fix n all nve/polyhedron\nrun 0",
+         "fix nve/polyhedron (id n): group 'all' holds 3 wire beads (give the grains only)"),
+        (HYBRID + "fix nscd grains nscd/polyhedra\nfix wg wire wire/grain all\nrun 0",
+         "fix wire/grain (id wg): grain group 'all' holds 3 wire beads (give the grains only)"),
     )
 
 
@@ -249,6 +352,33 @@ class PairWireContact(Table):
         (POLY + "pair_style wire/contact\npair_coeff * *\nrun 0",
          "pair wire/contact (id -): needs atom_style wire (or hybrid with wire), not 'polyhedron'"),
     )
+
+
+class ThickWire(Table):
+    # Segments that share no bead touch (docs/design.md, 1.2): the segments on either side of
+    # a segment of rest length l overlap in the straight wire at rest when their radii sum
+    # to more than l. Unchecked, such a wire runs, with overlap warnings that advise a
+    # smaller time step. The paper's wire (r_w = 0.1, l_w = 0.2) is at the limit and runs.
+    PAIR = "pair_style wire/contact\npair_coeff * *\nrun 0"
+    WHY = (": these segments, which share no bead, overlap in the straight wire at rest; a wire's segments "
+           "must be at least twice its radius long (create_wire: segment >= 2 radius)")
+    # 4 beads, rest 0.2: the middle segment 2-3 between the segments of beads 1 and 3
+    FOUR = ["1 1 0 2 0.2 0.1 1.0 0 0 0", "2 1 1 3 0.2 0.1 1.0 0.2 0 0", "3 1 2 4 0.2 {} 1.0 0.4 0 0",
+            "4 1 3 0 0 0.1 1.0 0.6 0 0"]
+    CASES = (
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 segment 0.1\n" + PAIR,
+         "pair wire/contact (id -): the segment from bead 2 to bead 3 (rest length 0.1) is shorter than the radii "
+         "of the segments on either side, 0.1 + 0.1" + WHY),
+        # one thick bead: its segment and bead 1's sum 0.25 > 0.2 (bead 3's own radius, not bead 2's)
+        (READ_WIRE + PAIR, "pair wire/contact (id -): the segment from bead 2 to bead 3 (rest length 0.2) is "
+         "shorter than the radii of the segments on either side, 0.1 + 0.15" + WHY,
+         {"c.data": wire_data([row.format(0.15) for row in FOUR])}),
+    )
+
+    def test_the_papers_wire_at_the_limit_runs(self):
+        # radii 0.1 + 0.1 = rest length 0.2: the straight wire's segments 1 and 3 just touch
+        data = wire_data([row.format(0.1) for row in self.FOUR])
+        self.assertRanCleanly(run(READ_WIRE + self.PAIR + "\n", files={"c.data": data}))
 
 
 class WireComputes(Table):

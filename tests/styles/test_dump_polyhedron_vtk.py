@@ -345,6 +345,28 @@ run             20
         counts, _ = read_vtp(r.path("post/grains_40.vtp"))
         self.assertEqual((counts["cells"], counts["points"]), (18, 72))
 
+    def test_beads_of_the_group_are_left_out(self):
+        # 'all' of atom_style hybrid polyhedron wire: the 3 cubes (6 faces of 4 points each)
+        # and nothing of the 31 beads, without a warning (unfiltered, each bead is counted as a
+        # grain without a shape)
+        deck = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     sort 0 0.0
+boundary        f f f
+region          box block -6 6 -6 6 -3 9
+create_box      2 box
+create_grains   1 3 layer box 1.0 seed 1234 shape cube 1.0
+create_wire     2 line -3 3 5 3 3 5
+dump            g all polyhedron/vtk 10 post/grains_*.vtp format ascii
+run             0
+"""
+        r = self.run_ok(deck)
+        self.assertNotIn("without a shape", r.output)
+        mesh = Mesh(r.path("post/grains_0.vtp"))
+        self.assertEqual((len(mesh.polys), len(mesh.points)), (18, 72))
+        self.assertEqual(mesh.cell_arrays["id"].astype(int).tolist(), [1] * 6 + [2] * 6 + [3] * 6)
+
     def test_grains_without_shape(self):
         deck = """
 units lj

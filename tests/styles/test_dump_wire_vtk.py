@@ -257,6 +257,28 @@ class WireVTK(DeckTestCase):
         self.assertEqual(ids[s.lines[1]][0], 16)
         self.assertEqual(s.cell_arrays["wire"].tolist(), [1, 0, 2, 3])  # vertices first
 
+    def test_grains_of_the_group_are_left_out(self):
+        # 'all' of atom_style hybrid polyhedron wire (two cubes, ids 1-2, and a line of 11
+        # beads, ids 3-13): the file holds the one polyline of the beads, no grain (unfiltered,
+        # each grain is written as a lone vertex)
+        deck = """
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -4 4 -4 4 -1 6
+create_box      2 box
+create_grains   1 2 layer box 1.0 seed 3 shape cube 1.0
+create_wire     2 line -1 0 3 1 0 3
+dump            d all wire/vtk 10 post/wire_*.vtp format ascii
+run             0
+"""
+        r = self.run_ok(deck)
+        s = read_ascii_vtp(r.path("post/wire_0.vtp"))
+        ids = s.arrays["id"].astype(int)
+        self.assertEqual(s.verts, [])
+        self.assertEqual([ids[line].tolist() for line in s.lines], [list(range(3, 14))])
+
     def test_closed_ring(self):
         n, radius = 12, 1.0
         chord = 2 * radius * math.sin(math.pi / n)

@@ -113,6 +113,38 @@ run             10000
                 self.assertGreater(np.min(np.abs(w)), 0.9)
 
 
+class GrainRotationOfAMixedGroup(DeckTestCase):
+    def test_beads_get_zero_rows(self):
+        # compute grain/rotation on 'all' of atom_style hybrid polyhedron wire: the 11 beads
+        # get zero rows (unfiltered, the quaternion of a shapeless atom), the cube its unit
+        # quaternion, and the vector is that of the grain group
+        r = run("""
+units           lj
+atom_style      hybrid polyhedron wire
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -4 4 -4 4 -1 6
+create_box      2 box
+create_grains   1 1 random box seed 3 shape cube 1
+create_wire     2 line -1 0 5 1 0 5
+group           grains type 1
+group           wire type 2
+compute         r all grain/rotation
+compute         rg grains grain/rotation
+compute         qw wire reduce sum c_r[1] c_r[2] c_r[3] c_r[4]
+compute         qg grains reduce sum c_r[1] c_r[2] c_r[3] c_r[4]
+thermo_style    custom step c_qw[1] c_qw[2] c_qw[3] c_qw[4] c_qg[1] c_qg[2] c_qg[3] c_qg[4] c_r[1] c_rg[1]
+thermo_modify   format float %.17g norm no
+run             0
+""")
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        for k in range(1, 5):
+            self.assertEqual(t[f"qw[{k}]"][0], 0.0)
+        self.assertAlmostEqual(sum(t[f"qg[{k}]"][0] ** 2 for k in range(1, 5)), 1.0, delta=1e-15)
+        self.assertEqual(t["r[1]"][0], t["rg[1]"][0])
+
+
 class FreeFall(DeckTestCase):
     def test_free_fall_exact(self):
         r = run(HEADER + """

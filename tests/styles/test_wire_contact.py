@@ -175,6 +175,40 @@ atom_modify     sort 0 0.0
         self.assertAlmostEqual(tangential / (2 * k_t * delta), 1.0, delta=2e-14)    # measured 1.9e-15
 
 
+class ContactsComputeOfAMixedGroup(DeckTestCase):
+    def test_overlap_over_the_beads_radius(self):
+        # compute wire/contacts on 'all' of atom_style hybrid wire sphere: two one-segment
+        # wires (r_w = 0.1) crossed at the overlap ξ = 2e-3 and a sphere of radius 0.02 far
+        # off. c_ID[3] is ξ / r_w = 0.02: the sphere's radius is no bead's (unfiltered: ξ / 0.02)
+        xi = 2e-3
+        r = run(f"""
+units           lj
+atom_style      hybrid wire sphere
+atom_modify     map array sort 0 0.0
+boundary        f f f
+newton          off
+region          box block -5 5 -5 5 -5 5
+create_box      2 box
+create_atoms    1 single 3 3 3
+set             atom 1 diameter 0.04 density 1
+create_wire     2 line -0.1 0 {0.1 - xi / 2} 0.1 0 {0.1 - xi / 2}
+create_wire     2 line 0 -0.1 -{0.1 - xi / 2} 0 0.1 -{0.1 - xi / 2}
+pair_style      wire/contact
+pair_coeff      * *
+neighbor        0.1 bin
+compute         c all wire/contacts
+thermo_style    custom step c_c[1] c_c[2] c_c[3]
+thermo_modify   format float %.17g
+run             0
+""")
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        self.assertEqual(t["c[1]"][0], 1)
+        # measured 1.7e-18 from ξ and 1.7e-17 from ξ / r_w (rounding of the coordinates)
+        self.assertAlmostEqual(t["c[2]"][0], xi, delta=1e-17)
+        self.assertAlmostEqual(t["c[3]"][0], xi / 0.1, delta=1e-16)
+
+
 class StiffnessUnderLoad(DeckTestCase):
     # The same stiffnesses the other way round: beads pushed by a known constant force
     # (fix addforce) settle, damped by the contact's own dashpot only, at the overlap

@@ -18,9 +18,27 @@ namespace {
 // length 1 with l_w 0.2 (1/0.2 = 4.999... in floating point) gives 5 segments.
 constexpr double kCountTolerance = 1e-9;
 
+// A bead count in words: the integer when it has one, else as a number (1e+300, inf).
+std::string bead_count_text(double beads) {
+  return beads < 9e18 ? std::to_string(static_cast<long long>(beads)) : format_number(beads);
+}
 
-long whole_segments(double ratio) {
-  return static_cast<long>(std::floor(ratio * (1.0 + kCountTolerance)));
+[[noreturn]] void throw_too_many_beads(double segment_length, const std::string& how_many) {
+  throw InvalidArgument("segment_length", "segment_length " + format_number(segment_length) + " gives " + how_many +
+                                              " (take a longer segment_length or a shorter layout)");
+}
+
+// The whole segments in a curve `ratio` segment lengths long, checked against kMaxWireBeads
+// before the count is converted (a ratio of 1e30 or inf has no long). Beyond the limit the
+// count is floor(ratio): the tolerance, relative, would add ratio × 1e-9 segments there.
+long whole_segments(double ratio, double segment_length) {
+  const double plain = std::floor(ratio);
+  const double segments =
+      plain + 1.0 > static_cast<double>(kMaxWireBeads) ? plain : std::floor(ratio * (1.0 + kCountTolerance));
+  if (!(segments + 1.0 <= static_cast<double>(kMaxWireBeads)))
+    throw_too_many_beads(segment_length, bead_count_text(segments + 1.0) + " beads, more than the " +
+                                             std::to_string(kMaxWireBeads) + " one wire may have");
+  return static_cast<long>(segments);
 }
 
 // Azimuth step Δφ ∈ (0, π] of a helix chord of length l:
@@ -58,7 +76,7 @@ std::vector<Eigen::Vector3d> wire_line(const Eigen::Vector3d& start,
                                            format_number(direction.x()) + ", " +
                                            format_number(direction.y()) + ", " +
                                            format_number(direction.z()) + ")");
-  const long segments = whole_segments(length / segment_length);
+  const long segments = whole_segments(length / segment_length, segment_length);
   if (segments < 1)
     throw InvalidArgument("length", "length must be at least one segment_length (" +
                                         format_number(segment_length) + "), got " +
@@ -88,7 +106,7 @@ std::vector<Eigen::Vector3d> wire_helix(const WireHelix& h, double segment_lengt
                                         ": one segment must fit in half a turn "
                                         "(4 radius^2 + pitch^2/4 >= segment_length^2)");
   const double dphi = helix_azimuth_step(h.radius, h.pitch, l);
-  const long segments = whole_segments(2.0 * kPi * h.turns / dphi);
+  const long segments = whole_segments(2.0 * kPi * h.turns / dphi, l);
   if (segments < 1)
     throw InvalidArgument("turns", "turns " + format_number(h.turns) +
                                        " is shorter than one segment");
@@ -117,24 +135,15 @@ std::vector<Eigen::Vector3d> wire_loop(double centre_x, double centre_y, double 
   return wire_helix(h, segment_length);
 }
 
-std::vector<Eigen::Vector3d> wire_polyline(const std::vector<Eigen::Vector3d>& points,
-                                           double segment_length) {
-  require_positive("segment_length", segment_length);
-  if (points.size() < 2)
-    throw InvalidArgument("points", "a polyline needs at least 2 points, got " +
-                                        std::to_string(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!points[i].allFinite())
-      throw InvalidArgument("points", "polyline point " + std::to_string(i + 1) +
-                                          " is not a finite point");
-    if (i > 0 && (points[i] - points[i - 1]).squaredNorm() == 0.0)
-      throw InvalidArgument("points", "polyline points " + std::to_string(i) + " and " +
-                                          std::to_string(i + 1) +
-                                          " coincide (zero-length piece)");
-  }
+namespace {
+
+// The nodes of a polyline resampled at chord l_w (wire_polyline), each given to visit(node)
+// in order, the first point first, until the polyline ends or visit returns false.
+template <class Visit>
+void walk_polyline(const std::vector<Eigen::Vector3d>& points, double segment_length, Visit visit) {
   const double l2 = segment_length * segment_length;
-  std::vector<Eigen::Vector3d> nodes{points[0]};
   Eigen::Vector3d node = points[0];
+  if (!visit(node)) return;
   std::size_t piece = 0;  // the polyline piece [points[piece], points[piece+1]] holding node
   while (true) {
     bool found = false;
@@ -152,13 +161,48 @@ std::vector<Eigen::Vector3d> wire_polyline(const std::vector<Eigen::Vector3d>& p
       double u = qb > 0.0 ? -qc / (qb + root) : (root - qb) / qa;
       u = std::min(1.0, std::max(0.0, u));
       node = a + u * d;
-      nodes.push_back(node);
+      if (!visit(node)) return;
       piece = s;
       found = true;
       break;
     }
     if (!found) break;
   }
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> wire_polyline(const std::vector<Eigen::Vector3d>& points,
+                                           double segment_length) {
+  require_positive("segment_length", segment_length);
+  if (points.size() < 2)
+    throw InvalidArgument("points", "a polyline needs at least 2 points, got " +
+                                        std::to_string(points.size()));
+  double length = 0.0;  // along the pieces: at least the chords between the nodes
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite())
+      throw InvalidArgument("points", "polyline point " + std::to_string(i + 1) +
+                                          " is not a finite point");
+    if (i > 0 && (points[i] - points[i - 1]).squaredNorm() == 0.0)
+      throw InvalidArgument("points", "polyline points " + std::to_string(i) + " and " +
+                                          std::to_string(i + 1) +
+                                          " coincide (zero-length piece)");
+    if (i > 0) length += (points[i] - points[i - 1]).norm();
+  }
+  // Each chord spans at least its own length of the polyline, so length / l_w + 1 bounds the
+  // beads; beyond the limit, count them without storing (up to one past the limit).
+  if (!(length / segment_length + 1.0 <= static_cast<double>(kMaxWireBeads))) {
+    long count = 0;
+    walk_polyline(points, segment_length, [&](const Eigen::Vector3d&) { return ++count <= kMaxWireBeads; });
+    if (count > kMaxWireBeads)
+      throw_too_many_beads(segment_length, "more than " + std::to_string(kMaxWireBeads) +
+                                               " beads, the most one wire may have");
+  }
+  std::vector<Eigen::Vector3d> nodes;
+  walk_polyline(points, segment_length, [&](const Eigen::Vector3d& node) {
+    nodes.push_back(node);
+    return true;
+  });
   if (nodes.size() < 2)
     throw InvalidArgument("points", "the polyline never gets segment_length (" +
                                         format_number(segment_length) +

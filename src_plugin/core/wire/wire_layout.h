@@ -11,6 +11,11 @@
 
 namespace wiregrain {
 
+// The most beads one layout may give (create_grains takes at most as many grains): a layout
+// that would give more throws InvalidArgument("segment_length", "segment_length L gives N
+// beads, more than the 100000000 one wire may have ...") before any node is allocated.
+constexpr long kMaxWireBeads = 100000000L;
+
 // Straight wire from `start` along `direction` (need not be unit), floor(length / l_w)
 // segments (a ratio within 1e-9 relative of an integer counts as that integer).
 std::vector<Eigen::Vector3d> wire_line(const Eigen::Vector3d& start,
