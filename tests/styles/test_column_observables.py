@@ -130,6 +130,195 @@ run             0
         print(f"\ncoordination: {t['zwp[1]'][0]:.0f} wire-grain contacts on 6 segments, z_wpc = {t['zwp[5]'][0]:.15g}")
 
 
+def segment_box_distance(p0, p1, centre, half):
+    """Distance from the segment p0–p1 to the axis-aligned box of the given centre and half
+    widths: the distance of a point to the box is the norm of its clamped offset, a convex
+    function of the point, minimised along the segment by golden-section search."""
+    p0, p1, centre = np.asarray(p0), np.asarray(p1), np.asarray(centre)
+
+    def distance(t):
+        offset = np.abs(p0 + t * (p1 - p0) - centre) - half
+        return float(np.linalg.norm(np.maximum(offset, 0.0)))
+
+    if distance(0.0) > 1.0 + np.linalg.norm(p1 - p0):  # far: the point distance is 1-Lipschitz
+        return distance(0.0) - np.linalg.norm(p1 - p0)
+
+    lo, hi = 0.0, 1.0
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(120):  # the bracket shrinks to 0.618^120 ~ 1e-25
+        a, b = hi - ratio * (hi - lo), lo + ratio * (hi - lo)
+        if distance(a) <= distance(b):
+            hi = b
+        else:
+            lo = a
+    return min(distance(0.0), distance(1.0), distance(0.5 * (lo + hi)))
+
+
+def height_quantile(tops, q):
+    """The q-quantile of the tops by linear interpolation between order statistics."""
+    z = sorted(tops)
+    p = q * (len(z) - 1)
+    k = int(math.floor(p))
+    return z[k] if k + 1 == len(z) else z[k] + (p - k) * (z[k + 1] - z[k])
+
+
+class StaticColumn(DeckTestCase):
+    """in.column's four observables (H_n, φ_p, U_s/L, z_wpc), formed as the deck forms them
+    at its end, on a column built by hand: three layers of 3 x 3 upright cubes (core edge 1,
+    sweep r_p = 0.1, centres 1.5 apart, each layer resting on the one below), two more
+    cubes on the middle stack, and a wire loop (turns 0.95, pitch 0, Table 1's r_w = 0.1 and
+    rest length l_w = 0.2) about the column's axis at height 3.69, 0.19 above the cores' top
+    faces of the third layer: a segment over a top face overlaps the cube by 0.01, a
+    segment over a gap touches nothing or a rounded edge. The beads are put on an ellipse
+    (half axes 1.04 R and 1.01 R, R = 1.8), so that the segments are stretched and bent by
+    different amounts. Every expected value is computed here from the geometry."""
+
+    R, Z_WIRE, TURNS = 1.8, 3.69, 0.95
+    SCALE = (1.04, 1.01)
+    L_W, R_W, R_P = 0.2, 0.1, 0.1
+    E_W, M_ELO, M_ROT = 100.0, 2.0, 0.3
+
+    def layout(self):
+        """Grain centres (upright cubes) and bead positions."""
+        cubes = [(1.5 * i, 1.5 * j, 0.6 + 1.2 * k) for k in range(3) for j in (-1, 0, 1) for i in (-1, 0, 1)]
+        cubes += [(0.0, 0.0, 4.2), (0.0, 0.0, 5.4)]
+        # create_wire loop with pitch 0: nodes at azimuth k Δφ, Δφ = 2 asin(l_w / 2R), as many
+        # whole segments as fit in the turns (docs/commands/create_wire.md); moved here to
+        # the ellipse at the same azimuths
+        step = 2.0 * math.asin(self.L_W / (2.0 * self.R))
+        segments = int(math.floor(2.0 * math.pi * self.TURNS / step))
+        beads = np.array([(self.SCALE[0] * self.R * math.cos(k * step), self.SCALE[1] * self.R * math.sin(k * step),
+                           self.Z_WIRE) for k in range(segments + 1)])
+        return cubes, beads
+
+    def expected_energy(self, beads):
+        """U_s + U_b of the discrete wire (fix wire/elastic's law, docs/design.md section 1.2):
+        ½ k_s (|d| − l_w)² per segment, k_s = m_elo E π r_w² / l_w; ½ κ θ² per inner bead,
+        κ = m_rot E π r_w⁴ / (4 l_w), θ the angle between its two segments."""
+        k_s = self.M_ELO * self.E_W * math.pi * self.R_W ** 2 / self.L_W
+        kappa = self.M_ROT * self.E_W * math.pi * self.R_W ** 4 / (4.0 * self.L_W)
+        d = np.diff(beads, axis=0)
+        lengths = np.linalg.norm(d, axis=1)
+        stretching = 0.5 * k_s * np.sum((lengths - self.L_W) ** 2)
+        cross = np.linalg.norm(np.cross(d[:-1], d[1:]), axis=1)
+        theta = np.arctan2(cross, np.sum(d[:-1] * d[1:], axis=1))
+        bending = 0.5 * kappa * np.sum(theta ** 2)
+        return stretching, bending, lengths.sum()
+
+    def test_observables_of_a_hand_built_column(self):
+        cubes, beads = self.layout()
+        made = scene([c + IDENTITY for c in cubes], [f"loop 0 0 {self.Z_WIRE} {self.R} {self.TURNS} 0"],
+                     shape="cube 1", sweep=self.R_P, box=(-6, 6, -6, 6, -1, 8))
+        with open(made.path("scene.data")) as f:
+            text = f.read().splitlines()
+        k = next(i for i, line in enumerate(text) if line.startswith("Atoms")) + 2
+        end = next(i for i in range(k, len(text)) if not text[i].strip())
+        rows = [i for i in range(k, end) if int(text[i].split()[5]) < 0]  # the beads (no shape)
+        self.assertEqual(len(rows), len(beads))  # create_wire laid as many nodes as computed here
+        for i in rows:
+            words = text[i].split()
+            words[2:5] = [repr(float(v)) for v in beads[int(words[0]) - len(cubes) - 1]]
+            text[i] = " ".join(words)
+        with open(made.path("scene.data"), "w") as f:
+            f.write("\n".join(text) + "\n")
+        # the observables as in.column forms them: H0 = $(c_h) at the start of the wall
+        # phase, H_n = c_h / H0 later; here the top cube is then moved to the floor beside
+        # the column (outside the loop), a second `run 0` evaluates them again
+        r = run(deck(f"""
+fix             materialE all property/global youngsModulus peratomtype 1000 {self.E_W}
+fix             materialNu all property/global poissonsRatio peratomtype 0.3 0
+fix             floor wire wire/wall plane 0 0 0 0 0 1 mu_s 0.5 mu_d 0.5 restitution 0.5
+fix             nscd grains nscd/polyhedra friction 0.5 timestep 2e-3 wall_fix floor wall_friction 0.5
+fix             elastic wire wire/elastic m_elo {self.M_ELO} m_rot {self.M_ROT}
+fix             integr wire nve/gear scheme verlet
+fix             wg wire wire/grain grains mu_s 0.5 mu_d 0.5 restitution 0.5 E_p 1000 nu_p 0.3
+timestep        1e-3
+compute         h grains column/height update_on_run_end yes
+compute         phi grains column/retention wire axis 0 0
+compute         energy wire wire/energy
+variable        Us equal c_energy[5]
+variable        Ustr equal c_energy[1]
+variable        Ubend equal c_energy[2]
+variable        L equal c_energy[4]
+compute         zwp wire wire/contacts kind wire_grain
+variable        zwpc equal c_zwp[5]
+thermo_style    custom step c_h c_phi[1] c_phi[2] c_phi[3] c_phi[4] v_Us v_Ustr v_Ubend v_L v_zwpc c_zwp[1] c_zwp[2]
+thermo_modify   format float %.17g norm no
+run             0
+variable        H0 equal $(c_h)
+variable        Hn equal c_h/${{H0}}
+set             atom {len(cubes)} x 4.0 z 0.6
+thermo_style    custom step c_h v_Hn c_phi[1] c_phi[3] c_phi[4] v_Us v_zwpc
+thermo_modify   format float %.17g norm no
+run             0
+write_dump      all custom dump.c id type x y z f_wg[4] modify format '%d %d %.17g %.17g %.17g %.17g'
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        first, second = r.thermo(0), r.thermo(-1)
+
+        # H: the 0.98 quantile of the tops z + 1/2 + r_p (29 tops: p = 0.98 x 28 = 27.44,
+        # between the two highest), before and after the top cube moved to the floor
+        tops = [z + 0.5 + self.R_P for _, _, z in cubes]
+        h0 = height_quantile(tops, 0.98)
+        h1 = height_quantile(tops[:-1] + [0.6 + 0.5 + self.R_P], 0.98)
+        self.assertAlmostEqual(h0, 4.8 + 0.44 * 1.2, delta=1e-12)  # the formula on these tops, by hand
+        # (measured: H exact in both states, H_n 3e-16 off; every value below is exact but
+        # for round-off, measured at most 4e-15 off, and held to a few times that)
+        self.assertAlmostEqual(first["h"][0], h0, delta=1e-14)
+        self.assertAlmostEqual(second["h"][0], h1, delta=1e-14)
+        self.assertAlmostEqual(second["Hn"][0], h1 / h0, delta=2e-15)
+
+        # φ_p: the grains whose centre lies inside the cylinder of the beads' mean distance
+        # from the axis (here 1.8 x ~1.01: the middle and the four edge stacks, 5 per layer,
+        # and the two cubes on top; not the corner stacks at 2.12)
+        radius = np.mean(np.hypot(beads[:, 0], beads[:, 1]))
+        inside = [math.hypot(x, y) < radius for x, y, _ in cubes]
+        self.assertEqual(sum(inside), 17)
+        self.assertAlmostEqual(first["phi[2]"][0], radius, delta=1e-14)
+        self.assertEqual((first["phi[3]"][0], first["phi[4]"][0]), (17, 29))
+        self.assertEqual(first["phi[1]"][0], 17 / 29)
+        self.assertEqual((second["phi[3]"][0], second["phi[4]"][0]), (16, 29))  # the moved cube is out
+        self.assertEqual(second["phi[1]"][0], 16 / 29)
+
+        # U_s/L from the bead positions (stretched by 1 to 4 %, bent by about Δφ at each inner bead)
+        stretching, bending, length = self.expected_energy(beads)
+        print(f"\nhand-built column: H0 {h0:.15g}, H {h1:.15g}, H_n {h1 / h0:.15g}; φ_p 17/29 in radius {radius:.15g}; "
+              f"U_s {stretching:.10g} + U_b {bending:.10g} over L {length:.15g}: U_s/L {(stretching + bending) / length:.15g} "
+              f"(fix: {first['Us'][0]:.15g})")
+        self.assertGreater(stretching, 0.5 * bending)  # both terms matter
+        self.assertAlmostEqual(first["Ustr"][0] / stretching, 1.0, delta=1e-14)  # measured 4e-16
+        self.assertAlmostEqual(first["Ubend"][0] / bending, 1.0, delta=1e-14)     # 7e-16
+        self.assertAlmostEqual(first["L"][0], length, delta=3e-14)                # 3.6e-15
+        self.assertAlmostEqual(first["Us"][0] / ((stretching + bending) / length), 1.0, delta=1e-14)
+        self.assertEqual(second["Us"][0], first["Us"][0])
+
+        # z_wpc: a segment touches a cube where the distance from its axis to the cube's
+        # core is below r_p + r_w = 0.2 (no distance here within 2e-3 of that)
+        reach = self.R_P + self.R_W
+        counts = np.zeros(len(beads))
+        closest = math.inf
+        for s in range(len(beads) - 1):
+            for c in cubes:
+                d = segment_box_distance(beads[s], beads[s + 1], c, 0.5)
+                closest = min(closest, abs(d - reach))
+                counts[s] += d < reach
+        self.assertGreater(closest, 2e-3)
+        segments = len(beads) - 1
+        print(f"z_wpc: {counts.sum():.0f} contacts on {segments} segments (closest distance {closest:.2e} from "
+              f"the reach), fix {first['zwpc'][0]:.15g}")
+        self.assertGreater(counts.sum(), 0.5 * segments)
+        self.assertLess(counts.sum(), segments)  # some segments over the gaps
+        self.assertEqual(first["zwp[1]"][0], counts.sum())
+        self.assertAlmostEqual(first["zwp[2]"][0], reach - (self.Z_WIRE - 3.5), delta=1e-14)  # 0.01 deep
+        self.assertAlmostEqual(first["zwpc"][0], counts.sum() / segments, delta=1e-15)
+        self.assertEqual(second["zwpc"][0], first["zwpc"][0])
+        dump = read_dump(r.path("dump.c"))
+        on_beads = dump["type"] == 2
+        np.testing.assert_array_equal(dump["f_wg[4]"][on_beads], counts)  # segment by segment
+        np.testing.assert_array_equal(np.column_stack([dump[c][on_beads] for c in "xyz"]), beads)
+        self.assertEqual(dump["x"][len(cubes) - 1], 4.0)  # the moved cube
+
+
 class Errors(DeckTestCase):
     @classmethod
     def setUpClass(cls):
