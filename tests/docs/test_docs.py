@@ -117,6 +117,8 @@ PROBES = {
     "fix_wire_grain.md": {"keyword": _HYBRID + "fix wg wire wire/grain grains"},
     "compute_column_height.md": {"keyword": _CUBE + "compute h all column/height"},
     "compute_column_retention.md": {"keyword": _CUBE + "compute r all column/retention radius 1"},
+    "compute_contact_local.md": {"keyword": _CUBE + "compute c all contact/local"},
+    "compute_grain_stress.md": {"keyword": _CUBE + "compute s all grain/stress"},
 }
 # Commands that read positional arguments only (no keyword loop: checked in their source).
 POSITIONAL_ONLY = {"grain_shapes.md": "src_plugin/grains/grain_shapes.cpp",

@@ -166,6 +166,22 @@ def read_dump(path, columns=None):
     return {name: data[:, j] for j, name in enumerate(names)}
 
 
+def read_local_dump(path):
+    """Last snapshot of a LAMMPS 'dump local' text file as {column: array} (rows in the
+    file's order; empty arrays when the snapshot has no entries)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
+    if not starts:
+        raise AssertionError(f"{path}: no snapshot")
+    block = lines[starts[-1]:]
+    count = int(block[3])
+    k = next(k for k, line in enumerate(block) if line.startswith("ITEM: ") and k > 4 and "BOX" not in line)
+    names = block[k].split()[2:]
+    data = np.array([[float(w) for w in line.split()] for line in block[k + 1:k + 1 + count]]).reshape(count, len(names))
+    return {name: data[:, j] for j, name in enumerate(names)}
+
+
 def align_by_position(reference, other, columns=("x", "y", "z")):
     """Reorder the snapshot `other` so that atom k is the one nearest to atom k of
     `reference` (atom ids from create_atoms depend on the MPI decomposition)."""

@@ -15,6 +15,15 @@ const char* contact_kind_name(ContactKind kind) {
   return "unknown";
 }
 
+bool contact_kind_from_name(const std::string& name, ContactKind& kind) {
+  for (int k = 0; k < kContactKindCount; k++)
+    if (name == contact_kind_name(ContactKind(k))) {
+      kind = ContactKind(k);
+      return true;
+    }
+  return false;
+}
+
 void ContactSummary::merge(const ContactSummary& other) {
   contacts += other.contacts;
   points += other.points;

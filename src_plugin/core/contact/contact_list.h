@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace wiregrain {
@@ -17,6 +18,8 @@ namespace wiregrain {
 enum class ContactKind { wire_wire = 0, wire_wall = 1, wire_grain = 2, grain_grain = 3, grain_wall = 4 };
 constexpr int kContactKindCount = 5;
 const char* contact_kind_name(ContactKind kind);
+// The kind named `name` (a contact_kind_name); false when no kind has that name.
+bool contact_kind_from_name(const std::string& name, ContactKind& kind);
 
 // open: no force (an NSCD point inside the activation distance that stayed apart);
 // stick: tangential force inside the Coulomb cone; slide: on the cone.
