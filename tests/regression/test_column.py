@@ -501,8 +501,10 @@ class Column(DeckTestCase):
                                     "in.column: with ke_walls, t_check must be > 0 and t_quiet >= t_check, got 0.5 and 0.1"),
                                    ({"skin": -1}, "fix wire/grain (id wg): value of 'skin' must be >= 0, got -1"),
                                    ({"mu_roll": -1, "grains": "spheres"}, "in.column: mu_roll must be >= 0, got -1"),
-                                   ({"grains": "cubes"}, "Label wasn't found in input script"),
-                                   ({"ke_of": "wire"}, "Label wasn't found in input script"),
+                                   ({"grains": "cubes"},
+                                    "in.column: grains must be nscd, spheres or superquadrics, got cubes"),
+                                   ({"ke_of": "wire"}, "in.column: ke_of must be grains or all, got wire"),
+                                   ({"wire_scheme": "rk4"}, "in.column: wire_scheme must be auto, gear5 or verlet, got rk4"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)
