@@ -81,11 +81,13 @@ def grain_data(row):
 READ_GRAIN = head("polyhedron") + "grain_shapes    read s.shapes\nread_data       g.data\n"
 
 
-class Table(DeckTestCase):
-    """CASES: (deck, expected ERROR text[, files]); every deck must stop with it."""
+class Table:
+    """CASES: (deck, expected ERROR text[, files]); every deck must stop with it. A mixin, not
+    a test case itself (an empty table would pass): a table is `class T(Table, DeckTestCase)`."""
     CASES = ()
 
     def test_cases(self):
+        self.assertTrue(self.CASES, "an empty table")
         for case in self.CASES:
             deck, message = case[0], case[1]
             files = case[2] if len(case) > 2 else None
@@ -93,7 +95,7 @@ class Table(DeckTestCase):
                 self.assertStopsWith(run(deck + "\n", files=files), message)
 
 
-class WireLinks(Table):
+class WireLinks(Table, DeckTestCase):
     # A link to a bead ID beyond the largest atom ID must be refused: unchecked, it reads past
     # the end of LIGGGHTS' array map (bead 99 taken as some other atom, the run going on
     # silently; bead 7 giving "the segment from bead 1 to bead 7 has zero length").
@@ -107,7 +109,7 @@ class WireLinks(Table):
     )
 
 
-class NscdCounts(Table):
+class NscdCounts(Table, DeckTestCase):
     # Counts beyond an int must be refused, not wrapped: wrapped, max_iterations 3000000000
     # stops at the first solve with "max_iterations must be >= 1, got -1294967296", every
     # 3000000000 with "h must be > 0", write_problems 3000000000 is accepted (and never
@@ -127,7 +129,7 @@ class NscdCounts(Table):
     )
 
 
-class GrainShapesFile(Table):
+class GrainShapesFile(Table, DeckTestCase):
     # Guards against: a non-finite vertex coordinate reported as "too few vertex
     # coordinates"; a negative shape count read as an empty library; a library read while
     # grains exist replacing the shapes under them (grains 1 and 2 keeping indices beyond
@@ -146,7 +148,7 @@ class GrainShapesFile(Table):
     )
 
 
-class PairCoeffTypes(Table):
+class PairCoeffTypes(Table, DeckTestCase):
     # Ranges are checked: unchecked, '3*' of 2 types selects nothing and stops with
     # LIGGGHTS' "All pair coeffs are not set", '*5' with "Numeric index is out of bounds".
     PAIR = WIRE_LINE + "pair_style wire/contact\n"
@@ -160,7 +162,7 @@ class PairCoeffTypes(Table):
     )
 
 
-class DumpCannotWrite(Table):
+class DumpCannotWrite(Table, DeckTestCase):
     # VTK's writer returns success when it cannot open the file: the snapshot went
     # missing and only the series file's failure stopped the run, naming that file.
     CASES = (
@@ -171,7 +173,7 @@ class DumpCannotWrite(Table):
     )
 
 
-class WireDataFile(Table):
+class WireDataFile(Table, DeckTestCase):
     CASES = (
         (READ_WIRE + "run 0", "atom_style wire: Atoms section of data file: wire-prev must be a bead ID >= 0 "
          "(0: free end), got '-1'", chain_with(0, "1 1 -1 2 0.2 0.1 1.0 0 0 0")),
@@ -188,7 +190,7 @@ class WireDataFile(Table):
     )
 
 
-class DataFileCoordinates(Table):
+class DataFileCoordinates(Table, DeckTestCase):
     # An Atoms line that no processor takes, named with its atom and the cause. Unchecked,
     # LIGGGHTS stops after the section with "Did not assign all atoms correctly" (a NaN, a
     # point outside a non-periodic box, 'x = 5' of the box [-5, 5): the high end is outside);
@@ -218,7 +220,7 @@ class DataFileCoordinates(Table):
     )
 
 
-class CreateWire(Table):
+class CreateWire(Table, DeckTestCase):
     CW = "command create_wire (id -): "
     CASES = (
         (WIRE + "create_wire 1", CW + "expected: create_wire type line|loop|helix|polyline ..."),
@@ -249,7 +251,7 @@ def loop_beads(radius, turns, segment):
     return math.floor(2 * math.pi * turns / (2 * math.asin(segment / (2 * radius)))) + 1
 
 
-class CreateWireCount(Table):
+class CreateWireCount(Table, DeckTestCase):
     # More beads than a wire may have (1e8, create_grains' cap on N) are refused by their
     # count, before a node is stored: unchecked, a loop of R = 1e12 aborts with
     # std::bad_alloc and no ERROR, and a count beyond a long has no defined conversion.
@@ -280,7 +282,7 @@ group           wire type 2
 """
 
 
-class MixedGroups(Table):
+class MixedGroups(Table, DeckTestCase):
     # A group holding grains and wire beads (here 'all': the cube or sphere and 3 beads) is
     # refused by every style that acts on one kind. Unchecked, fix wire/wall pushes the cube
     # as a bead of its bounding radius, fix wire/elastic takes its radius and mass into its
@@ -314,7 +316,7 @@ class MixedGroups(Table):
     )
 
 
-class WireElasticAndWall(Table):
+class WireElasticAndWall(Table, DeckTestCase):
     CASES = (
         (WIRE_LINE + "fix el all wire/elastic E abc\nrun 0",
          "fix wire/elastic (id el): value of 'E' must be a finite number, got 'abc'"),
@@ -337,7 +339,7 @@ class WireElasticAndWall(Table):
     )
 
 
-class PairWireContact(Table):
+class PairWireContact(Table, DeckTestCase):
     CASES = (
         (WIRE_LINE + "pair_style wire/contact E abc\npair_coeff * *\nrun 0",
          "pair_style wire/contact (id -): value of 'E' must be a finite number, got 'abc'"),
@@ -354,7 +356,7 @@ class PairWireContact(Table):
     )
 
 
-class ThickWire(Table):
+class ThickWire(Table, DeckTestCase):
     # Segments that share no bead touch (docs/design.md, 1.2): the segments on either side of
     # a segment of rest length l overlap in the straight wire at rest when their radii sum
     # to more than l. Unchecked, such a wire runs, with overlap warnings that advise a
@@ -381,7 +383,7 @@ class ThickWire(Table):
         self.assertRanCleanly(run(READ_WIRE + self.PAIR + "\n", files={"c.data": data}))
 
 
-class WireComputes(Table):
+class WireComputes(Table, DeckTestCase):
     THERMO = "\nthermo_style custom step c_e[1]\nrun 0"
     CASES = (
         (WIRE_LINE + "compute e all wire/energy colour red\nrun 0", "compute wire/energy (id e): unknown keyword 'colour'; accepted: fix"),
@@ -402,7 +404,7 @@ class WireComputes(Table):
     )
 
 
-class NscdKeywords(Table):
+class NscdKeywords(Table, DeckTestCase):
     NSCD = ONE_CUBE + "fix nscd all nscd/polyhedra "
     P = "fix nscd/polyhedra (id nscd): "
     CASES = (
@@ -429,7 +431,7 @@ class NscdKeywords(Table):
     )
 
 
-class Grains(Table):
+class Grains(Table, DeckTestCase):
     CASES = (
         (ONE_CUBE + "fix int all nve/polyhedron colour red\nrun 1", "fix nve/polyhedron (id int): unknown keyword 'colour'; accepted: rotation"),
         (ONE_CUBE + "fix int all nve/polyhedron rotation\nrun 1", "fix nve/polyhedron (id int): missing value after 'rotation'"),
@@ -465,7 +467,7 @@ class Grains(Table):
     )
 
 
-class CreateGrainsAndShapes(Table):
+class CreateGrainsAndShapes(Table, DeckTestCase):
     CG = "command create_grains (id -): "
     GS = "command grain_shapes (id -): "
     RANDOM = POLY + "create_grains 1 5 random box seed 1 "
@@ -497,7 +499,7 @@ class CreateGrainsAndShapes(Table):
     )
 
 
-class WireGrainAndMaterials(Table):
+class WireGrainAndMaterials(Table, DeckTestCase):
     NSCD = HYBRID + "fix nscd grains nscd/polyhedra\n"
     WG = "fix wire/grain (id wg): "
     MATERIALS = ("fix m1 all property/global youngsModulus peratomtype {} {}\n"
@@ -522,7 +524,7 @@ class WireGrainAndMaterials(Table):
     )
 
 
-class DumpsAndDeckError(Table):
+class DumpsAndDeckError(Table, DeckTestCase):
     CASES = (
         (WIRE_LINE + "dump d all wire/vtk 10 a*/w_*.vtp\nrun 0",
          "dump wire/vtk (id d): file 'a*/w_*.vtp' must contain exactly one '*', in its name"),
