@@ -12,7 +12,7 @@ import tempfile
 
 import numpy as np
 
-from liggghts_run import SOURCE, DeckTestCase, deck, main, run
+from liggghts_run import SOURCE, DeckTestCase, deck, deck_box, main, run
 
 COLUMN = deck("input_scripts/in.column")
 LOAD = deck("input_scripts/in.column_load")
@@ -138,14 +138,7 @@ class Load(DeckTestCase):
             self.assertStopsWith(run(LOAD, variables=dict(R=2, **variables), workdir=workdir), message)
 
     def test_a_restart_without_grains_stops_with_a_message(self):
-        made = run("""
-units           lj
-atom_style      hybrid polyhedron wire
-atom_modify     map array sort 0 0.0
-boundary        f f f
-region          box block -3 3 -3 3 -1 5
-create_box      2 box
-create_wire     2 line 0 0 1 1 0 1
+        made = run(deck_box("hybrid polyhedron wire", 3, (-1, 5), 2) + """create_wire     2 line 0 0 1 1 0 1
 write_restart   wire_only.restart
 """)
         self.assertRanCleanly(made)

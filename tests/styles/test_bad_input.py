@@ -5,7 +5,7 @@ silent acceptance, a misleading or generic message) say so in a comment."""
 
 import math
 
-from liggghts_run import DeckTestCase, main, run
+from liggghts_run import DeckTestCase, deck_box, deck_head, main, run
 
 
 # the keywords fix nscd/polyhedra accepts, as its unknown-keyword message lists them
@@ -17,25 +17,14 @@ NSCD_KEYWORDS = ", ".join([
     "wall_velocity", "write_problems"])
 
 
-def head(style):
-    """The first lines of every deck here: LJ units, the atom style, no sorting, non-periodic."""
-    return (f"units           lj\natom_style      {style}\natom_modify     map array sort 0 0.0\n"
-            "boundary        f f f\n")
-
-
-def box(style, xy, z, types):
-    """head(style) and a box [-xy, xy]^2 x [z0, z1] with `types` atom types."""
-    return head(style) + f"region          box block -{xy} {xy} -{xy} {xy} {z[0]} {z[1]}\ncreate_box      {types} box\n"
-
-
-WIRE = box("wire", 2, (-2, 2), 2)
+WIRE = deck_box("wire", 2, (-2, 2), 2)
 WIRE_LINE = WIRE + "create_wire 1 line 0 0 0 1 0 0\n"
 
-POLY = box("polyhedron", 6, (-6, 6), 1)
+POLY = deck_box("polyhedron", 6, (-6, 6), 1)
 ONE_CUBE = POLY + "create_grains 1 1 random box seed 5 shape cube 1 sweep 0\n"
 
 # one cube grain (type 1) and a wire (type 2) above it
-HYBRID = box("hybrid polyhedron wire", 4, (-1, 6), 2) + """create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
+HYBRID = deck_box("hybrid polyhedron wire", 4, (-1, 6), 2) + """create_grains   1 1 random box seed 3 shape cube 1 sweep 0.1
 create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
 group           grains type 1
 group           wire type 2
@@ -69,7 +58,7 @@ def chain_with(k, row):
     return {"c.data": wire_data(rows)}
 
 
-READ_WIRE = head("wire") + "read_data       c.data\n"
+READ_WIRE = deck_head("wire") + "read_data       c.data\n"
 
 
 def grain_data(row):
@@ -78,7 +67,7 @@ def grain_data(row):
     return {"g.data": data_file("grains", 1, [row]), "s.shapes": SHAPES}
 
 
-READ_GRAIN = head("polyhedron") + "grain_shapes    read s.shapes\nread_data       g.data\n"
+READ_GRAIN = deck_head("polyhedron") + "grain_shapes    read s.shapes\nread_data       g.data\n"
 
 
 class Table:
@@ -274,7 +263,7 @@ class CreateWireCount(Table, DeckTestCase):
 
 # HYBRID with a stock sphere instead of the cube: atom_style hybrid wire sphere, a sphere
 # (type 1) and the same wire (type 2)
-SPHERE_HYBRID = box("hybrid wire sphere", 4, (-1, 6), 2) + """create_atoms    1 single 0 0 1
+SPHERE_HYBRID = deck_box("hybrid wire sphere", 4, (-1, 6), 2) + """create_atoms    1 single 0 0 1
 set             atom 1 diameter 1 density 1
 create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
 group           grains type 1

@@ -5,18 +5,12 @@ and on 1 and 2 ranks; error messages."""
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, grains_data, main, read_dump, read_local_dump, run
+from liggghts_run import DeckTestCase, deck_head, grains_data, main, read_dump, read_local_dump, run
 
 G = 1.0
 KIND = {"wire_wire": 0, "wire_wall": 1, "wire_grain": 2, "grain_grain": 3, "grain_wall": 4}
 
-HEAD = """
-units           lj
-atom_style      polyhedron
-atom_modify     map array sort 0 0.0
-boundary        f f f
-processors      * 1 1
-"""
+HEAD = deck_head("polyhedron", processors="* 1 1")
 
 # the rows and the grains of the last step, both at full precision
 OUTPUT = """

@@ -91,6 +91,20 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
     return Run(proc.returncode, proc.stdout.decode(errors="replace"), workdir)
 
 
+def deck_head(style, processors=None):
+    """The first lines of a test deck: LJ units, the atom style, an atom map without sorting,
+    a non-periodic box, and `processors` when given (e.g. "* 1 1": one rank per x slab)."""
+    text = (f"units           lj\natom_style      {style}\natom_modify     map array sort 0 0.0\n"
+            "boundary        f f f\n")
+    return text + (f"processors      {processors}\n" if processors else "")
+
+
+def deck_box(style, xy, z, types):
+    """deck_head(style) and a box [-xy, xy]^2 x [z0, z1] with `types` atom types."""
+    return deck_head(style) + (f"region          box block -{xy} {xy} -{xy} {xy} {z[0]} {z[1]}\n"
+                               f"create_box      {types} box\n")
+
+
 def grains_data(shape, poses, density=1.0, sweep=0.0, box=(-30, 30, -30, 30, -1, 60)):
     """Run create_grains for len(poses) grains of one fixed shape (e.g. "cube 1") and
     rewrite the data file with the given poses [(x, y, z, qw, qi, qj, qk), ...].
