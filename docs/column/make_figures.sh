@@ -51,3 +51,7 @@ T=$R/tall_rest
 # the wire energy during wall removal
 /usr/bin/python3 $P/plot_column.py $R/table1_2026-12-04 -o docs/column/table1_wall_removal_2026-12-04.png \
     --legend "Table 1 at the defaults, seed 4242"
+# the reduced column under a plate (docs/results.md, "The column under a plate")
+L=$R/column_load_2026-12-05
+/usr/bin/python3 $P/load_curve.py $L/wire_s4242_v0.01 $L/wire_s1001_v0.01 $L/wire_s2002_v0.01 \
+    $L/no_wire_s4242_v0.01 $L/no_wire_s1001_v0.01 $L/no_wire_s2002_v0.01 --plot docs/column/column_load.png
