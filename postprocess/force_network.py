@@ -203,11 +203,14 @@ def contacts_of(rows, kind, per_point=False):
     else:
         group, first = np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
     m = len(first)
-    total = np.bincount(group, fn, m)
-    normal = np.column_stack([np.bincount(group, fn * sign * rows["normal"][sel][:, j], m) for j in range(3)])
-    point = np.column_stack([np.bincount(group, fn * rows["point"][sel][:, j], m) for j in range(3)])
-    force = np.column_stack([np.bincount(group, np.where(closed, sign, 0.0) * rows["force"][sel][:, j], m)
-                             for j in range(3)])
+
+    def sums(weights):   # per contact (float also when there is none)
+        return np.bincount(group, weights, m).astype(float)
+
+    total = sums(fn)
+    normal = np.column_stack([sums(fn * sign * rows["normal"][sel][:, j]) for j in range(3)]).reshape(m, 3)
+    point = np.column_stack([sums(fn * rows["point"][sel][:, j]) for j in range(3)]).reshape(m, 3)
+    force = np.column_stack([sums(np.where(closed, sign, 0.0) * rows["force"][sel][:, j]) for j in range(3)]).reshape(m, 3)
     on = total > 0
     length = np.linalg.norm(normal, axis=1)
     normal[on] /= np.where(length[on] > 0, length[on], 1.0)[:, None]
@@ -792,6 +795,9 @@ def report(result):
         lines.append(f"tail f/<f> > 1: {d['tail']} contacts, beta = {d['beta']:.4g} +- {d['beta_error']:.2g}")
     for name, n in result["networks"].items():
         fw, f = n["fabric_weighted"], n["fabric"]
+        if f is None:
+            lines.append(f"{name:6s} network: no contacts")
+            continue
         lines.append(f"{name:6s} network: {n['contacts']} contacts ({n['fraction_of_contacts']:.3f}), "
                      f"force fraction {n['fraction_of_force']:.3f}; fabric eigenvalues "
                      f"{' '.join(f'{v:.3f}' for v in f['eigenvalues'])} (major axis {f['angle_from_vertical']:.1f} deg "
