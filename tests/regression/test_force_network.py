@@ -228,12 +228,15 @@ class Synthetic(DeckTestCase):
             contact(4, -1, 1, (0.0, 0.0, 0.0), Z, 7.5), contact(3, 1, 2, (0.0, 0.0, 1.0), Z, 6.5),
             contact(3, 2, 3, (0.0, 0.0, 2.0), Z, 3.0), contact(3, 4, 2, (1.2, 0.0, 2.0), down, 3.0),
             contact(4, -2, 3, (0.0, 0.0, 3.0), down, 2.0), contact(4, -2, 4, (1.5, 0.0, 3.0), down, 1.0),
-            contact(2, 50, 2, (0.4, 0.0, 1.5), Z, 0.5), contact(1, -1, 50, (0.4, 0.0, 0.0), Z, 0.25)])
-        r = analysed(folder, "--R", "2", "--r-bins", "2", "--plane-z", "0.25", "1", "2", "3")
+            contact(2, 50, 2, (0.4, 0.0, 1.5), Z, 0.5), contact(1, -1, 50, (0.4, 0.0, 0.0), Z, 0.25),
+            contact(1, -1, 51, (0.4, 0.0, 3.0), down, 0.1)])
+        r = analysed(folder, "--R", "2", "--r-bins", "2", "--plane-z", "0.25", "1", "1.5", "2", "3")
         planes = {p["z"]: p for p in r["transmission"]}
         # T through each plane; the grains above it, their weight, the walls' and the wire's
-        # force on them; at rest T = W − walls − wire
+        # force on them; at rest T = W − walls − wire. A centre on the plane (grain 2 at 1.5)
+        # counts as above it.
         for h, T, above, weight, walls, wire in ((0.25, 0.0, 4, 5.0, 7.5 - 3.0, 0.5), (1.0, 6.5, 3, 4.0, -3.0, 0.5),
+                                                 (1.5, 6.5, 3, 4.0, -3.0, 0.5),
                                                  (2.0, 6.0, 2, 3.0, -3.0, 0.0), (3.0, 0.0, 0, 0.0, 0.0, 0.0)):
             p = planes[h]
             self.assertAlmostEqual(p["T"], T, delta=1e-14, msg=h)
@@ -247,9 +250,12 @@ class Synthetic(DeckTestCase):
         self.assertEqual(planes[2.0]["T_per_r_bin"], [3.0, 3.0])
         self.assertAlmostEqual(planes[1.0]["inner_fraction"], 1.0, delta=1e-14)
         # the walls: the floor carries 7.5 from the grains and 0.25 from the wire, the plate 3
+        # and 0.1 (the wire's walls are told apart by their normals: each is wall 1 of its fix)
         walls = {(w["by"], w["wall"], w["side"]): w for w in r["walls"]}
-        self.assertEqual(sorted(walls), [("grains", 1, "floor"), ("grains", 2, "plate"), ("wire", 1, "floor")])
-        for key, load in ((("grains", 1, "floor"), 7.5), (("grains", 2, "plate"), 3.0), (("wire", 1, "floor"), 0.25)):
+        self.assertEqual(sorted(walls), [("grains", 1, "floor"), ("grains", 2, "plate"), ("wire", 1, "floor"),
+                                         ("wire", 1, "plate")])
+        for key, load in ((("grains", 1, "floor"), 7.5), (("grains", 2, "plate"), 3.0), (("wire", 1, "floor"), 0.25),
+                          (("wire", 1, "plate"), 0.1)):
             self.assertAlmostEqual(walls[key]["load"], load, delta=1e-14)
             sign = -1.0 if key[2] == "floor" else 1.0   # the floor is pushed down, the plate up
             np.testing.assert_allclose(walls[key]["force_on_wall"], [0.0, 0.0, sign * load], atol=1e-14)
@@ -310,7 +316,8 @@ def png_pixels(path):
     reader.Update()
     image = reader.GetOutput()
     width, height, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+    # (VTK's rows run from the bottom up: turned, so that row 0 is the top)
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, -1)[::-1, :, :3]
 
 
 class EndToEnd(DeckTestCase):
@@ -432,7 +439,8 @@ class EndToEnd(DeckTestCase):
 
     def assertPicture(self, path, size):
         self.assertEqual(png_size(path), size)
-        pixels = png_pixels(path)[:, : int(0.8 * size[0])]   # the scene, left of the colour bar
+        # the scene: below the title (the top tenth), left of the colour bar (the right 14 %)
+        pixels = png_pixels(path)[int(0.1 * size[1]):, : int(0.8 * size[0])]
         self.assertGreater(len(np.unique(pixels.reshape(-1, 3), axis=0)), 50)
         self.assertGreater(pixels.astype(float).std(), 5.0)
 
