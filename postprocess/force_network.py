@@ -250,6 +250,7 @@ def fabric(normals, weights=None):
     w = np.ones(len(normals)) if weights is None else np.asarray(weights, dtype=float)
     phi = (normals * w[:, None]).T @ normals / w.sum()
     values, vectors = np.linalg.eigh(phi)
+    values = np.maximum(values, 0.0)   # φ is positive semi-definite: −1e-17 is round-off
     major = vectors[:, -1] * (1.0 if vectors[2, -1] >= 0 else -1.0)
     angle = math.degrees(math.acos(min(1.0, abs(major[2]))))
     return {"tensor": phi.tolist(), "eigenvalues": values.tolist(), "major_axis": major.tolist(),
@@ -855,10 +856,11 @@ def main(argv=None):
     parser.add_argument("--bin-width", type=float, default=0.25, help="histogram bin in f/<f> (0.25)")
     parser.add_argument("--density", type=float, default=1.5, help="the grains' density (1.5)")
     parser.add_argument("--g", type=float, default=1.0, help="gravity (1)")
-    parser.add_argument("--axis", type=float, nargs=2, default=[0.0, 0.0], metavar=("X", "Y"))
+    parser.add_argument("--axis", type=float, nargs=2, default=[0.0, 0.0], metavar=("X", "Y"),
+                        help="the column's vertical axis (0 0)")
     parser.add_argument("--R", type=float, help="the column's radius (default: the wire's mean radius)")
-    parser.add_argument("--r-bins", type=int, default=4)
-    parser.add_argument("--z-bins", type=int, default=5)
+    parser.add_argument("--r-bins", type=int, default=4, help="bins of the distance from the axis (4)")
+    parser.add_argument("--z-bins", type=int, default=5, help="bins of the height (5)")
     parser.add_argument("--planes", type=int, default=5, help="planes between the lowest and highest centres (5)")
     parser.add_argument("--plane-z", type=float, nargs="+", help="the planes' heights")
     parser.add_argument("--E-w", dest="E_w", type=float, default=100.0, help="the wire's Young's modulus (100)")
@@ -874,7 +876,7 @@ def main(argv=None):
                         help="the picture's pixels (default 1200 wide, as tall as the scene)")
     parser.add_argument("--view", choices=("side", "elevated", "top"), default="side")
     parser.add_argument("--bar-radius", type=float, default=0.2, help="the tube radius of the largest force (0.2)")
-    parser.add_argument("--grain-opacity", type=float, default=0.25)
+    parser.add_argument("--grain-opacity", type=float, default=0.25, help="the grains' opacity in the picture (0.25)")
     args = parser.parse_args(argv)
     for name in ("bin_width", "density", "l0", "E_w", "r_w", "bar_radius"):
         if getattr(args, name) <= 0:
