@@ -6,6 +6,7 @@ its checks of its variables."""
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -124,6 +125,29 @@ class Load(DeckTestCase):
         self.assertIn(os.path.basename(folder), out)
         self.assertGreater(os.path.getsize(os.path.join(folder, "load.png")), 1000)
 
+    # ke_settle: the column without wire held under the still plate until its grains rest,
+    # then the plate brought to gap above the settled top: the load starts from rest
+    def test_settles_before_loading(self):
+        folder = tempfile.mkdtemp(prefix="wiregrain-")
+        shutil.copy(self.columns[0].path("column.restart"), folder)
+        r = run(LOAD, variables={"R": 2, "root": SOURCE, "v_plate": 0.2, "strain_max": 0.02, "t_out": 0.01, "ke_settle": 1e-8,
+                                 "t_settle": 20, "t_quiet": 1, "t_check": 0.5},
+                workdir=folder)
+        self.assertRanCleanly(r)
+        settled = re.search(r"^in\.column_load: settled for (\S+) \(ended early: (\d)\), KE per grain (\S+) m g a_max",
+                            r.output, re.M)
+        placed = re.search(r"^in\.column_load: the plate at (\S+), the settled top at (\S+)$", r.output, re.M)
+        self.assertIsNotNone(settled, r.output[-3000:])
+        self.assertLess(float(settled.group(3)), 1e-8)
+        z0, top = float(placed.group(1)), float(placed.group(2))
+        print(f"settled for {settled.group(1)}; the plate {z0 - top:.6f} above the settled top")
+        # gap 0.02 a_max, the approach's last step at most v_approach dt = 1e-3 short of it
+        self.assertGreaterEqual(z0 - top, 0.02 - 1e-12)
+        self.assertLess(z0 - top, 0.02 + 1e-3)
+        s = series(r)
+        self.assertLess(abs(s["v_cm"][0]), 1e-3)  # at rest when the plate starts
+        self.assertEqual(final_line(r).group(6), placed.group(2))  # the strain counts from the settled top
+
     def test_bad_variables_stop_with_a_message(self):
         workdir = self.columns[1].workdir
         z_top0 = final_line(self.loaded[1]).group(6)
@@ -133,6 +157,11 @@ class Load(DeckTestCase):
                 ({"drop": 0}, "in.column_load: drop must be in (0, 1), got 0"),
                 ({"load_max": 0.05}, "in.column_load: load_max (0.05) must be > load_min (0.1)"),
                 ({"t_out": "1e-4"}, "in.column_load: t_out (1e-4) must be at least dt_SP (1e-3)"),
+                ({"ke_settle": -1}, "in.column_load: ke_settle must be >= 0 (0: no settling), got -1"),
+                ({"ke_settle": 1e-6, "t_quiet": 0.1},
+                 "in.column_load: with ke_settle, t_check must be > 0 and t_check <= t_quiet <= t_settle, "
+                 "got 0.5, 0.1 and 50"),
+                ({"v_approach": 0}, "in.column_load: v_approach must be > 0, got 0"),
                 ({"z_plate": 1}, f"in.column_load: z_plate (1) is below the top of the column ({z_top0}): "
                                  "the plate must start above it")):
             self.assertStopsWith(run(LOAD, variables=dict(R=2, **variables), workdir=workdir), message)
