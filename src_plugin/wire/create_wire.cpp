@@ -303,7 +303,7 @@ void CreateWire::command(int narg, char **arg) {
             " of the join), atom IDs " + std::to_string(maxtag + 1) + ".." + std::to_string(maxtag + n) +
             ", appended to bead " + std::to_string(end.tag) + " by a " +
             (s.join.path == wiregrain::JoinPath::straight ? "straight" : "helix") + " join of " +
-            std::to_string(join.nodes.size() + 1) + " segments, " + wiregrain::format_number(join.length) +
+            std::to_string(join.nodes.size() + 1) + (join.nodes.empty() ? " segment, " : " segments, ") + wiregrain::format_number(join.length) +
             " long, its last of rest length " + wiregrain::format_number(join.last_rest_length) + "; " +
             std::to_string(layout.size() - 1) + " segments of length " + std::to_string(l_w) + " after it\n";
     if (screen) fputs(msg.c_str(), screen);
