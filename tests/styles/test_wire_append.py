@@ -231,5 +231,37 @@ write_data      chain.data
                 self.assertGreaterEqual(atoms[t][2], 0.2 * 0.5 - 1e-12)
 
 
+class Layouts(DeckTestCase):
+    """circle and spiral laid by create_wire (their nodes: tests/core/test_wire_layout.cpp)."""
+
+    def test_circle_and_spiral(self):
+        # circle of R = l_w = 0.2: Δφ = 2 asin(1/2) = π/3, a hexagon of 6 beads (the seventh,
+        # on the first, left out); spiral r = b φ, b = l_w / (π/2), 3 turns (r1 = 2.4): the
+        # second bead at φ = π/2, (0, l_w, z); every segment l_w, one chain each
+        res = run(BOX.format(processors="") + """
+create_wire     1 circle 1 1 -1 0.2
+create_wire     1 spiral 0 0 1 0 2.4 3
+write_data      chain.data
+""")
+        self.assertRanCleanly(res)
+        atoms = atoms_section(res.path("chain.data"))
+        for k in range(6):
+            np.testing.assert_allclose(atoms[k + 1][5:], (1 + 0.2 * math.cos(k * math.pi / 3),
+                                                          1 + 0.2 * math.sin(k * math.pi / 3), -1), rtol=0, atol=1e-15)
+        self.assertEqual(atoms[6][1], 0)
+        self.assertEqual(atoms[7][0], 0)
+        np.testing.assert_allclose(atoms[7][5:], (0, 0, 1), rtol=0, atol=1e-15)
+        np.testing.assert_allclose(atoms[8][5:], (0, 0.2, 1), rtol=0, atol=1e-14)
+        for t, a in atoms.items():
+            if a[1]:
+                self.assertEqual(atoms[a[1]][0], t)
+                self.assertEqual(a[2], 0.2)
+                self.assertAlmostEqual(np.linalg.norm(np.array(atoms[a[1]][5:]) - a[5:]), 0.2, delta=1e-13)
+        # the spiral's last bead within 2.4 of the axis, beyond 2.4 - l_w
+        last = max(atoms)
+        self.assertLessEqual(np.hypot(*atoms[last][5:7]), 2.4 + 1e-12)
+        self.assertGreater(np.hypot(*atoms[last][5:7]), 2.4 - 0.2)
+
+
 if __name__ == "__main__":
     main()
