@@ -258,3 +258,199 @@ TEST(WireLayout, ReadPolyline) {
   std::remove(path.c_str());
   expect_invalid([&] { read_polyline_file(path); }, "file");
 }
+
+// One flat circle: R = l_w is a hexagon (Δφ = 2 asin(1/2) = π/3), open: 6 nodes at 60°
+// steps, the seventh (on the first) left out; R = 1, l_w = 0.3: floor(2π / 2 asin(0.15))
+// = 20 segments (2π / 0.301128 = 20.87), 21 nodes.
+TEST(WireLayout, Circle) {
+  const auto hexagon = wire_circle(1.0, -1.0, 2.0, 0.5, 0.5);
+  ASSERT_EQ(hexagon.size(), 6u);
+  for (int k = 0; k < 6; ++k) {
+    const Vector3d expected(1.0 + 0.5 * std::cos(k * kPi / 3.0), -1.0 + 0.5 * std::sin(k * kPi / 3.0), 2.0);
+    EXPECT_LT((hexagon[k] - expected).norm(), 1e-15) << "node " << k;
+  }
+  expect_all_chords(hexagon, 0.5);
+  const auto circle = wire_circle(0.0, 0.0, 0.0, 1.0, 0.3);
+  ASSERT_EQ(circle.size(), 21u);
+  expect_all_chords(circle, 0.3);
+  for (const Vector3d& p : circle) EXPECT_NEAR(p.head<2>().norm(), 1.0, 1e-15);
+  expect_invalid([] { wire_circle(0, 0, 0, 0.1, 0.3); }, "radius");
+}
+
+// Archimedean spiral r = b φ from the centre (r0 = 0) with b = l_w / (π/2): the second node
+// is the point of the spiral at distance l_w from the centre, r = b φ = l_w at φ = π/2,
+// i.e. (cx, cy + l_w, z). Every chord is l_w, every node lies on the spiral (its radius is
+// b times its azimuth unwrapped), the azimuths increase, and the node count is that of an
+// independent walk along the spiral sampled at 1e-5 rad (linear interpolation of the
+// chord's crossing), with the nodes within 1e-9 of its nodes.
+TEST(WireLayout, SpiralFromTheCentre) {
+  const double l = 0.2, b = l / (kPi / 2.0), turns = 3.0, r1 = b * 2.0 * kPi * turns;  // r1 = 2.4
+  const auto nodes = wire_spiral(0.5, 0.25, 1.0, 0.0, r1, turns, l);
+  ASSERT_GE(nodes.size(), 3u);
+  EXPECT_LT((nodes[0] - Vector3d(0.5, 0.25, 1.0)).norm(), 1e-15);
+  EXPECT_LT((nodes[1] - Vector3d(0.5, 0.25 + l, 1.0)).norm(), 1e-14);
+  expect_all_chords(nodes, l, 1e-13);
+  double unwrapped = 0.0, previous = 0.0;
+  for (std::size_t k = 1; k < nodes.size(); ++k) {
+    const Vector3d p = nodes[k] - Vector3d(0.5, 0.25, 1.0);
+    EXPECT_EQ(p.z(), 0.0);
+    double phi = std::atan2(p.y(), p.x());
+    while (phi < previous - 1e-12) phi += 2.0 * kPi;  // unwrap (the azimuth only grows)
+    unwrapped = phi;
+    previous = phi;
+    EXPECT_NEAR(p.head<2>().norm(), b * unwrapped, 1e-12) << "node " << k;
+  }
+  EXPECT_LE(unwrapped, 2.0 * kPi * turns);
+  // the independent walk
+  std::vector<Vector3d> walk{Vector3d(0.5, 0.25, 1.0)};
+  const auto at = [&](double phi) { return Vector3d(0.5 + b * phi * std::cos(phi), 0.25 + b * phi * std::sin(phi), 1.0); };
+  double prev_d = 0.0;
+  for (double phi = 1e-5; phi <= 2.0 * kPi * turns; phi += 1e-5) {
+    const double d = (at(phi) - walk.back()).norm();
+    if (d >= l) {
+      const double u = (l - prev_d) / (d - prev_d);
+      walk.push_back(at(phi - 1e-5 + u * 1e-5));
+      prev_d = (at(phi) - walk.back()).norm();
+    } else {
+      prev_d = d;
+    }
+  }
+  ASSERT_EQ(nodes.size(), walk.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) EXPECT_LT((nodes[k] - walk[k]).norm(), 1e-9) << "node " << k;
+}
+
+// Winding in (r0 > r1) gives the same curve walked the other way from the outside: its
+// first node at (cx + r0, cy, z); chords l_w, radius r0 + (r1 - r0) φ / (2π turns).
+TEST(WireLayout, SpiralInwardAndErrors) {
+  const auto nodes = wire_spiral(0.0, 0.0, 0.0, 3.0, 1.0, 2.0, 0.25);
+  EXPECT_LT((nodes[0] - Vector3d(3.0, 0.0, 0.0)).norm(), 1e-15);
+  expect_all_chords(nodes, 0.25, 1e-13);
+  for (const Vector3d& p : nodes) {
+    EXPECT_LE(p.head<2>().norm(), 3.0 + 1e-12);
+    EXPECT_GE(p.head<2>().norm(), 1.0 - 1e-12);
+  }
+  expect_invalid([] { wire_spiral(0, 0, 0, 1.0, 1.0, 2.0, 0.2); }, "r1");
+  expect_invalid([] { wire_spiral(0, 0, 0, -1.0, 1.0, 2.0, 0.2); }, "r0");
+  expect_invalid([] { wire_spiral(0, 0, 0, 0.0, 1.0, 0.0, 0.2); }, "turns");
+  expect_invalid([] { wire_spiral(0, 0, 0, 0.0, 1.0, 1.0, 0.0); }, "segment_length");
+  expect_invalid([] { wire_spiral(0, 0, 0, 0.0, 1e-3, 1e-3, 0.2); }, "turns");
+  expect_invalid([] { wire_spiral(0, 0, 0, 0.0, 1e7, 1e3, 0.2); }, "segment_length");
+}
+
+namespace {
+JoinSettings straight_join(double min_last = 0.5, double max_length = 0.0) {
+  JoinSettings s;
+  s.min_last = min_last;
+  s.max_length = max_length;
+  return s;
+}
+}  // namespace
+
+// Straight joins from (0,0,0) up the z axis with l_w = 0.2: to 0.55 two nodes at 0.2 and
+// 0.4 and a last segment 0.15 (≥ join_min 0.5 l_w = 0.1); to 0.45 the remainder 0.05 is
+// below 0.1: the node at 0.4 is dropped and the last segment is 0.25; with join_min 0 it is
+// kept and the last segment is 0.05; to 0.2, or to (0.12, 0.16, 0) (a 3-4-5 triangle), no
+// node and one whole segment of rest length exactly l_w; to 0.6 = 3 l_w: nodes at 0.2 and
+// 0.4 and a whole last segment.
+TEST(WireLayout, StraightJoin) {
+  const Vector3d o(0.0, 0.0, 0.0);
+  const auto j1 = wire_join(o, Vector3d(0, 0, 0.55), 0.2, straight_join());
+  ASSERT_EQ(j1.nodes.size(), 2u);
+  EXPECT_EQ(j1.nodes[0], Vector3d(0, 0, 0.2));
+  EXPECT_EQ(j1.nodes[1], Vector3d(0, 0, 0.4));
+  EXPECT_NEAR(j1.last_rest_length, 0.15, 1e-15);
+  EXPECT_NEAR(j1.length, 0.55, 1e-15);
+  const auto j2 = wire_join(o, Vector3d(0, 0, 0.45), 0.2, straight_join());
+  ASSERT_EQ(j2.nodes.size(), 1u);
+  EXPECT_EQ(j2.nodes[0], Vector3d(0, 0, 0.2));
+  EXPECT_NEAR(j2.last_rest_length, 0.25, 1e-15);
+  const auto j3 = wire_join(o, Vector3d(0, 0, 0.45), 0.2, straight_join(0.0));
+  ASSERT_EQ(j3.nodes.size(), 2u);
+  EXPECT_NEAR(j3.last_rest_length, 0.05, 1e-15);
+  for (const Vector3d& to : {Vector3d(0, 0, 0.2), Vector3d(0.12, 0.16, 0.0)}) {
+    const auto j = wire_join(o, to, 0.2, straight_join());
+    EXPECT_TRUE(j.nodes.empty());
+    EXPECT_EQ(j.last_rest_length, 0.2);
+  }
+  const auto j4 = wire_join(o, Vector3d(0, 0, 0.6), 0.2, straight_join());
+  ASSERT_EQ(j4.nodes.size(), 2u);
+  EXPECT_EQ(j4.last_rest_length, 0.2);
+  // from a point off the origin along (2, -1, 2)/3: nodes at k l_w along it
+  const Vector3d a(1.0, 2.0, 3.0), u = Vector3d(2.0, -1.0, 2.0) / 3.0;
+  // length 1 with l_w 0.3: nodes at 0.3, 0.6, 0.9; the remainder 0.1 < 0.15 drops 0.9, last 0.4
+  const auto j5 = wire_join(a, a + 1.0 * u, 0.3, straight_join());
+  ASSERT_EQ(j5.nodes.size(), 2u);
+  for (int k = 0; k < 2; ++k) EXPECT_LT((j5.nodes[k] - (a + 0.3 * (k + 1) * u)).norm(), 1e-15);
+  EXPECT_NEAR(j5.last_rest_length, 0.4, 1e-15);
+  EXPECT_NEAR(j5.length, 1.0, 1e-15);
+}
+
+TEST(WireLayout, JoinErrors) {
+  const Vector3d o(0.0, 0.0, 0.0);
+  expect_invalid([&] { wire_join(o, Vector3d(0, 0, 0.05), 0.2, straight_join()); }, "join_min");
+  expect_invalid([&] { wire_join(o, o, 0.2, straight_join(0.0)); }, "join_min");
+  expect_invalid([&] { wire_join(o, Vector3d(0, 0, 0.55), 0.2, straight_join(0.5, 0.5)); }, "join_max");
+  EXPECT_NO_THROW(wire_join(o, Vector3d(0, 0, 0.55), 0.2, straight_join(0.5, 0.55)));
+  expect_invalid([&] { wire_join(o, Vector3d(0, 0, 1), 0.2, straight_join(1.5)); }, "join_min");
+  try {
+    wire_join(o, Vector3d(0, 0, 0.05), 0.2, straight_join());
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the layout's first node is 0.05 from the end bead, closer than join_min x segment_length = 0.1 "
+              "(lay the layout further away, or lower join_min)");
+  }
+  try {
+    wire_join(o, Vector3d(0, 0, 0.55), 0.2, straight_join(0.5, 0.5));
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the join from the end bead to the layout's first node is 0.55 long (3 segments), longer than "
+              "join_max 0.5 (raise join_max, or append to another chain end)");
+  }
+}
+
+// Helix joins about the z axis. A quarter turn at radius 1 from (1,0,0) to (0,1,h) with
+// l_w² = (2 sin(π/12))² + (h/3)² (the chord of a twelfth of a turn rising h/3): nodes at
+// azimuths π/6 and π/3, heights h/3 and 2h/3, the last segment a whole one. Flat (h = 0)
+// likewise. From radius 1 to radius 2 at one azimuth the path is radial: l_w = 0.3 gives
+// nodes at 1.3, 1.6 (1.9 dropped: 0.1 < 0.15), last 0.4. The azimuth turns counter-
+// clockwise: from −0.1 rad to 0 a short arc, from 0 to −0.1 rad all the way round.
+TEST(WireLayout, HelixJoin) {
+  JoinSettings s;
+  s.path = JoinPath::helix;
+  for (double h : {0.0, 0.7}) {
+    const double l = std::hypot(2.0 * std::sin(kPi / 12.0), h / 3.0);
+    const auto j = wire_join(Vector3d(1, 0, 0), Vector3d(0, 1, h), l, s);
+    ASSERT_EQ(j.nodes.size(), 2u) << "h " << h;
+    EXPECT_LT((j.nodes[0] - Vector3d(std::cos(kPi / 6), std::sin(kPi / 6), h / 3)).norm(), 1e-13);
+    EXPECT_LT((j.nodes[1] - Vector3d(std::cos(kPi / 3), std::sin(kPi / 3), 2 * h / 3)).norm(), 1e-13);
+    EXPECT_EQ(j.last_rest_length, l);
+  }
+  const auto radial = wire_join(Vector3d(1, 0, 0), Vector3d(2, 0, 0), 0.3, s);
+  ASSERT_EQ(radial.nodes.size(), 2u);
+  EXPECT_LT((radial.nodes[0] - Vector3d(1.3, 0, 0)).norm(), 1e-14);
+  EXPECT_LT((radial.nodes[1] - Vector3d(1.6, 0, 0)).norm(), 1e-14);
+  EXPECT_NEAR(radial.last_rest_length, 0.4, 1e-14);
+  // about another axis: the same quarter turn shifted by (3, -2)
+  s.axis_x = 3.0;
+  s.axis_y = -2.0;
+  const double l = 2.0 * std::sin(kPi / 12.0);
+  const auto shifted = wire_join(Vector3d(4, -2, 0), Vector3d(3, -1, 0), l, s);
+  ASSERT_EQ(shifted.nodes.size(), 2u);
+  EXPECT_LT((shifted.nodes[0] - Vector3d(3 + std::cos(kPi / 6), -2 + std::sin(kPi / 6), 0)).norm(), 1e-13);
+  s.axis_x = s.axis_y = 0.0;
+  // counter-clockwise: from −0.1 rad to 0 one segment, the chord 2 sin(0.05) = 0.09996 ≥ 0.5 l_w
+  const Vector3d before(std::cos(-0.1), std::sin(-0.1), 0.0), zero(1, 0, 0);
+  const auto short_arc = wire_join(before, zero, 0.15, s);
+  EXPECT_TRUE(short_arc.nodes.empty());
+  EXPECT_NEAR(short_arc.last_rest_length, 2.0 * std::sin(0.05), 1e-15);
+  const auto round = wire_join(zero, before, 0.2, s);
+  // chord 0.2 on the unit circle: Δφ = 2 asin(0.1) = 0.200335; the path turns 2π − 0.1 =
+  // 30.86 Δφ: 30 nodes at k Δφ, the remainder 0.173 rad (chord 0.1729 ≥ 0.1) the last segment
+  const double dphi = 2.0 * std::asin(0.1), rest_angle = 2.0 * kPi - 0.1 - 30.0 * dphi;
+  ASSERT_EQ(round.nodes.size(), 30u);
+  for (std::size_t k = 0; k < round.nodes.size(); ++k) {
+    const double phi = (k + 1) * dphi;
+    EXPECT_LT((round.nodes[k] - Vector3d(std::cos(phi), std::sin(phi), 0.0)).norm(), 1e-12) << "node " << k;
+  }
+  EXPECT_NEAR(round.last_rest_length, 2.0 * std::sin(0.5 * rest_angle), 1e-12);
+}

@@ -5,6 +5,7 @@ checks of its variables stop with an ERROR."""
 
 import concurrent.futures
 import glob
+import math
 import json
 import os
 import re
@@ -256,6 +257,23 @@ class Column(DeckTestCase):
         self.assertEqual((obs["U_s/L"], obs["z_wpc"]), (0.0, 0.0))
         self.assertGreater(obs["phi_p"], 0.0)
 
+    def test_continuous_wire(self):
+        # wire_layout continuous: the second layer's double loop continues the first layer's
+        # wire: appended to its last bead (atom ID 12 grains + n beads of a double loop of
+        # R = 3, floor(4π / 2 asin(l_w / 2R)) + 1 = n), and the final dump holds one chain:
+        # every wire bead but one has a segment to a next bead (compute wire/energy's
+        # segment length > 0), where the paper's two loops leave two ends
+        n = math.floor(4 * math.pi / (2 * math.asin(0.2 / 6))) + 1
+        for layout, ends in (("continuous", 1), ("loops", 2)):
+            result = self.straight if layout == "loops" else run(COLUMN, variables=dict(TINY, wire_layout=layout))
+            self.assertRanCleanly(result)
+            created = [l for l in result.output.splitlines() if l.startswith("create_wire:")]
+            self.assertEqual(len(created), 2)
+            self.assertEqual(layout == "continuous", f"appended to bead {12 + n} by a straight join" in created[1])
+            final = minimal_dump(sorted(glob.glob(result.path("post/column_final_*.dump")))[-1])
+            beads = final["type"] == 2
+            self.assertEqual(np.count_nonzero(beads) - np.count_nonzero(final["c_energy[3]"][beads] > 0), ends, layout)
+
     def test_early_end_of_both_phases(self):
         # ke_stop far above any kinetic energy: the relaxation ends after t_quiet (two
         # checks of t_check = 0.1), at t_dep + 0.2 = nlayers (t_layer + t_wire) + 0.2 = 2.2;
@@ -505,6 +523,9 @@ class Column(DeckTestCase):
                                     "in.column: grains must be nscd, spheres or superquadrics, got cubes"),
                                    ({"ke_of": "wire"}, "in.column: ke_of must be grains or all, got wire"),
                                    ({"wire_scheme": "rk4"}, "in.column: wire_scheme must be auto, gear5 or verlet, got rk4"),
+                                   ({"wire_layout": "spiral"},
+                                    "in.column: wire_layout must be loops or continuous, got spiral"),
+                                   ({"join_max": -1}, "in.column: join_max must be >= 0 (0: the box height), got -1"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)

@@ -212,14 +212,16 @@ class DataFileCoordinates(Table, DeckTestCase):
 class CreateWire(Table, DeckTestCase):
     CW = "command create_wire (id -): "
     CASES = (
-        (WIRE + "create_wire 1", CW + "expected: create_wire type line|loop|helix|polyline ..."),
+        (WIRE + "create_wire 1", CW + "expected: create_wire type line|loop|helix|circle|spiral|polyline ..."),
         (WIRE + "create_wire abc line 0 0 0 1 0 0", CW + "value of 'type' must be an integer, got 'abc'"),
         (WIRE + "create_wire 3 line 0 0 0 1 0 0", CW + "atom type 3 is outside 1..2"),
-        (WIRE + "create_wire 1 spiral 0 0 0 1 0 0", CW + "unknown layout 'spiral' (line, loop, helix or polyline)"),
+        (WIRE + "create_wire 1 zigzag 0 0 0 1 0 0",
+         CW + "unknown layout 'zigzag' (line, loop, helix, circle, spiral or polyline)"),
         (WIRE + "create_wire 1 line 0 0 0 1 0 nan", CW + "value of 'z1' must be a finite number, got 'nan'"),
         (WIRE + "create_wire 1 loop 0 0 0 -1 2 0.3", CW + "value of 'R' must be > 0, got -1"),
         (WIRE + "create_wire 1 loop 0 0 0 1 0 0.3", CW + "value of 'turns' must be > 0, got 0"),
-        (WIRE + "create_wire 1 line 0 0 0 1 0 0 colour red", CW + "unknown keyword 'colour'; accepted: segment, radius, density"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 colour red", 
+         CW + "unknown keyword 'colour'; accepted: segment, radius, density, append, join, join_max, join_min"),
         (WIRE + "create_wire 1 line 0 0 0 1 0 0 segment 1e400",
          CW + "value of 'segment' must be a finite number, got '1e400'"),
         (WIRE + "create_wire 1 line 0 0 0 0.1 0 0",
@@ -269,6 +271,45 @@ create_wire     2 line -0.5 0.2 3.3 0.5 0.2 3.3 segment 0.5 radius 0.1
 group           grains type 1
 group           wire type 2
 """
+
+
+class CreateWireAppend(Table, DeckTestCase):
+    # create_wire ... append: the chain end must exist, be a wire bead and have no next bead;
+    # the join must be neither longer than join_max (default 10 segments) nor shorter than
+    # join_min segments; its keywords need append, a helix join a layout with an axis.
+    # WIRE_LINE's beads 1..6 run from (0,0,0) to (1,0,0).
+    CW = "command create_wire (id -): "
+    NEW = "create_wire 1 line 0 1 0 1 1 0"
+    CASES = (
+        (WIRE_LINE + NEW + " append 99", CW + "append 99: no atom has the ID 99"),
+        (WIRE_LINE + NEW + " append 3", CW + "append 3: bead 3 already has a next bead (4): append to a chain end"),
+        (HYBRID + "create_wire 2 line -0.5 0.2 4.3 0.5 0.2 4.3 segment 0.5 append 1",
+         CW + "append 1: atom 1 is a grain, not a wire bead"),
+        (SPHERE_HYBRID + "create_wire 2 line -0.5 0.2 4.3 0.5 0.2 4.3 segment 0.5 append 1",
+         CW + "append 1: atom 1 is a grain, not a wire bead"),
+        (WIRE + "create_wire 1 line 0 0 0 1 0 0 append last",
+         CW + "append last: no chain end to append to (no wire bead has a previous bead and no next bead)"),
+        # from (1,0,0) to (-1,-1,1): sqrt(6) = 2.449 in 12 segments, beyond the default 10 x 0.2
+        (WIRE_LINE + "create_wire 1 line -1 -1 1 0 -1 1 append 6",
+         CW + "'join_max': the join from the end bead to the layout's first node is 2.44948974278 long "
+         "(12 segments), longer than join_max 2 (raise join_max, or append to another chain end)"),
+        (WIRE_LINE + "create_wire 1 line -1 -1 1 0 -1 1 append last join_max 2.4",
+         CW + "'join_max': the join from the end bead to the layout's first node is 2.44948974278 long "
+         "(12 segments), longer than join_max 2.4 (raise join_max, or append to another chain end)"),
+        (WIRE_LINE + "create_wire 1 line 1.05 0 0 1.85 0 0 append 6",
+         CW + "'join_min': the layout's first node is 0.05 from the end bead, closer than join_min x "
+         "segment_length = 0.1 (lay the layout further away, or lower join_min)"),
+        (WIRE_LINE + NEW + " append 6 join_min 2", CW + "value of 'join_min' must be in [0, 1], got 2"),
+        (WIRE_LINE + NEW + " append first", CW + "value of 'append' must be an atom ID >= 1 or 'last', got 'first'"),
+        (WIRE_LINE + NEW + " append 6 join curved", CW + "value of 'join' must be straight or helix, got 'curved'"),
+        (WIRE_LINE + NEW + " join straight", CW + "'join' needs 'append' (a join leads from a chain end to the layout)"),
+        (WIRE_LINE + NEW + " join_max 3", CW + "'join_max' needs 'append' (a join leads from a chain end to the layout)"),
+        (WIRE_LINE + NEW + " append 6 join helix",
+         CW + "join helix needs a layout with a vertical axis (loop, helix, circle or spiral), not 'line'"),
+        (WIRE + "create_wire 1 spiral 0 0 0 1 1 2", CW + "'r1': r1 must differ from r0 (1): a spiral of constant radius is a loop"),
+        (WIRE + "create_wire 1 circle 0 0 0 0.05", CW + "'radius': radius 0.05 is too small for segment_length 0.2: one "
+         "segment must fit in half a turn (4 radius^2 + pitch^2/4 >= segment_length^2)"),
+    )
 
 
 class MixedGroups(Table, DeckTestCase):

@@ -135,6 +135,184 @@ std::vector<Eigen::Vector3d> wire_loop(double centre_x, double centre_y, double 
   return wire_helix(h, segment_length);
 }
 
+std::vector<Eigen::Vector3d> wire_circle(double centre_x, double centre_y, double z, double radius,
+                                         double segment_length) {
+  std::vector<Eigen::Vector3d> nodes = wire_loop(centre_x, centre_y, z, radius, 1.0, 0.0, segment_length);
+  // 2π / Δφ a whole number puts the last node on the first: the circle stays open
+  if (nodes.size() > 2 && (nodes.back() - nodes.front()).norm() < 1e-6 * segment_length) nodes.pop_back();
+  return nodes;
+}
+
+namespace {
+
+// The nodes of the curve c(t), t from 0 to t_end, at chord l: c(0), then each next node the
+// first point further along the curve at distance l from the previous node, each given to
+// visit(node) in order until none is left or visit returns false. `speed` bounds |c'(t)|: the
+// curve is scanned in parameter steps over which it moves at most l/16 (a chord cannot
+// reach l and fall back within one step unless the curve bends on a radius below l/32),
+// and the crossing is bisected to the last representable bit of t.
+template <class Curve, class Visit>
+void walk_curve(const Curve& c, double t_end, double speed, double l, Visit visit) {
+  const double l2 = l * l;
+  const double h = l / (16.0 * speed);
+  Eigen::Vector3d node = c(0.0);
+  if (!visit(node)) return;
+  double t_node = 0.0;
+  while (true) {
+    double a = t_node;
+    bool found = false;
+    while (a < t_end) {
+      double b = std::min(t_end, a + h);
+      if (!(b > a)) b = std::nextafter(a, t_end);
+      if ((c(b) - node).squaredNorm() >= l2) {
+        double lo = a, hi = b;
+        for (int it = 0; it < 200; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          ((c(mid) - node).squaredNorm() < l2 ? lo : hi) = mid;
+        }
+        const double e_lo = std::abs((c(lo) - node).norm() - l), e_hi = std::abs((c(hi) - node).norm() - l);
+        t_node = (e_lo < e_hi && lo > t_node) ? lo : hi;
+        found = true;
+        break;
+      }
+      a = b;
+    }
+    if (!found) return;
+    node = c(t_node);
+    if (!visit(node)) return;
+  }
+}
+
+// The last segment of a join and the checks on it (wire_join's rules).
+WireJoin finish_join(std::vector<Eigen::Vector3d> nodes, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                     double l, const JoinSettings& s) {
+  const auto last_from = [&]() { return nodes.empty() ? from : nodes.back(); };
+  const double r = (to - last_from()).norm();
+  WireJoin join;
+  if (!nodes.empty() && r < kCountTolerance * l) {  // `to` on the last node: that node is `to`
+    nodes.pop_back();
+    join.last_rest_length = l;
+  } else if (r >= l * (1.0 - kCountTolerance)) {
+    join.last_rest_length = l;
+  } else if (r < s.min_last * l || r < kCountTolerance * l) {
+    if (nodes.empty())
+      throw InvalidArgument("join_min", "the layout's first node is " + format_number(r) +
+                                            " from the end bead, closer than join_min x segment_length = " +
+                                            format_number(s.min_last * l) +
+                                            " (lay the layout further away, or lower join_min)");
+    nodes.pop_back();
+    join.last_rest_length = (to - last_from()).norm();
+  } else {
+    join.last_rest_length = r;
+  }
+  join.length = static_cast<double>(nodes.size()) * l + join.last_rest_length;
+  if (s.max_length > 0.0 && join.length > s.max_length)
+    throw InvalidArgument("join_max", "the join from the end bead to the layout's first node is " +
+                                          format_number(join.length) + " long (" +
+                                          std::to_string(nodes.size() + 1) + " segments), longer than join_max " +
+                                          format_number(s.max_length) +
+                                          " (raise join_max, or append to another chain end)");
+  join.nodes = std::move(nodes);
+  return join;
+}
+
+// The helix join's curve (wire_join): ρ, φ, z linear in t ∈ [0, 1].
+struct HelixJoinCurve {
+  double cx, cy, rho0, drho, phi0, dphi, z0, dz;
+  Eigen::Vector3d operator()(double t) const {
+    const double rho = rho0 + drho * t, phi = phi0 + dphi * t;
+    return Eigen::Vector3d(cx + rho * std::cos(phi), cy + rho * std::sin(phi), z0 + dz * t);
+  }
+};
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> wire_spiral(double centre_x, double centre_y, double z, double r0, double r1,
+                                         double turns, double segment_length) {
+  require_positive("segment_length", segment_length);
+  require_finite("centre_x", centre_x);
+  require_finite("centre_y", centre_y);
+  require_finite("z", z);
+  require_nonnegative("r0", r0);
+  require_nonnegative("r1", r1);
+  require_positive("turns", turns);
+  if (r0 == r1)
+    throw InvalidArgument("r1", "r1 must differ from r0 (" + format_number(r0) +
+                                    "): a spiral of constant radius is a loop");
+  const double l = segment_length;
+  const double phi_end = 2.0 * kPi * turns;
+  const double b = (r1 - r0) / phi_end;  // dr/dφ
+  // the arc ∫ sqrt(r² + b²) dφ ≤ ∫ (r + |b|) dφ bounds the chords
+  const double arc_bound = phi_end * 0.5 * (r0 + r1) + std::abs(r1 - r0);
+  if (!(arc_bound / l + 1.0 <= static_cast<double>(kMaxWireBeads)))
+    throw_too_many_beads(l, bead_count_text(std::floor(arc_bound / l) + 1.0) + " beads or more, more than the " +
+                                std::to_string(kMaxWireBeads) + " one wire may have");
+  const auto curve = [&](double phi) {
+    const double r = r0 + b * phi;
+    return Eigen::Vector3d(centre_x + r * std::cos(phi), centre_y + r * std::sin(phi), z);
+  };
+  std::vector<Eigen::Vector3d> nodes;
+  walk_curve(curve, phi_end * (1.0 + kCountTolerance), std::max(r0, r1) + std::abs(b), l,
+             [&](const Eigen::Vector3d& node) {
+               nodes.push_back(node);
+               return true;
+             });
+  if (nodes.size() < 2)
+    throw InvalidArgument("turns", "turns " + format_number(turns) + " is shorter than one segment");
+  return nodes;
+}
+
+WireJoin wire_join(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double segment_length,
+                   const JoinSettings& s) {
+  require_positive("segment_length", segment_length);
+  if (!from.allFinite()) throw InvalidArgument("append", "the end bead is not at a finite point");
+  if (!to.allFinite()) throw InvalidArgument("append", "the layout's first node is not a finite point");
+  if (!(s.min_last >= 0.0 && s.min_last <= 1.0))
+    throw InvalidArgument("join_min", "join_min must be in [0, 1], got " + format_number(s.min_last));
+  require_nonnegative("join_max", s.max_length);
+  const double l = segment_length;
+  std::vector<Eigen::Vector3d> nodes;
+  if (s.path == JoinPath::straight) {
+    const Eigen::Vector3d d = to - from;
+    const double distance = d.norm();
+    if (!(distance / l + 1.0 <= static_cast<double>(kMaxWireBeads)))
+      throw_too_many_beads(l, "a join of more than " + std::to_string(kMaxWireBeads) + " beads");
+    if (distance > 0.0) {
+      const Eigen::Vector3d u = d / distance;
+      for (long k = 1; static_cast<double>(k) * l <= distance; ++k) nodes.push_back(from + (static_cast<double>(k) * l) * u);
+    }
+  } else {
+    require_finite("axis_x", s.axis_x);
+    require_finite("axis_y", s.axis_y);
+    const double ax = from.x() - s.axis_x, ay = from.y() - s.axis_y;
+    const double bx = to.x() - s.axis_x, by = to.y() - s.axis_y;
+    HelixJoinCurve c;
+    c.cx = s.axis_x;
+    c.cy = s.axis_y;
+    c.rho0 = std::hypot(ax, ay);
+    c.drho = std::hypot(bx, by) - c.rho0;
+    c.phi0 = std::atan2(ay, ax);
+    double dphi = std::atan2(by, bx) - c.phi0;
+    while (dphi < 0.0) dphi += 2.0 * kPi;
+    while (dphi >= 2.0 * kPi) dphi -= 2.0 * kPi;
+    c.dphi = dphi;
+    c.z0 = from.z();
+    c.dz = to.z() - from.z();
+    const double rho_max = std::max(c.rho0, c.rho0 + c.drho);
+    const double speed = std::abs(c.drho) + rho_max * dphi + std::abs(c.dz);
+    if (!(speed / l + 1.0 <= static_cast<double>(kMaxWireBeads)))
+      throw_too_many_beads(l, "a join of more than " + std::to_string(kMaxWireBeads) + " beads");
+    if (speed > 0.0)
+      walk_curve(c, 1.0, speed, l, [&](const Eigen::Vector3d& node) {
+        nodes.push_back(node);
+        return true;
+      });
+    if (!nodes.empty()) nodes.erase(nodes.begin());  // c(0) is `from`, not a join node
+  }
+  return finish_join(std::move(nodes), from, to, l, s);
+}
+
 namespace {
 
 // The nodes of a polyline resampled at chord l_w (wire_polyline), each given to visit(node)

@@ -47,6 +47,56 @@ std::vector<Eigen::Vector3d> wire_loop(double centre_x, double centre_y, double 
                                        double radius, double turns, double pitch,
                                        double segment_length);
 
+// One flat circle of radius R about the vertical axis through (centre_x, centre_y) at
+// height z: wire_loop with turns = 1 and pitch = 0 (the first node at (cx + R, cy, z)); the
+// circle stays open: when 2π / Δφ is a whole number the node that would fall on the first
+// is left out (R = l_w: a hexagon of 6 nodes, not 7).
+std::vector<Eigen::Vector3d> wire_circle(double centre_x, double centre_y, double z, double radius,
+                                         double segment_length);
+
+// Archimedean spiral in the plane at height z about (centre_x, centre_y):
+//   r(φ) = r0 + (r1 − r0) φ / (2π turns),  node at (cx + r cos φ, cy + r sin φ, z),
+// φ from 0 to 2π turns (counter-clockwise); r0 < r1 winds out from the centre, r0 > r1 in.
+// The first node is at φ = 0; each next node is the first point further along the spiral
+// at Euclidean distance l_w from the previous node (the chord, found by bisection to the
+// last bit of φ); the part of the spiral shorter than one chord left at its end is dropped,
+// an end within 1e-9 (relative, of φ) of a node counting as reached. Requires r0, r1 ≥ 0,
+// r0 ≠ r1, turns > 0, l_w > 0; |r1 − r0| / turns ≥ 2 r_w keeps the turns from touching.
+std::vector<Eigen::Vector3d> wire_spiral(double centre_x, double centre_y, double z, double r0, double r1,
+                                         double turns, double segment_length);
+
+// The stretch that joins the free end of a chain (`from`, its end bead) to the first node
+// of a layout (`to`):
+//   straight: the line from `from` to `to`;
+//   helix: about the vertical axis through (axis_x, axis_y), radius ρ, azimuth φ and height
+//     z all linear in t ∈ [0, 1], from those of `from` to those of `to`, the azimuth turning
+//     counter-clockwise (the way loop, helix, circle and spiral turn) by
+//     Δφ = (φ_to − φ_from) mod 2π ∈ [0, 2π) (a point on the axis has azimuth 0).
+// Join nodes lie on the path from `from` at chord l_w from one another (the first l_w from
+// `from`), while the path's end `to` is more than l_w away from the last node; the
+// segment from the last join node (or from `from` when there is none) to `to` is the last
+// segment, of length r ≤ l_w: its rest length is r (the join is laid without stress).
+// Rules for r: within 1e-9 l_w of l_w it is l_w (a `to` exactly l_w further along makes a
+// join of no node whose one segment is a whole segment); below min_last l_w the last join
+// node is dropped and the last segment runs from the node before (a chord of up to about
+// (1 + min_last) l_w: no segment much stiffer than a whole one); with no join node to drop,
+// or r below 1e-9 l_w, `to` is too close to `from`: InvalidArgument("join_min"). The join's
+// length (the sum of its segments) may be at most max_length: InvalidArgument("join_max").
+enum class JoinPath { straight, helix };
+struct WireJoin {
+  std::vector<Eigen::Vector3d> nodes;  // strictly between `from` and `to`, in order
+  double last_rest_length = 0.0;       // rest length of the segment into `to`
+  double length = 0.0;                 // the sum of the join's segments (l_w each, then the last)
+};
+struct JoinSettings {
+  JoinPath path = JoinPath::straight;
+  double axis_x = 0.0, axis_y = 0.0;  // helix: the vertical axis
+  double min_last = 0.5;              // the shortest last segment, in l_w
+  double max_length = 0.0;            // > 0: the longest join
+};
+WireJoin wire_join(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double segment_length,
+                   const JoinSettings& settings);
+
 // Resample a polyline (≥ 2 points, no zero-length piece): the first node is the first
 // point, each next node is the first point further along the polyline at Euclidean
 // distance l_w from the previous node, until the polyline ends. Across a corner the
