@@ -45,6 +45,7 @@ struct WireSettings {
   wiregrain::JoinSettings join;
   bool join_max_given = false;
   std::string join_keyword;  // the first join keyword given (join, join_max, join_min)
+  bool join_min_given = false;
 };
 
 bool has_axis(const std::string &layout) {
@@ -112,6 +113,7 @@ WireSettings parse_settings(LAMMPS *lmp, wiregrain_lmp::StyleArgs &args, int nar
       if (s.join_keyword.empty()) s.join_keyword = key;
     } else if (key == "join_min") {
       s.join.min_last = args.value_in_range(key, 0.0, 1.0, "[0, 1]");
+      s.join_min_given = true;
       if (s.join_keyword.empty()) s.join_keyword = key;
     } else {
       args.unknown_keyword(key);
@@ -122,6 +124,10 @@ WireSettings parse_settings(LAMMPS *lmp, wiregrain_lmp::StyleArgs &args, int nar
   if (s.append && s.join.path == wiregrain::JoinPath::helix && !has_axis(s.layout))
     args.fail("join helix needs a layout with a vertical axis (loop, helix, circle or spiral), not '" + s.layout + "'");
   if (s.append && !s.join_max_given) s.join.max_length = 10.0 * s.material.segment_length;
+  // by default no join segment shorter than 2 r_w (pair wire/contact refuses those: the
+  // segments on either side would overlap at rest), and none shorter than l_w / 2
+  if (!s.join_min_given)
+    s.join.min_last = std::min(1.0, std::max(0.5, 2.0 * s.material.radius / s.material.segment_length));
   if (has_axis(s.layout)) {
     s.join.axis_x = s.geometry[0];
     s.join.axis_y = s.geometry[1];

@@ -298,7 +298,7 @@ class CreateWireAppend(Table, DeckTestCase):
          "(12 segments), longer than join_max 2.4 (raise join_max, or append to another chain end)"),
         (WIRE_LINE + "create_wire 1 line 1.05 0 0 1.85 0 0 append 6",
          CW + "'join_min': the layout's first node is 0.05 from the end bead, closer than join_min x "
-         "segment_length = 0.1 (lay the layout further away, or lower join_min)"),
+         "segment_length = 0.2 (lay the layout further away, or lower join_min)"),
         (WIRE_LINE + NEW + " append 6 join_min 2", CW + "value of 'join_min' must be in [0, 1], got 2"),
         (WIRE_LINE + NEW + " append first", CW + "value of 'append' must be an atom ID >= 1 or 'last', got 'first'"),
         (WIRE_LINE + NEW + " append 6 join curved", CW + "value of 'join' must be straight or helix, got 'curved'"),

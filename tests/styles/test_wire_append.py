@@ -128,7 +128,8 @@ class TensionThroughTheJoin(DeckTestCase):
     # made in between (the appended beads' IDs then skip one, as grains between two wire
     # layers make them), the second layer's line from 1.65 u to 2.65 u appended to bead 6:
     # the join from u to 1.65 u has nodes at 1.2 u and 1.4 u (1.6 u dropped: the remainder
-    # 0.05 is below join_min 0.5 l_w = 0.1) and a last segment of rest length 0.25
+    # 0.05 is below join_min l_w = 0.2, join_min's default 2 r_w / l_w here) and a last segment
+    # of rest length 0.25
     LAID = """
 create_wire     1 line 0 0 0 0.6 0 0.8
 create_atoms    1 single 4 4 4
@@ -227,8 +228,10 @@ write_data      chain.data
                 x = np.array(atoms[t][5:])
                 y = np.array(atoms[atoms[t][1]][5:])
                 self.assertAlmostEqual(np.linalg.norm(y - x), atoms[t][2], delta=1e-12, msg=f"{join}: bead {t}")
-                self.assertLessEqual(atoms[t][2], 0.2 * 1.5 + 1e-12)
-                self.assertGreaterEqual(atoms[t][2], 0.2 * 0.5 - 1e-12)
+                # join_min's default here 2 r_w / l_w = 1: a join's last segment below 2 l_w
+                self.assertLessEqual(atoms[t][2], 0.2 * 2 + 1e-12)
+                # and none below 2 r_w = 0.2, which pair wire/contact refuses
+                self.assertGreaterEqual(atoms[t][2], 0.2 - 1e-12)
 
 
 class Layouts(DeckTestCase):
