@@ -17,8 +17,8 @@ failed run is tried again. --summary-only runs nothing and tabulates the finishe
 
 --scheduler slurm submits the runs not yet finished as one Slurm job array (sbatch), each
 task one (value, seed) run in its folder with --ranks MPI ranks (mpirun inside the task's
-allocation; --ranks is --np); --time, --partition, --account and every --sbatch OPTION go
-to sbatch. The array's script, its list of runs and the tasks' output are in OUT/slurm/. A
+allocation, or srun with --launcher srun; --ranks is --np); --time, --partition, --account
+and every --sbatch OPTION go to sbatch. The array's script, its list of runs and the tasks' output are in OUT/slurm/. A
 second submit skips the finished runs (nothing is submitted when all are finished). A failed
 run leaves error.txt in its folder (its log's last ERROR line). --collect (= --summary-only)
 tabulates the finished runs and lists the failed ones with their ERROR line.
@@ -58,7 +58,12 @@ def run_directory(out, param, value, seed):
 
 def command(args, value, seed):
     deck = os.path.abspath(args.deck)
-    cmd = [] if args.np == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
+    if args.np == 1:
+        cmd = []
+    elif getattr(args, "launcher", "mpirun") == "srun":
+        cmd = ["srun", "-n", str(args.np)]
+    else:
+        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
     cmd += [os.path.abspath(args.liggghts), "-in", deck, "-log", "log.liggghts",
             "-var", args.param, str(value), "-var", "seed", str(seed), "-var", "root", REPOSITORY]
     for name, val in args.var:
@@ -176,6 +181,8 @@ def main():
                              "list the failed ones")
     parser.add_argument("--scheduler", choices=["local", "slurm"], default="local")
     parser.add_argument("--ranks", type=int, dest="np", help="MPI ranks per run (= --np)")
+    parser.add_argument("--launcher", choices=["mpirun", "srun"], default="mpirun",
+                        help="what starts the ranks of a run when --ranks > 1 (srun: inside a Slurm task)")
     parser.add_argument("--time", help="sbatch --time of each task")
     parser.add_argument("--partition", help="sbatch --partition")
     parser.add_argument("--account", help="sbatch --account")
