@@ -26,6 +26,7 @@ PACKAGES=(
   libfclib-dev libsiconos-numerics-dev
   python3 python3-numpy python3-matplotlib python3-vtk9
   xvfb  # postprocess/render_column.py: Debian's VTK renders through X only, Xvfb without a display
+  slurmctld slurmd slurm-client munge  # tests/regression/test_slurm.py: a one-node Slurm for sweep.py --scheduler slurm
 )
 
 as_root() {

@@ -4,7 +4,9 @@ side, resumable; collect the final observables in a table.
 
     postprocess/sweep.py PARAM VALUE [VALUE ...] [--seeds 1001 2002 3003]
         [--deck input_scripts/in.column] [--var NAME VALUE ...] [--out sweeps/PARAM]
-        [--jobs N] [--np 1] [--liggghts build/liggghts] [--summary-only]
+        [--jobs N] [--np 1] [--liggghts build/liggghts] [--summary-only | --collect]
+        [--scheduler local|slurm] [--ranks N] [--time T] [--partition P] [--account A]
+        [--sbatch OPTION ...]
 
 Each run goes to OUT/PARAM=VALUE/seed=S/ (its log, column.obs, restart files, post/) and is
 run as `liggghts -in DECK -var PARAM VALUE -var seed S -var root REPOSITORY [--var ...]`,
@@ -12,6 +14,14 @@ with `mpirun -np NP` when NP > 1. A run is finished when its directory holds fin
 (written here once the deck printed its "in.column final: ..." line and exited cleanly):
 finished runs are not repeated, so an interrupted sweep continues where it stopped, and a
 failed run is tried again. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
+
+--scheduler slurm submits the runs not yet finished as one Slurm job array (sbatch), each
+task one (value, seed) run in its folder with --ranks MPI ranks (mpirun inside the task's
+allocation, or srun with --launcher srun; --ranks is --np); --time, --partition, --account
+and every --sbatch OPTION go to sbatch. The array's script, its list of runs and the tasks' output are in OUT/slurm/. A
+second submit skips the finished runs (nothing is submitted when all are finished). A failed
+run leaves error.txt in its folder (its log's last ERROR line). --collect (= --summary-only)
+tabulates the finished runs and lists the failed ones with their ERROR line.
 
 OUT/summary.csv: one row per finished run (param, value, seed, H_n, phi_p, U_s/L, z_wpc,
 H0, H, wall time in s), rewritten after every run, read by postprocess/plot_sweep.py. The observables: see
@@ -48,7 +58,12 @@ def run_directory(out, param, value, seed):
 
 def command(args, value, seed):
     deck = os.path.abspath(args.deck)
-    cmd = [] if args.np == 1 else ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
+    if args.np == 1:
+        cmd = []
+    elif getattr(args, "launcher", "mpirun") == "srun":
+        cmd = ["srun", "-n", str(args.np)]
+    else:
+        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np)]
     cmd += [os.path.abspath(args.liggghts), "-in", deck, "-log", "log.liggghts",
             "-var", args.param, str(value), "-var", "seed", str(seed), "-var", "root", REPOSITORY]
     for name, val in args.var:
@@ -78,7 +93,12 @@ def run_one(args, value, seed):
     final = parse_final(texts[0])
     if status != 0 or final is None:
         errors = [line for line in "\n".join(texts).splitlines() if line.startswith("ERROR")]
-        return None, f"{where}: exit {status}; " + (errors[-1] if errors else "no final line in log.liggghts")
+        error = f"{where}: exit {status}; " + (errors[-1] if errors else "no final line in log.liggghts")
+        with open(os.path.join(where, "error.txt"), "w") as f:
+            f.write(error + "\n")
+        return None, error
+    if os.path.exists(os.path.join(where, "error.txt")):
+        os.remove(os.path.join(where, "error.txt"))
     row = {"param": args.param, "value": value, "seed": seed, **final, "wall_s": round(wall, 1)}
     with open(done, "w") as f:
         json.dump(row, f)
@@ -93,7 +113,59 @@ def write_summary(path, rows):
             writer.writerow({k: row[k] for k in COLUMNS})
 
 
+def finished(args, value, seed):
+    return os.path.exists(os.path.join(run_directory(args.out, args.param, value, seed), "final.json"))
+
+
+def submit_slurm(args, todo):
+    """Writes OUT/slurm/array-<time>.{json,sh} and submits the script with sbatch."""
+    todo = [(v, s) for v, s in todo if not finished(args, v, s)]
+    if not todo:
+        print("every run is finished: nothing submitted")
+        return 0
+    where = os.path.abspath(os.path.join(args.out, "slurm"))
+    os.makedirs(where, exist_ok=True)
+    stem = os.path.join(where, time.strftime("array-%Y%m%d-%H%M%S-") + str(os.getpid()))
+    spec = {k: v for k, v in vars(args).items()}
+    spec.update(out=os.path.abspath(args.out), deck=os.path.abspath(args.deck),
+                liggghts=os.path.abspath(args.liggghts), runs=todo)
+    with open(stem + ".json", "w") as f:
+        json.dump(spec, f, indent=1)
+    lines = ["#!/bin/sh", f"#SBATCH --job-name=sweep-{args.param}", f"#SBATCH --array=0-{len(todo) - 1}",
+             f"#SBATCH --ntasks={args.np}", f"#SBATCH --output={where}/%A_%a.out"]
+    for option, value in (("time", args.time), ("partition", args.partition), ("account", args.account)):
+        if value:
+            lines.append(f"#SBATCH --{option}={value}")
+    lines.append(f'exec {sys.executable} {os.path.abspath(__file__)} --run-task {stem}.json "$SLURM_ARRAY_TASK_ID"')
+    with open(stem + ".sh", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    cmd = ["sbatch", "--parsable", *args.sbatch, stem + ".sh"]
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    if proc.returncode != 0:
+        print(f"sbatch failed (exit {proc.returncode}): {proc.stdout.strip()}")
+        return 1
+    job = proc.stdout.strip().split(";")[0]
+    print(f"submitted job array {job}: {len(todo)} runs ({stem}.sh)")
+    return 0
+
+
+def run_task(spec_path, index):
+    """One task of a job array: the run at INDEX of the array's list."""
+    with open(spec_path) as f:
+        spec = json.load(f)
+    args = argparse.Namespace(**spec)
+    value, seed = spec["runs"][int(index)]
+    row, error = run_one(args, value, seed)
+    if error:
+        print(f"FAILED {args.param}={value} seed={seed}: {error}", flush=True)
+        return 1
+    print(f"{args.param}={value} seed={seed}: H_n {row['H_n']:.4f} ({row['wall_s']:.0f} s)", flush=True)
+    return 0
+
+
 def main():
+    if len(sys.argv) == 4 and sys.argv[1] == "--run-task":
+        return run_task(sys.argv[2], sys.argv[3])
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("param")
     parser.add_argument("values", nargs="+")
@@ -104,8 +176,18 @@ def main():
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=None)
     parser.add_argument("--liggghts", default=os.path.join(REPOSITORY, "build", "liggghts"))
-    parser.add_argument("--summary-only", action="store_true",
-                        help="run nothing: tabulate the finished runs under --out into summary.csv")
+    parser.add_argument("--summary-only", "--collect", dest="summary_only", action="store_true",
+                        help="run nothing: tabulate the finished runs under --out into summary.csv, "
+                             "list the failed ones")
+    parser.add_argument("--scheduler", choices=["local", "slurm"], default="local")
+    parser.add_argument("--ranks", type=int, dest="np", help="MPI ranks per run (= --np)")
+    parser.add_argument("--launcher", choices=["mpirun", "srun"], default="mpirun",
+                        help="what starts the ranks of a run when --ranks > 1 (srun: inside a Slurm task)")
+    parser.add_argument("--time", help="sbatch --time of each task")
+    parser.add_argument("--partition", help="sbatch --partition")
+    parser.add_argument("--account", help="sbatch --account")
+    parser.add_argument("--sbatch", action="append", default=[], metavar="OPTION",
+                        help="an extra sbatch option, e.g. --sbatch=--qos=short (repeatable)")
     args = parser.parse_args()
     if args.np < 1:
         parser.error(f"--np must be >= 1, got {args.np}")
@@ -118,8 +200,23 @@ def main():
     jobs = args.jobs or max(1, (os.cpu_count() or 1) // args.np)
 
     todo = [(v, s) for v in args.values for s in args.seeds]
+    if args.scheduler == "slurm" and not args.summary_only:
+        return submit_slurm(args, todo)
     if args.summary_only:
-        todo = [(v, s) for v, s in todo if os.path.exists(os.path.join(run_directory(args.out, args.param, v, s), "final.json"))]
+        failed = []
+        for v, s in todo:
+            error = os.path.join(run_directory(args.out, args.param, v, s), "error.txt")
+            if not finished(args, v, s) and os.path.exists(error):
+                with open(error) as f:
+                    failed.append(f.read().strip())
+                print(f"FAILED {args.param}={v} seed={s}: {failed[-1]}", flush=True)
+        missing = len(todo) - sum(finished(args, v, s) for v, s in todo)
+        todo = [(v, s) for v, s in todo if finished(args, v, s)]
+        os.makedirs(args.out, exist_ok=True)
+        write_summary(os.path.join(args.out, "summary.csv"), [run_one(args, v, s)[0] for v, s in todo])
+        print(f"{len(todo)} runs finished, {len(failed)} failed, {missing - len(failed)} not run or running; "
+              f"table in {os.path.join(args.out, 'summary.csv')}")
+        return 1 if failed else 0
     rows, failures = {}, []
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = {pool.submit(run_one, args, v, s): (v, s) for v, s in todo}
