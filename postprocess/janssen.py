@@ -5,7 +5,7 @@
     postprocess/janssen.py RUN [RUN ...] [--phase auto|mobilized|rest] [--density measured|fitted]
                            [--height H|zcm] [--D D] [--mu-wall MU] [--plot FILE.png] [--json]
 
-RUN is a run's folder (its post/silo.txt is read) or the file itself. Janssen's law for a
+RUN is a run's folder (its post/silo.txt is read, else its silo.txt) or the file itself. Janssen's law for a
 square section of side D (area A = D², perimeter 4D), wall friction μ_w fully mobilized
 and a horizontal-to-vertical stress ratio K:
 
@@ -56,7 +56,8 @@ PHASES = {"rest": (0, 1), "mobilized": (2,)}
 def read_silo(path):
     """(header parameters as a dict of strings, columns as a dict of arrays) of a silo.txt."""
     if os.path.isdir(path):
-        path = os.path.join(path, "post", "silo.txt")
+        inside = os.path.join(path, "post", "silo.txt")
+        path = inside if os.path.exists(inside) else os.path.join(path, "silo.txt")
     params, rows = {}, []
     with open(path) as f:
         for line in f:
@@ -119,7 +120,10 @@ def fit(H, W, M, D, mu_wall, density="measured"):
         raise ValueError(f"density must be measured or fitted, got {density}")
     K = D / (4 * mu_wall * lam) if mu_wall > 0 else float("inf")
     predicted = model(H, *p)
-    return {"lambda": lam, "sigma_lambda": sigma_lam, "K": K, "sigma_K": K * sigma_lam / lam,
+    # λ at its upper bound: the floor carries the weight or more (walls pulling down on
+    # balance), which no K > 0 describes
+    return {"lambda": lam, "at_bound": bool(lam >= 0.5 * bounds_lam[1]), "sigma_lambda": sigma_lam, "K": K,
+            "sigma_K": K * sigma_lam / lam,
             "w": w, "sigma_w": sigma_w, "rms": float(np.sqrt(np.mean((M - predicted) ** 2))), "points": int(len(H))}
 
 
@@ -218,7 +222,7 @@ def plot(result, path):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("runs", nargs="+", help="run folders (post/silo.txt) or silo.txt files")
+    parser.add_argument("runs", nargs="+", help="run folders (post/silo.txt or silo.txt) or silo.txt files")
     parser.add_argument("--phase", choices=["auto", "mobilized", "rest"], default="auto")
     parser.add_argument("--density", choices=["measured", "fitted"], default="measured")
     parser.add_argument("--height", choices=["H", "zcm"], default="H")
@@ -235,7 +239,7 @@ def main(argv=None):
             continue
         print(f"{r['run']:24s} {r['phase']:9s} {r['points']:3d} {r['H_max']:7.3f} {r['M_over_W_at_H_max']:6.3f} "
               f"{r['lambda']:8.4g} ± {r['sigma_lambda']:<5.2g} {r['K']:8.4g} ± {r['sigma_K']:<5.2g} "
-              f"{r['saturation']:7.3f}")
+              f"{r['saturation']:7.3f}" + ("  lambda at its bound (M_floor >= W)" if r["at_bound"] else ""))
     for which, s in result["phases"].items():
         p = s.get("pooled", {})
         line = f"{which}: {s['runs']} run(s)"

@@ -51,3 +51,7 @@ T=$R/tall_rest
 # the wire energy during wall removal
 /usr/bin/python3 $P/plot_column.py $R/table1_2026-12-04 -o docs/column/table1_wall_removal_2026-12-04.png \
     --legend "Table 1 at the defaults, seed 4242"
+# the silo at rest and with the floor lowered (input_scripts/in.silo; docs/results.md, "A silo
+# to compare with"): floor load over weight against the fill height, Janssen's fits
+S=$R/silo_2026-12-06
+/usr/bin/python3 $P/janssen.py $S/rest/seed* $S/mobilized/seed* --plot docs/figures/silo_janssen.png > $S/janssen.txt
