@@ -24,7 +24,7 @@ PACKAGES=(
   libeigen3-dev libcgal-dev libgsl-dev libvtk9-dev
   libgtest-dev libgmock-dev
   libfclib-dev libsiconos-numerics-dev
-  python3 python3-numpy python3-matplotlib python3-vtk9
+  python3 python3-numpy python3-scipy python3-matplotlib python3-vtk9  # scipy: postprocess/janssen.py
   xvfb  # postprocess/render_column.py: Debian's VTK renders through X only, Xvfb without a display
   slurmctld slurmd slurm-client munge  # tests/regression/test_slurm.py: a one-node Slurm for sweep.py --scheduler slurm
 )

@@ -55,3 +55,7 @@ T=$R/tall_rest
 L=$R/column_load_2026-12-05
 /usr/bin/python3 $P/load_curve.py $L/wire_s4242_v0.01 $L/wire_s1001_v0.01 $L/wire_s2002_v0.01 \
     $L/no_wire_s4242_v0.01 $L/no_wire_s1001_v0.01 $L/no_wire_s2002_v0.01 --plot docs/column/column_load.png
+# the silo at rest and with the floor lowered (input_scripts/in.silo; docs/results.md, "A silo
+# to compare with"): floor load over weight against the fill height, Janssen's fits
+S=$R/silo_2026-12-06
+/usr/bin/python3 $P/janssen.py $S/rest/seed* $S/mobilized/seed* --plot docs/figures/silo_janssen.png > $S/janssen.txt
