@@ -638,7 +638,8 @@ def draw(args, vtp, contacts_gg, contacts_gw, grains, wire, path, rc):
     window.SetMultiSamples(0)
     window.SetAlphaBitPlanes(1)
     window.AddRenderer(renderer)
-    window.AddRenderer(colour_bar(vtk, rc, lut, bar_width, height))
+    font = max(12, height // 30)
+    window.AddRenderer(rc.colour_bar_renderer(lut, bar_width, font, "f_n", font, 0.9))
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(window)
@@ -682,33 +683,6 @@ def add_wire(renderer, wire, datasets):
     actor.GetProperty().SetColor(0.6, 0.65, 0.72)
     actor.GetProperty().SetOpacity(0.35)
     renderer.AddActor(actor)
-
-
-def colour_bar(vtk, rc, lut, bar_width, height):
-    renderer = vtk.vtkRenderer()
-    renderer.SetViewport(1.0 - bar_width, 0.0, 1.0, 1.0)
-    renderer.SetBackground(1.0, 1.0, 1.0)
-    bar = vtk.vtkScalarBarActor()
-    bar.SetLookupTable(lut)
-    bar.SetTitle("")
-    bar.SetNumberOfLabels(5)
-    bar.SetLabelFormat("%.2g")
-    bar.UnconstrainedFontSizeOn()
-    bar.SetBarRatio(0.3)
-    font = max(12, height // 30)
-    for prop in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
-        prop.SetColor(0.1, 0.1, 0.1)
-        prop.SetFontSize(font)
-        prop.BoldOff()
-        prop.ItalicOff()
-        prop.ShadowOff()
-    bar.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
-    bar.SetPosition(0.1, 0.1)
-    bar.SetWidth(0.85)
-    bar.SetHeight(0.7)
-    renderer.AddActor2D(bar)
-    renderer.AddActor2D(rc.text_actor("f_n", font, 0.5, 0.9))
-    return renderer
 
 
 # --- the run ----------------------------------------------------------------------------------

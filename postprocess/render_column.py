@@ -157,6 +157,35 @@ def start_xvfb(width, height):
 
 # --- the scene ----------------------------------------------------------------------------
 
+def colour_bar_renderer(lut, bar_width, label_font, title, title_font, title_y):
+    """A renderer for the right `bar_width` of the window: the colour bar of `lut` with its
+    labels at `label_font` points and `title` above it (at height `title_y` of the viewport)."""
+    import vtk
+    renderer = vtk.vtkRenderer()
+    renderer.SetViewport(1.0 - bar_width, 0.0, 1.0, 1.0)
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(lut)
+    bar.SetTitle("")
+    bar.SetNumberOfLabels(5)
+    bar.SetLabelFormat("%.2g")
+    bar.UnconstrainedFontSizeOn()
+    bar.SetBarRatio(0.3)
+    for prop in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+        prop.SetColor(0.1, 0.1, 0.1)
+        prop.SetFontSize(label_font)
+        prop.BoldOff()
+        prop.ItalicOff()
+        prop.ShadowOff()
+    bar.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+    bar.SetPosition(0.1, 0.1)
+    bar.SetWidth(0.85)
+    bar.SetHeight(0.7)
+    renderer.AddActor2D(bar)
+    renderer.AddActor2D(text_actor(title, title_font, 0.5, title_y))
+    return renderer
+
+
 def energy_lookup(vmin, vmax):
     import vtk
     ctf = vtk.vtkColorTransferFunction()
@@ -394,29 +423,8 @@ def render(states, args):
         place_camera(renderer, frame, w * width / (h * height), bool(title))
         window.AddRenderer(renderer)
     if energies:
-        renderer = vtk.vtkRenderer()
-        renderer.SetViewport(1.0 - bar_width, 0.0, 1.0, 1.0)
-        renderer.SetBackground(1.0, 1.0, 1.0)
-        bar = vtk.vtkScalarBarActor()
-        bar.SetLookupTable(lut)
-        bar.SetTitle("")
-        bar.SetNumberOfLabels(5)
-        bar.SetLabelFormat("%.2g")
-        bar.UnconstrainedFontSizeOn()
-        bar.SetBarRatio(0.3)
-        for prop in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
-            prop.SetColor(0.1, 0.1, 0.1)
-            prop.SetFontSize(int(font * 0.65))
-            prop.BoldOff()
-            prop.ItalicOff()
-            prop.ShadowOff()
-        bar.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
-        bar.SetPosition(0.1, 0.1)
-        bar.SetWidth(0.85)
-        bar.SetHeight(0.7)
-        renderer.AddActor2D(bar)
-        renderer.AddActor2D(text_actor("wire elastic\nenergy\nper bead", int(font * 0.7), 0.5, 0.95))
-        window.AddRenderer(renderer)
+        window.AddRenderer(colour_bar_renderer(lut, bar_width, int(font * 0.65), "wire elastic\nenergy\nper bead",
+                                               int(font * 0.7), 0.95))
 
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
