@@ -640,18 +640,7 @@ def draw(args, vtp, contacts_gg, contacts_gw, grains, wire, path, rc):
     window.AddRenderer(renderer)
     font = max(12, height // 30)
     window.AddRenderer(rc.colour_bar_renderer(lut, bar_width, font, "f_n", font, 0.9))
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    window.Finalize()
-    if writer.GetErrorCode() != 0 or not os.path.exists(path):
+    if not rc.write_png(window, path):
         fail(f"cannot write {path}")
     return path
 

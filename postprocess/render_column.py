@@ -157,6 +157,24 @@ def start_xvfb(width, height):
 
 # --- the scene ----------------------------------------------------------------------------
 
+def write_png(window, path):
+    """Render `window` and write it to the PNG `path` (RGB, the back buffer); the window is
+    finalised before a private Xvfb goes away. Returns whether the file was written."""
+    import vtk
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    window.Finalize()
+    return writer.GetErrorCode() == 0 and os.path.exists(path)
+
+
 def colour_bar_renderer(lut, bar_width, label_font, title, title_font, title_y):
     """A renderer for the right `bar_width` of the window: the colour bar of `lut` with its
     labels at `label_font` points and `title` above it (at height `title_y` of the viewport)."""
@@ -426,18 +444,7 @@ def render(states, args):
         window.AddRenderer(colour_bar_renderer(lut, bar_width, int(font * 0.65), "wire elastic\nenergy\nper bead",
                                                int(font * 0.7), 0.95))
 
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(args.out)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    window.Finalize()   # before a private Xvfb goes away
-    if writer.GetErrorCode() != 0 or not os.path.exists(args.out):
+    if not write_png(window, args.out):
         fail(f"cannot write {args.out}")
     shown = ", ".join(os.path.basename(s.grains or s.wire) for s in states)
     scale = f"; wire energy {vmin:.3g} to {vmax:.3g}" if energies else ""
