@@ -13,7 +13,7 @@ import tempfile
 
 import numpy as np
 
-from liggghts_run import SOURCE, DeckTestCase, deck, deck_box, main, run
+from liggghts_run import SOURCE, DeckTestCase, deck, deck_box, main, read_local_dump, run
 
 COLUMN = deck("input_scripts/in.column")
 LOAD = deck("input_scripts/in.column_load")
@@ -106,9 +106,8 @@ class Load(DeckTestCase):
         dumped = steps % 10 == 0
         k = np.nonzero(dumped)[0][np.argmax(s["F_grains"][dumped])]
         path = r.path(f"post/load_contacts_{steps[k]}.dump")
-        lines = open(path).read().splitlines()
-        start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ENTRIES")) + 1
-        rows = np.array([[float(v) for v in l.split()] for l in lines[start:]]).reshape(-1, 16)
+        local = read_local_dump(path)
+        rows = np.column_stack([local[f"c_contacts[{k}]"] for k in range(1, 17)])
         plate = (rows[:, 0] == 4) & (rows[:, 1] == -2)
         pushed = -rows[plate, 12].sum()
         print(f"step {steps[k]}: {int(plate.sum())} plate rows, their force {pushed:.6g}, "

@@ -162,19 +162,25 @@ def contact_overlap_warning(style, step, which, overlap, r_w, remedy):
             f"the soft contact assumes small overlaps); use a smaller timestep or {remedy}")
 
 
-def read_dump(path, columns=None):
-    """Last snapshot of a LAMMPS 'dump custom' text file as {column: array}, sorted by id."""
+def last_snapshot(path, item):
+    """The last snapshot of a LAMMPS dump text file: its column names (from the line
+    'ITEM: <item> ...') and its rows as an array (empty when it has none)."""
     with open(path) as f:
         lines = f.read().splitlines()
     starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
     if not starts:
         raise AssertionError(f"{path}: no snapshot")
     block = lines[starts[-1]:]
-    natoms = int(block[3])
-    k = next(k for k, line in enumerate(block) if line.startswith("ITEM: ATOMS"))
+    count = int(block[3])
+    k = next(k for k, line in enumerate(block) if line.startswith("ITEM: " + item))
     names = block[k].split()[2:]
-    data = np.array([[float(w) for w in line.split()] for line in block[k + 1:k + 1 + natoms]])
-    data = data.reshape(natoms, len(names))
+    data = np.array([[float(w) for w in line.split()] for line in block[k + 1:k + 1 + count]])
+    return names, data.reshape(count, len(names))
+
+
+def read_dump(path, columns=None):
+    """Last snapshot of a LAMMPS 'dump custom' text file as {column: array}, sorted by id."""
+    names, data = last_snapshot(path, "ATOMS")
     if "id" in names:
         data = data[np.argsort(data[:, names.index("id")])]
     return {name: data[:, j] for j, name in enumerate(names)}
@@ -183,16 +189,7 @@ def read_dump(path, columns=None):
 def read_local_dump(path):
     """Last snapshot of a LAMMPS 'dump local' text file as {column: array} (rows in the
     file's order; empty arrays when the snapshot has no entries)."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
-    if not starts:
-        raise AssertionError(f"{path}: no snapshot")
-    block = lines[starts[-1]:]
-    count = int(block[3])
-    k = next(k for k, line in enumerate(block) if line.startswith("ITEM: ") and k > 4 and "BOX" not in line)
-    names = block[k].split()[2:]
-    data = np.array([[float(w) for w in line.split()] for line in block[k + 1:k + 1 + count]]).reshape(count, len(names))
+    names, data = last_snapshot(path, "ENTRIES")
     return {name: data[:, j] for j, name in enumerate(names)}
 
 
