@@ -66,7 +66,19 @@ void restrict_point_rolling(std::vector<GrainContactPoint>& points, size_t begin
 void set_step_contacts(GrainStepProblem& problem) {
   problem.step.contacts.clear();
   problem.step.contacts.reserve(problem.points.size());
-  for (const GrainContactPoint& c : problem.points) problem.step.contacts.push_back(c.constraint);
+  for (const GrainContactPoint& c : problem.points) {
+    problem.step.contacts.push_back(c.constraint);
+    const int wall = c.pair.first < 0 ? static_cast<int>(-c.pair.first - 1) : -1;
+    if (wall < 0 || problem.wall_body.empty() || problem.wall_body[wall] < 0) continue;
+    // a plate's point (PlaneWall): the plate is body a, moving along its normal n only,
+    // H_a = −frameᵀ n nᵀ; its velocity is the body's, not an offset
+    NscdContact& row = problem.step.contacts.back();
+    const Eigen::Vector3d& n = problem.walls[wall].normal;
+    row.body_a = problem.wall_body[wall];
+    row.jacobian_a.setZero();
+    row.jacobian_a.leftCols<3>() = -(c.frame.transpose() * n) * n.transpose();
+    row.velocity_offset.setZero();
+  }
 }
 
 void sort_top_down(GrainStepProblem& problem) {
@@ -113,6 +125,17 @@ void check_inputs(const std::vector<GrainState>& grains, const ShapeLibrary& lib
     if (!(w.point.allFinite() && w.velocity.allFinite()) || !(std::fabs(w.normal.norm() - 1.0) <= 1e-9) ||
         !(w.friction >= 0.0))
       throw InvalidArgument("walls", "grain step: a wall needs a finite point and velocity, a unit normal and friction >= 0");
+  for (std::size_t w = 0; w < walls.size(); w++) {
+    const PlaneWall& wall = walls[w];
+    if (!(wall.mass >= 0.0) || !std::isfinite(wall.mass) || !wall.force.allFinite())
+      throw InvalidArgument("walls", "grain step: wall " + std::to_string(w + 1) +
+                                         ": the mass must be >= 0 and finite and the force finite");
+    // a plate moves along its normal only (a tangential part beyond round-off is an error)
+    if (wall.plate() && !((wall.velocity - wall.normal.dot(wall.velocity) * wall.normal).norm() <=
+                          1e-12 * wall.velocity.norm()))
+      throw InvalidArgument("walls", "grain step: wall " + std::to_string(w + 1) +
+                                         " is a plate (mass > 0): its velocity must be along its normal");
+  }
   for (std::size_t w = 0; w < walls.size(); w++)
     for (int d = 0; d < 3; d++)
       if (box.periodic[d] && walls[w].normal[d] != 0.0)
@@ -153,6 +176,22 @@ BodyExtent add_free_bodies(GrainStepProblem& problem, const std::vector<GrainSta
     extent.fastest = std::max(extent.fastest, b.velocity_free.norm() + b.angular_velocity_free.norm() * radius);
   }
   return extent;
+}
+
+// Step 1 for the plates (PlaneWall::mass > 0): a body each, after the grains, of inverse
+// mass 1/m_p and no rotation, at its free velocity (grain_step.h, PlaneWall).
+void add_plate_bodies(GrainStepProblem& problem, const std::vector<PlaneWall>& walls) {
+  const double h = problem.step.time_step;
+  problem.wall_body.assign(walls.size(), -1);
+  for (std::size_t w = 0; w < walls.size(); w++) {
+    if (!walls[w].plate()) continue;
+    NscdBody b;
+    b.inverse_mass = 1.0 / walls[w].mass;
+    b.velocity_begin = walls[w].velocity;
+    b.velocity_free = walls[w].free_velocity(h);
+    problem.wall_body[w] = static_cast<int>(problem.step.bodies.size());
+    problem.step.bodies.push_back(b);
+  }
 }
 
 // Step 3: the points made in top-down order (descending z, ties in detection order: the
@@ -229,6 +268,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   const int n = static_cast<int>(grains.size());
   GrainStepProblem problem;
   problem.wall_count = static_cast<int>(walls.size());
+  problem.walls = walls;
   problem.step.time_step = h;
   problem.step.law = options.law;
   problem.box = options.box;
@@ -242,9 +282,12 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   if (sleep) begin_sleeping_step(problem, grains, library, walls, options);
   // 1. bodies
   const BodyExtent extent = add_free_bodies(problem, grains, library, options.damping);
+  add_plate_bodies(problem, walls);
   // 2. contact points of every pair whose gap may close within the step (grain_detection.h)
   double wall_speed = 0.0;
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
+  for (const PlaneWall& w : walls)  // a plate: its start or free speed (contacts only slow its approach)
+    if (w.plate()) wall_speed = std::max(wall_speed, w.free_velocity(h).norm());
   const double activation = options.margin + 2.0 * h * (2.0 * extent.fastest + wall_speed) + 1e-12;
   if (options.box.any()) check_periodic_reach(options.box, 2.0 * extent.largest_radius + activation + (pairs ? pairs->skin() : 0.0));
   const DetectedContacts contacts = detect_contacts(grains, library, walls, options, problem.asleep, activation,

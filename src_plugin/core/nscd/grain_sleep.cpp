@@ -206,8 +206,10 @@ void begin_sleeping_step(GrainStepProblem& problem, const std::vector<GrainState
     problem.bounding_radius[k] = radius;
     bool asleep = g.asleep && g.velocity.isZero(0.0) && g.angular_velocity.isZero(0.0);
     for (const PlaneWall& w : walls) {
-      if (!asleep || w.velocity.isZero(0.0)) continue;
-      const double reach = options.margin + 4.0 * h * w.velocity.norm() + 1e-12;
+      // a plate wakes the grains within its reach at rest too (grain_step.h, PlaneWall)
+      if (!asleep || (w.velocity.isZero(0.0) && !w.plate())) continue;
+      const double speed = w.plate() ? std::max(w.velocity.norm(), w.free_velocity(h).norm()) : w.velocity.norm();
+      const double reach = options.margin + 4.0 * h * speed + 1e-12;
       if (w.normal.dot(g.position - w.point) > radius + reach) continue;  // beyond its bounding sphere
       const PosedShape shape(library[g.shape].shape, g.position, g.orientation);
       const Eigen::Vector3d& lowest = shape.vertices()[shape.support_vertex(-w.normal)];

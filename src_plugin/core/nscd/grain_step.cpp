@@ -173,8 +173,13 @@ GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<Gr
   const double h = problem.step.time_step;
   const int n = static_cast<int>(grains.size());
   GrainStepResult result;
-  result.velocities = solved.velocities;
-  result.angular_velocities = solved.angular_velocities;
+  result.velocities.assign(solved.velocities.begin(), solved.velocities.begin() + n);  // the plates after them
+  result.angular_velocities.assign(solved.angular_velocities.begin(), solved.angular_velocities.begin() + n);
+  result.wall_velocities.resize(problem.wall_count);
+  for (int w = 0; w < problem.wall_count; w++) {
+    const int body = problem.wall_body.empty() ? -1 : problem.wall_body[w];
+    result.wall_velocities[w] = body >= 0 ? solved.velocities[body] : problem.walls[w].velocity;
+  }
   result.contact_forces.resize(n);
   result.contact_torques.resize(n);
   for (int k = 0; k < n; k++) {
@@ -198,6 +203,11 @@ GrainStepResult grain_step(const std::vector<GrainState>& grains, const ShapeLib
                            std::uint64_t step_number, GrainImpulseMemory& memory) {
   GrainStepProblem problem = assemble_grain_step(grains, library, walls, time_step, options, memory);
   return solve_grain_step(problem, grains, options, step_number, memory);
+}
+
+Eigen::Vector3d wall_step_displacement(const PlaneWall& wall, const Eigen::Vector3d& velocity_end, double h,
+                                       double theta) {
+  return wall.plate() ? theta_method_displacement(wall.velocity, velocity_end, h, theta) : h * wall.velocity;
 }
 
 GrainPose advance_grain_pose(const GrainPose& pose, const Eigen::Vector3d& inertia,

@@ -92,14 +92,47 @@ struct GrainState {
   Eigen::Vector3d load = Eigen::Vector3d::Zero(), load_moment = Eigen::Vector3d::Zero();
 };
 
-// A plane of infinite mass through `point`, unit `normal` into the grains, moving at
-// `velocity` (the caller moves `point`).
+// A plane through `point`, unit `normal` into the grains, moving at `velocity` (the
+// caller moves `point`).
+//
+// mass = 0 (the default): a wall of infinite mass, its motion prescribed.
+// mass m_p > 0: a plate, a body of the step that translates along its normal only (one
+// degree of freedom, no rotation). `velocity` is then its velocity v_k at the step start,
+// along the normal, and `force` the external force on it over the step (an applied load,
+// its weight, a spring; only the normal component acts). In the Moreau–Jean step it is
+// an unknown like the grains' velocities:
+//     v_free = v_k + h (n·F) n / m_p,    v_{k+1} = v_free + M_p⁻¹ Σ_c H_cᵀ r_c,
+// with the inverse mass matrix M_p⁻¹ = n nᵀ / m_p: the plate is an NscdBody of inverse
+// mass 1/m_p and zero inverse inertia, appended after the grains, and each of its
+// contact rows has body_a = the plate and the Jacobian block H_a = −frameᵀ n nᵀ (linear
+// part; angular part 0), so that H_a M⁻¹ H_aᵀ = frameᵀ n nᵀ frame / m_p and every
+// impulse moves it along n only. GrainStepResult::wall_velocities gives v_{k+1}; the
+// caller moves `point` by the θ-method displacement h ((1 − θ) v_k + θ v_{k+1}) (as
+// the grains: wall_step_displacement). It is not damped (GrainStepOptions::damping is
+// the grains'). The grains' contact points with it are wall points (pair key
+// −(w + 1), grain_wall records, its force in GrainStepResult::wall_forces); the overlap
+// projection (core/nscd/overlap_projection.h) moves it by its θ-method displacement and
+// treats it as immovable when it pushes a grain out of it. Sleeping: at each step
+// start a plate wakes every sleeping grain within its reach, margin + 4 h max(|v_k|,
+// |v_free|), at rest too (a sleeping grain's frozen point would not push the plate back).
 struct PlaneWall {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   double friction = 0.5;
+  double mass = 0.0;                                 // m_p ≥ 0; 0: infinite (prescribed motion)
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // on a plate, over the step
+  bool plate() const { return mass > 0.0; }
+  // a plate's free velocity v_k + h (n·F) n / m_p
+  Eigen::Vector3d free_velocity(double h) const {
+    return (normal.dot(velocity) + h * normal.dot(force) / mass) * normal;
+  }
 };
+
+// A wall's displacement over a step: h ((1 − θ) v_k + θ v_{k+1}) for a plate
+// (v_{k+1} = velocity_end, its solved velocity), h v for a wall of infinite mass.
+Eigen::Vector3d wall_step_displacement(const PlaneWall& wall, const Eigen::Vector3d& velocity_end, double h,
+                                       double theta);
 
 // fix nscd/polyhedra's defaults (docs/commands/fix_nscd_polyhedra.md), which differ from
 // the core's (SolverSettings(), MoreauJeanLaw()): the solver sweeps in the forward order
@@ -184,7 +217,12 @@ struct GrainStepProblem {
   int woken = 0;                                    // at the start of the step
   std::vector<std::pair<GrainImpulseMemory::PairKey, GrainImpulseMemory::Impulse>> frozen;
   std::vector<std::pair<int, int>> frozen_bodies;   // (body a or −1 for a wall, body b) of each
-  std::vector<PlaneWall> walls;                     // sleeping on: for frozen wall points that wake
+  std::vector<PlaneWall> walls;                     // the walls of the step (as given)
+  // per wall: the index of its body in step.bodies when it is a plate (PlaneWall::mass > 0:
+  // after the grains), else −1. The points (`points`) keep a plate's points as wall
+  // points (body_a −1, the plate's start velocity as offset); their solver rows
+  // (step.contacts) have the plate as body a (set_step_contacts).
+  std::vector<int> wall_body;
   // rolling resistance on (μ_r = rolling_friction > 0): per grain, its sweep radius (a
   // point's rolling radius R is the sum of its two grains'; a wall's is 0); else empty
   double rolling_friction = 0.0;
@@ -211,6 +249,8 @@ struct GrainStepResult {
   std::vector<Eigen::Vector3d> velocities, angular_velocities;   // v_{k+1}, ω_{k+1} per grain
   std::vector<Eigen::Vector3d> contact_forces, contact_torques;  // Hᵀ r / h per grain
   std::vector<Eigen::Vector3d> wall_forces;                      // of the grains on each wall
+  // per wall: a plate's end-of-step velocity v_{k+1}; a wall of infinite mass its own
+  std::vector<Eigen::Vector3d> wall_velocities;
   // per grain after the step; empty when sleeping is off
   std::vector<char> asleep;
   std::vector<double> quiet_time;
@@ -221,7 +261,8 @@ struct GrainStepResult {
 
 // InvalidArgument("time_step" | "grains" | "walls" | "box" | options keywords, ...) on bad
 // input (shape index out of range, mass or inertia ≤ 0, non-finite or non-unit data, a
-// wall not parallel to a periodic dimension, a periodic length below twice the reach).
+// wall not parallel to a periodic dimension, a periodic length below twice the reach, a
+// wall's mass < 0, a plate's velocity not along its normal).
 // With `share` (several workers holding the same grains: fix nscd/polyhedra's MPI ranks)
 // the narrow phase is shared out (core/common/work_share.h): the candidate pairs (grain
 // pairs in their fixed order, then the wall pairs) in one block per worker, the contact

@@ -77,6 +77,10 @@ class ProjectedGrains {
                   const GrainStepResult& result, double theta)
       : grains_(grains), library_(library), walls_(walls), problem_(problem), h_(problem.step.time_step) {
     const int n = static_cast<int>(grains.size());
+    // each wall's plane at the end of the step: moved by h v, a plate by its θ-method step
+    for (std::size_t w = 0; w < walls.size(); w++)
+      wall_shift_.push_back(walls[w].plate() ? wall_step_displacement(walls[w], result.wall_velocities[w], h_, theta)
+                                             : Eigen::Vector3d(h_ * walls[w].velocity));
     corrections_.assign(n, Eigen::Vector3d::Zero());
     poses_.resize(n);
     posed_.resize(n);
@@ -95,7 +99,7 @@ class ProjectedGrains {
     const PosedShape& b = posed_grain(pair.b);
     if (pair.a < 0) {  // a wall: its plane at the end of the step
       const PlaneWall& w = walls_[pair.wall];
-      const Eigen::Vector3d point = w.point + h_ * w.velocity;
+      const Eigen::Vector3d point = w.point + wall_shift_[pair.wall];
       const Eigen::Vector3d& v = b.vertices()[b.support_vertex(-w.normal)];
       out.near = true;
       out.gap = w.normal.dot(v - point) - b.sweep_radius();
@@ -124,7 +128,7 @@ class ProjectedGrains {
     const ConvexShape& b = library_[grains_[pair.b].shape].shape;
     if (pair.a < 0) {
       const PlaneWall& w = walls_[pair.wall];
-      return lowest_along(pair.b, w.normal) - w.normal.dot(w.point + h_ * w.velocity) - b.sweep_radius();
+      return lowest_along(pair.b, w.normal) - w.normal.dot(w.point + wall_shift_[pair.wall]) - b.sweep_radius();
     }
     if (!(pair.deepest < std::numeric_limits<double>::infinity())) return -std::numeric_limits<double>::infinity();
     const ConvexShape& a = library_[grains_[pair.a].shape].shape;
@@ -168,6 +172,7 @@ class ProjectedGrains {
   const std::vector<PlaneWall>& walls_;
   const GrainStepProblem& problem_;
   const double h_;
+  std::vector<Eigen::Vector3d> wall_shift_;  // per wall, its displacement over the step
   std::vector<GrainPose> poses_;
   std::vector<std::optional<PosedShape>> posed_;
   std::vector<Eigen::Vector3d> corrections_;
