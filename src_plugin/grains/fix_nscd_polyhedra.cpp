@@ -28,6 +28,7 @@
 #include "core/nscd/overlap_projection.h"
 #include "core/nscd/reduced_problem_io.h"
 #include "atom_kinds.h"
+#include "nscd_plate.h"
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
@@ -84,6 +85,7 @@ struct FixNSCDPolyhedra::CoreState {
   double pair_skin = kDefaultPairSkin;               // keyword skin
   std::unique_ptr<wiregrain::GrainPairCache> pairs;  // skin > 0
   wiregrain::ContactList published;
+  wiregrain_lmp::NscdPlates plates;  // keyword plate (nscd_plate.h)
 };
 
 const wiregrain::ContactList &FixNSCDPolyhedra::published_contacts() const { return core_->published; }
@@ -250,6 +252,10 @@ const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> FixNSCDPolyhedra::keywords_ 
                    wall_fix + " velocity ...)");
        for (int d = 0; d < 3; d++) fix.core_->walls.back().velocity[d] = args.value_double(key);
      }},
+    {"plate", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       require_wall(args, fix.core_->walls, fix.wall_fix_ids_, key);
+       fix.core_->plates.parse(args, fix.core_->walls.size() - 1, fix.wall_fix_ids_.back());
+     }},
     {"write_problems", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        fix.problem_every_ = (int)args.value_int_in_range(key, 1, INT_MAX, "'write_problems' (every N steps)");
        fix.problem_file_ = args.value_word(key);
@@ -286,7 +292,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 18;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size();
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -400,6 +406,7 @@ void FixNSCDPolyhedra::init() {
                                  "wall_fix " + wall_fix_ids_[w] + ": fix style is " + modify->fix[ifix]->style +
                                      ", not wire/wall");
   }
+  core_->plates.init(lmp, id, wall_fix_ids_);
   if (nscd_timestep_ > 0.0) {
     const double ratio = nscd_timestep_ / update->dt;
     if (std::round(ratio) < 1.0 || std::abs(ratio - std::round(ratio)) > 1e-9 * ratio)
@@ -567,6 +574,7 @@ void FixNSCDPolyhedra::final_integrate() {
     }
   }
   summed_steps_++;
+  core_->plates.sum_wire_forces();
   if (solves_at_end_of_step(update->ntimestep)) solve_step();
 }
 
@@ -577,6 +585,7 @@ void FixNSCDPolyhedra::solve_step() {
   solved_once_ = true;
   sync_wall_fixes();
   const double h = (summed_steps_ > 0 ? summed_steps_ : solve_interval()) * update->dt;
+  core_->plates.prepare(lmp, core_->walls, h);
   core_->options.box = periodic_box();
   const double start = MPI_Wtime();
   const std::vector<wiregrain::GrainState> grains = gather_grains();
@@ -610,6 +619,7 @@ void FixNSCDPolyhedra::solve_step() {
   record_stats(result);
   check_overlap(grains, result.stats.max_overlap, h);
   publish_contacts(result);
+  core_->plates.advance(core_->walls, result, h, core_->options.law.theta);
   // the wall positions for the next detection (wall_fix walls: taken from their fix)
   for (wiregrain::PlaneWall &w : core_->walls) w.point += w.velocity * h;
   sync_wall_fixes();
@@ -923,6 +933,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   // pairs skipped as still apart
   if (k == 22 + (int)wall_forces_.size()) return stick_solves_[2];
   if (k == 23 + (int)wall_forces_.size()) return core_->pairs ? double(core_->pairs->skipped()) : 0.0;
+  if (k >= 24 + (int)wall_forces_.size()) return core_->plates.output(k - 24 - (int)wall_forces_.size());
   if (k >= 19 + (int)wall_forces_.size()) return clocks_[k - 19 - (int)wall_forces_.size()];
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];
   // the pair cache: detections that searched (builds) and that reused the pairs

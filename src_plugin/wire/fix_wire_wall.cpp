@@ -251,6 +251,19 @@ double FixWireWall::compute_vector(int k) {
   return global_stats_[k];
 }
 
+void FixWireWall::force_on_plane(double f[3]) {
+  for (int d = 0; d < 3; d++) f[d] = compute_vector(2 + d);
+}
+
+void FixWireWall::move_plane(const double point[3], const double velocity[3]) {
+  for (int d = 0; d < 3; d++) {
+    point_[d] = point[d];
+    velocity_[d] = velocity[d];
+  }
+  reference_step_ = update->ntimestep;
+  reference_dt_ = update->dt;
+}
+
 // The wall's current position, so a restarted run continues from it.
 void FixWireWall::write_restart(FILE *fp) {
   double p[3];

@@ -16,7 +16,10 @@
    (e.g. the column's side walls taken away).
 
    fix nscd/polyhedra ... wall_fix ID makes the same plane a wall of the grains: one
-   definition per container wall (read through common/moving_plane_wall.h).
+   definition per container wall (read through common/moving_plane_wall.h). With its
+   `plate` keyword the plane is a body of the grains' contact problem: fix nscd/polyhedra
+   moves it (position and velocity) at every solve, and the beads' force on it is part of
+   the plate's load.
 
    Checks (common/contact_checks.h): at each run start the timestep against the stability
    limit of the stiffest bead of the group (longest segment, thickest bead, stiffest
@@ -68,6 +71,8 @@ class FixWireWall : public Fix, public wiregrain_lmp::ContactPublisher, public w
   void current_point(double p[3]) const;
   const double *normal() const { return normal_; }
   const double *velocity() const { return velocity_; }
+  void force_on_plane(double f[3]);
+  void move_plane(const double point[3], const double velocity[3]);
 
  private:
   double point_[3], normal_[3], velocity_[3];

@@ -14,7 +14,7 @@ NSCD_KEYWORDS = ", ".join([
     "max_iterations", "convergence", "method", "order", "seed", "freeze", "subspace_regularization",
     "subspace_closing", "warm_start", "warm_geometry", "overlap_recovery", "overlap_speed", "project",
     "project_passes", "margin", "skin", "detection", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
-    "wall_velocity", "write_problems"])
+    "wall_velocity", "plate", "write_problems"])
 
 
 WIRE = deck_box("wire", 2, (-2, 2), 2)
