@@ -20,7 +20,9 @@
 
    wall_fix ID: the plane of fix ID (style wire/wall, which the wire beads feel) is also a
    wall of the grains, at the fix's current position and velocity at every solve: a
-   container wall defined once for grains and wire.
+   container wall defined once for grains and wire. `plate m_p load F | spring k v_drive`
+   after it makes that plane a plate, a body of mass m_p in the contact problem that the
+   fix moves (grains/nscd_plate.h).
 
    every N (or timestep h = N dt, an integer multiple of the LIGGGHTS timestep): the solve
    runs with h = N dt at the end of the steps whose number is a multiple of N, with the
