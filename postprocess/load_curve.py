@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The load test's observables and its force–strain curves, from the time series
 post/load.txt that input_scripts/in.column_load writes (LIGGGHTS' fix ave/time format:
-t d strain F_grains F_wire F F/W F_floor/W H U_s lost v_cm).
+t d strain F_grains F_wire F F/W F_floor/W H U_s lost v_cm v_p F_drive/W; a series of an
+older build without the last two is read too).
 
     postprocess/load_curve.py RUN [RUN ...] [--plot FILE.png] [--fit-to 0.5] [--onset 0.01]
                               [--json]
@@ -27,7 +28,10 @@ import sys
 
 import numpy as np
 
-COLUMNS = ["t", "d", "strain", "F_grains", "F_wire", "F", "F_W", "floor_W", "H", "U_s", "lost", "v_cm"]
+COLUMNS = ["t", "d", "strain", "F_grains", "F_wire", "F", "F_W", "floor_W", "H", "U_s", "lost", "v_cm", "v_p",
+           "F_drive_W"]
+# the columns of a series written before the plate's mode (in.column_load's `plate`)
+FIRST_COLUMNS = COLUMNS[:12]
 
 
 def read_series(path):
@@ -45,9 +49,10 @@ def read_series(path):
     if not rows:
         raise ValueError(f"{path}: no data lines")
     data = np.array(rows)
-    if data.shape[1] != len(COLUMNS):
-        raise ValueError(f"{path}: {data.shape[1]} values per line, expected {len(COLUMNS)} ({' '.join(COLUMNS)})")
-    return {name: data[:, k] for k, name in enumerate(COLUMNS)}
+    if data.shape[1] not in (len(COLUMNS), len(FIRST_COLUMNS)):
+        raise ValueError(f"{path}: {data.shape[1]} values per line, expected {len(COLUMNS)} ({' '.join(COLUMNS)}) "
+                         f"or the first {len(FIRST_COLUMNS)}")
+    return {name: data[:, k] for k, name in enumerate(COLUMNS[:data.shape[1]])}
 
 
 def observables(series, onset=0.01, fit_to=0.5):

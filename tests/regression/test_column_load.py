@@ -147,6 +147,34 @@ class Load(DeckTestCase):
         self.assertLess(abs(s["v_cm"][0]), 1e-3)  # at rest when the plate starts
         self.assertEqual(final_line(r).group(6), placed.group(2))  # the strain counts from the settled top
 
+    # The plate as a body (plate load, plate spring) on the column with wire, every step in
+    # the series. load (gap 0: the plate starts on the column's highest point): the drive column is F/W = load_rate t at the NSCD steps (even steps;
+    # the odd ones repeat the last solve's), to the series' 6 digits. spring: the spring's
+    # force k_plate (drive travel − plate travel) W stays below k_plate × the drive's travel
+    # v_plate (t + dt_NSCD) (the setup solve moved the drive one NSCD step ahead).
+    def test_plate_modes(self):
+        for plate, extra in (("load", {"load_rate": 20, "load_min": 0.1, "load_max": 3, "drop": 0.99, "strain_max": 0.5,
+                                       "gap": 0}),
+                             ("spring", {"strain_max": 0.03})):
+            folder = tempfile.mkdtemp(prefix="wiregrain-")
+            shutil.copy(self.columns[1].path("column.restart"), folder)
+            variables = dict(EVERY_STEP, root=SOURCE, plate=plate, t_net=0, **extra)
+            r = run(LOAD, variables=variables, workdir=folder)
+            self.assertRanCleanly(r)
+            s = series(r)
+            data = np.loadtxt(r.path("post/load.txt"), comments="#", ndmin=2)
+            v_p, drive = data[:, 13], data[:, 14]
+            even = s["step"].astype(int) % 2 == 0
+            stopped = final_line(r).group(1)
+            print(f"plate {plate}: stopped by {stopped} at t = {s['t'][-1]:.3f}, d = {s['d'][-1]:.4f}, "
+                  f"F/W up to {s['F_W'].max():.3f}, drive up to {drive.max():.3f} W, plate speed {v_p[-1]:.4f}")
+            if plate == "load":
+                np.testing.assert_allclose(drive[even], 20 * s["t"][even], rtol=1e-5, atol=1e-9)
+                self.assertEqual(stopped, "load_max")
+            else:
+                self.assertTrue(np.all(drive <= 100 * EVERY_STEP["v_plate"] * (s["t"] + DT_NSCD) * (1 + 1e-5)))
+                self.assertEqual(stopped, "strain_max")
+
     def test_bad_variables_stop_with_a_message(self):
         workdir = self.columns[1].workdir
         z_top0 = final_line(self.loaded[1]).group(6)
@@ -161,6 +189,10 @@ class Load(DeckTestCase):
                  "in.column_load: with ke_settle, t_check must be > 0 and t_check <= t_quiet <= t_settle, "
                  "got 0.5, 0.1 and 50"),
                 ({"v_approach": 0}, "in.column_load: v_approach must be > 0, got 0"),
+                ({"plate": "push"}, "in.column_load: plate must be prescribed, load or spring, got push"),
+                ({"m_plate": 0}, "in.column_load: m_plate must be > 0, got 0"),
+                ({"load_rate": -1}, "in.column_load: load_rate must be > 0, got -1"),
+                ({"k_plate": 0}, "in.column_load: k_plate must be > 0, got 0"),
                 ({"z_plate": 1}, f"in.column_load: z_plate (1) is below the top of the column ({z_top0}): "
                                  "the plate must start above it")):
             self.assertStopsWith(run(LOAD, variables=dict(R=2, **variables), workdir=workdir), message)
