@@ -16,6 +16,7 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   step.law.validate();
   require_positive("time_step", step.time_step);
   set_bodies(step);
+  set_copies(step);
   const int n = static_cast<int>(step.contacts.size());
   links_.resize(n);
   start_normal_velocity_.resize(n);
@@ -28,6 +29,45 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   }
   norm_q_ = std::sqrt(norm_q_squared);
   set_rolling_blocks(step);
+}
+
+// Mass splitting (core/nscd/nscd_step.h): a body touched on k > 1 workers is swept with
+// k times its inverse mass and inertia (the Delassus blocks of its contacts with them).
+void BodyContactOperator::set_copies(const NscdStep& step) {
+  if (step.touching_copies.empty()) return;
+  const int body_count = static_cast<int>(bodies_.size());
+  if (static_cast<int>(step.touching_copies.size()) != body_count)
+    throw InvalidArgument("bodies", "touching_copies has " + std::to_string(step.touching_copies.size()) +
+                                        " entries for " + std::to_string(body_count) + " bodies");
+  copies_ = step.touching_copies;
+  touched_here_.assign(body_count, 0);
+  for (const NscdContact& contact : step.contacts)  // (indices out of range: check_contact's error)
+    for (int body : {contact.body_a, contact.body_b})
+      if (body >= 0 && body < body_count) touched_here_[body] = 1;
+  for (int b = 0; b < body_count; ++b) {
+    if (!(copies_[b] >= (touched_here_[b] ? 1.0 : 0.0)) || !std::isfinite(copies_[b]))
+      throw InvalidArgument("bodies", "body " + std::to_string(b) + ": touching_copies " +
+                                          std::to_string(copies_[b]) + " below the copies touched here");
+    if (copies_[b] > 1.0) {
+      bodies_[b].inverse_mass *= copies_[b];
+      bodies_[b].inverse_inertia *= copies_[b];
+    }
+  }
+  synchronized_.resize(body_count);
+  for (int b = 0; b < body_count; ++b) synchronized_[b] = bodies_[b].velocity;
+}
+
+void BodyContactOperator::synchronize(WorkerExchange& exchange) {
+  const int body_count = static_cast<int>(bodies_.size());
+  std::vector<double> change(6 * static_cast<std::size_t>(body_count));
+  for (int b = 0; b < body_count; ++b)
+    for (int j = 0; j < 6; ++j) change[6 * b + j] = bodies_[b].velocity[j] - synchronized_[b][j];
+  exchange.sum_over_copies(change, 6);
+  for (int b = 0; b < body_count; ++b) {
+    if (!(copies_[b] == 1.0 && touched_here_[b]))
+      for (int j = 0; j < 6; ++j) bodies_[b].velocity[j] = synchronized_[b][j] + change[6 * b + j] / std::max(copies_[b], 1.0);
+    synchronized_[b] = bodies_[b].velocity;
+  }
 }
 
 void BodyContactOperator::set_bodies(const NscdStep& step) {
