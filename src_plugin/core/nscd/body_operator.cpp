@@ -57,6 +57,49 @@ void BodyContactOperator::set_copies(const NscdStep& step) {
   for (int b = 0; b < body_count; ++b) synchronized_[b] = bodies_[b].velocity;
 }
 
+Eigen::Matrix3d BodyContactOperator::true_delassus_block(int c) const {
+  const Link& link = links_[c];
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
+  for (const auto& [body, H] : {std::pair<int, const RowJacobian*>{link.body_a, &link.jacobian_a},
+                                std::pair<int, const RowJacobian*>{link.body_b, &link.jacobian_b}}) {
+    if (body < 0) continue;
+    const double split = copies_.empty() ? 1.0 : std::max(copies_[body], 1.0);
+    const Body& b = bodies_[body];
+    W += (b.inverse_mass / split) * H->leftCols<3>() * H->leftCols<3>().transpose() +
+         H->rightCols<3>() * (b.inverse_inertia / split) * H->rightCols<3>().transpose();
+  }
+  return W;
+}
+
+std::vector<Eigen::Vector3d> BodyContactOperator::delassus_product(const std::vector<Eigen::Vector3d>& x,
+                                                                   WorkerExchange& exchange) const {
+  const int body_count = static_cast<int>(bodies_.size());
+  std::vector<double> change(6 * static_cast<std::size_t>(body_count), 0.0);
+  for (int c = 0; c < static_cast<int>(links_.size()); ++c) {
+    if (x[c].isZero(0.0)) continue;
+    const Link& link = links_[c];
+    for (const auto& [body, H] : {std::pair<int, const RowJacobian*>{link.body_a, &link.jacobian_a},
+                                  std::pair<int, const RowJacobian*>{link.body_b, &link.jacobian_b}}) {
+      if (body < 0) continue;
+      const double split = copies_.empty() ? 1.0 : std::max(copies_[body], 1.0);
+      const Eigen::Vector3d linear = H->leftCols<3>().transpose() * x[c];
+      const Eigen::Vector3d angular = (bodies_[body].inverse_inertia / split) * (H->rightCols<3>().transpose() * x[c]);
+      for (int j = 0; j < 3; ++j) {
+        change[6 * body + j] += bodies_[body].inverse_mass / split * linear[j];
+        change[6 * body + 3 + j] += angular[j];
+      }
+    }
+  }
+  exchange.sum_over_copies(change, 6);
+  std::vector<Eigen::Vector3d> product(links_.size(), Eigen::Vector3d::Zero());
+  for (int c = 0; c < static_cast<int>(links_.size()); ++c) {
+    const Link& link = links_[c];
+    if (link.body_a >= 0) product[c] += side_velocity(link.jacobian_a, Eigen::Map<const Vector6d>(&change[6 * link.body_a]));
+    if (link.body_b >= 0) product[c] += side_velocity(link.jacobian_b, Eigen::Map<const Vector6d>(&change[6 * link.body_b]));
+  }
+  return product;
+}
+
 void BodyContactOperator::synchronize(WorkerExchange& exchange) {
   const int body_count = static_cast<int>(bodies_.size());
   std::vector<double> change(6 * static_cast<std::size_t>(body_count));

@@ -113,6 +113,12 @@ class BodyContactOperator final : public ContactOperator {
   // alone (k = 1) keeps its velocity as it is, to the bit. Collective.
   bool distributed() const { return !copies_.empty(); }
   void synchronize(WorkerExchange& exchange);
+  // W x over every worker's contacts with the bodies' true masses (not split): x one
+  // impulse per contact of this worker (local frames); the bodies' velocity changes
+  // M⁻¹ Hᵀ x summed over every copy, read by each contact. Collective.
+  std::vector<Eigen::Vector3d> delassus_product(const std::vector<Eigen::Vector3d>& x, WorkerExchange& exchange) const;
+  // W_cc with the true masses (the sweep's delassus_block(c) has the split ones)
+  Eigen::Matrix3d true_delassus_block(int c) const;
   // ‖q‖ over every worker's contacts (collective); free_velocity_norm() is this worker's
   double free_velocity_norm_over_workers(WorkerExchange& exchange) const {
     double squared = norm_q_ * norm_q_;

@@ -10,6 +10,7 @@
 
 #include "core/common/errors.h"
 #include "core/nscd/body_operator.h"
+#include "core/nscd/distributed_stick_solve.h"
 #include "core/nscd/input_checks.h"
 #include "core/nscd/subspace_correction.h"
 
@@ -119,6 +120,7 @@ class GaussSeidelSolve {
   double error_now();
   // one stick solve, counted in the report; returns the error before it
   double try_stick_solve(StickSolveOutcome& outcome);
+  StickSolveOutcome distributed_stick_solve_step(double error_before);
 
   ContactOperator& op_;
   const SolverSettings& settings_;
@@ -167,8 +169,7 @@ GaussSeidelSolve::GaussSeidelSolve(ContactOperator& op, const SolverSettings& se
   if (rolling_) result_.couples.assign(n_, Eigen::Vector2d::Zero());
   // (no stick solves with rolling resistance: they would leave the couples one update
   // behind, core/nscd/subspace_correction.h)
-  // (nor distributed: a stick solve is one linear solve of all the closed contacts)
-  stick_solves_ = settings.method == SolverMethod::subspace && !rolling_ && exchange_ == nullptr;
+  stick_solves_ = settings.method == SolverMethod::subspace && !rolling_;
 }
 
 void GaussSeidelSolve::apply_warm_start(const std::vector<Eigen::Vector3d>& warm_start) {
@@ -304,6 +305,12 @@ double GaussSeidelSolve::try_stick_solve(StickSolveOutcome& outcome) {
   NscdReport& report = result_.report;
   const double error_before = error_now();
   ++report.subspace_solves;
+  if (exchange_ != nullptr) {
+    outcome = distributed_stick_solve_step(error_before);
+    stick_solve_harmed_ |= outcome == StickSolveOutcome::harmful;
+    if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
+    return error_before;
+  }
   double error_after = 0.0;
   outcome = subspace_correction(op_, result_.impulses, result_.states, settings_, error_before, error_after, report);
   error_known_ = outcome == StickSolveOutcome::kept;
@@ -311,6 +318,35 @@ double GaussSeidelSolve::try_stick_solve(StickSolveOutcome& outcome) {
   stick_solve_harmed_ |= outcome == StickSolveOutcome::harmful;
   if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
   return error_before;
+}
+
+// The distributed stick solve (core/nscd/distributed_stick_solve.h): its candidate applied
+// on every worker, kept when it halves the Siconos error over all of them, else taken
+// back (as subspace_correction does on one worker).
+StickSolveOutcome GaussSeidelSolve::distributed_stick_solve_step(double error_before) {
+  const DistributedStickSolve solve =
+      distributed_stick_solve(*body_op_, result_.impulses, result_.states, settings_, free_velocity_norm_, *exchange_);
+  result_.report.subspace_factorizations += solve.iterations;  // (CG iterations stand for the factorisations)
+  if (!solve.any_closed) return StickSolveOutcome::harmless;
+  std::vector<Eigen::Vector3d> delta(n_);
+  for (int c = 0; c < n_; ++c) {
+    delta[c] = solve.candidate[c] - result_.impulses[c];
+    if (delta[c].isZero(0.0)) continue;
+    op_.add_impulse(c, delta[c]);
+    result_.impulses[c] = solve.candidate[c];
+  }
+  body_op_->synchronize(*exchange_);
+  error_known_ = false;
+  const double error_after = error_now();
+  if (error_after < 0.5 * error_before) return StickSolveOutcome::kept;
+  for (int c = 0; c < n_; ++c) {
+    if (delta[c].isZero(0.0)) continue;
+    op_.add_impulse(c, -delta[c]);
+    result_.impulses[c] -= delta[c];
+  }
+  body_op_->synchronize(*exchange_);
+  error_known_ = false;
+  return error_after > 2.0 * error_before ? StickSolveOutcome::harmful : StickSolveOutcome::harmless;
 }
 
 // converged without a kept stick solve: one more (core/nscd/subspace_correction.h), which

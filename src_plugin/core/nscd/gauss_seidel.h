@@ -49,7 +49,7 @@ struct NscdReport {
   long slide_fallbacks = 0;            // local slide solves that needed the scan
   int subspace_solves = 0;             // stick solves tried (method subspace)
   int subspace_accepted = 0;           // of which halved the Siconos error and were kept
-  int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made
+  int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made (distributed: CG iterations)
   long frozen_updates = 0;             // contact updates skipped (freeze)
 };
 

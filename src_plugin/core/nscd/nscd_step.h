@@ -136,8 +136,9 @@ struct NscdStepResult {
 // exchange: the workers' communication of a distributed step (NscdStep::touching_copies;
 // core/common/worker_exchange.h), null for a step held by one worker. Distributed, the
 // sweeps alternate with exchanges of the copies' velocities, the stopping measures are
-// summed over the workers (every worker stops after the same sweep), no stick solve is
-// made (method subspace sweeps as gauss_seidel), and rolling resistance is refused
+// summed over the workers (every worker stops after the same sweep), method subspace's
+// stick solves are solved by conjugate gradients over all workers
+// (core/nscd/distributed_stick_solve.h), and rolling resistance is refused
 // (InvalidArgument("exchange", ...)).
 NscdStepResult solve_nscd_step(const NscdStep& step, const SolverSettings& settings,
                                const std::vector<Eigen::Vector3d>& warm_start = {},
