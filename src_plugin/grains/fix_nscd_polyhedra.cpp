@@ -642,9 +642,12 @@ void FixNSCDPolyhedra::sync_wall_fixes() {
   }
 }
 
+// Replicated, every rank fails alike (error->all); distributed, a rank may fail alone and
+// stops the others (error->one: "ERROR on proc N: ...").
 void FixNSCDPolyhedra::solve_failed(const std::exception &e) {
-  wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
-                             "contact solve failed at step " + std::to_string(update->ntimestep) + ": " + e.what());
+  const std::string what = "contact solve failed at step " + std::to_string(update->ntimestep) + ": " + e.what();
+  if (distributed_) error->one(FLERR, ("fix nscd/polyhedra (id " + std::string(id) + "): " + what).c_str());
+  wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, what);
   throw;  // not reached: style_error stops the run
 }
 

@@ -77,14 +77,16 @@ void FixNSCDPolyhedra::check_ghost_cutoff(double activation) {
   const double needed = needed_ghost_cutoff(activation);
   const double held = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
   if (held >= needed) return;
+  const bool halved = domain->triclinic == 0 && atom->radius != nullptr;
+  const std::string R = wiregrain::format_number(largest_radius_), skin = wiregrain::format_number(neighbor->skin);
   wiregrain_lmp::style_error(
       error, "fix", "nscd/polyhedra", id,
       "solve distributed: step " + std::to_string(update->ntimestep) + " has an activation distance of " +
-          wiregrain::format_number(activation) + " (4 h v_max + margin), so the ghost grains must reach " +
-          wiregrain::format_number(needed) + " (2 x the largest bounding radius " +
-          wiregrain::format_number(largest_radius_) + ", the activation distance and the neighbor skin " +
-          wiregrain::format_number(neighbor->skin) + "), but LIGGGHTS holds ghosts within " +
-          wiregrain::format_number(held) + ": set 'communicate single cutoff " +
+          wiregrain::format_number(activation) + " (4 h v_max + margin), so the ghost cutoff must be " +
+          wiregrain::format_number(needed) +
+          (halved ? " (2 x (the largest bounding radius " + R + " + the activation distance) + the neighbor skin " + skin
+                  : " (2 x the largest bounding radius " + R + " + the activation distance + the neighbor skin " + skin) +
+          "), but it is " + wiregrain::format_number(held) + ": set 'communicate single cutoff " +
           wiregrain::format_number(std::ceil(1.25 * needed * 100.0) / 100.0) + "' or a smaller timestep");
 }
 

@@ -24,6 +24,14 @@ void RankGrains::collect(int groupbit) {
   owned_ = static_cast<int>(atoms_.size());
   for (int i = atom->nlocal; i < atom->nlocal + atom->nghost; i++)
     if (atom->mask[i] & groupbit) atoms_.push_back(i);
+  // the ghosts by tag, images of one grain by position: the order of the pairs does not
+  // depend on how LIGGGHTS stores its atoms (a run continued from a restart file repeats
+  // the straight run)
+  double **x = atom->x;
+  std::sort(atoms_.begin() + owned_, atoms_.end(), [atom, x](int a, int b) {
+    if (atom->tag[a] != atom->tag[b]) return atom->tag[a] < atom->tag[b];
+    return std::lexicographical_compare(x[a], x[a] + 3, x[b], x[b] + 3);
+  });
 }
 
 void RankGrains::copy_to_ghosts(std::vector<double> &per_atom, int width) {

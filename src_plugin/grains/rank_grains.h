@@ -30,7 +30,7 @@ class RankGrains : public wiregrain::WorkerExchange {
   RankGrains(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix);
 
   // This rank's grains of the group `groupbit`: the atom indices of its own (ascending
-  // tags), then of its ghosts (in LIGGGHTS' order).
+  // tags), then of its ghosts (ascending tags, the images of one grain by position).
   void collect(int groupbit);
   const std::vector<int> &atoms() const { return atoms_; }
   int owned() const { return owned_; }

@@ -34,7 +34,8 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
 // Mass splitting (core/nscd/nscd_step.h): a body touched on k > 1 workers is swept with
 // k times its inverse mass and inertia (the Delassus blocks of its contacts with them).
 void BodyContactOperator::set_copies(const NscdStep& step) {
-  if (step.touching_copies.empty()) return;
+  if (!step.distributed) return;
+  distributed_ = true;
   const int body_count = static_cast<int>(bodies_.size());
   if (static_cast<int>(step.touching_copies.size()) != body_count)
     throw InvalidArgument("bodies", "touching_copies has " + std::to_string(step.touching_copies.size()) +
@@ -107,7 +108,7 @@ void BodyContactOperator::synchronize(WorkerExchange& exchange) {
     for (int j = 0; j < 6; ++j) change[6 * b + j] = bodies_[b].velocity[j] - synchronized_[b][j];
   exchange.sum_over_copies(change, 6);
   for (int b = 0; b < body_count; ++b) {
-    if (!(copies_[b] == 1.0 && touched_here_[b]))
+    if (!(copies_[b] == 1.0 && touched_here_[b]))  // (one copy touched, here: as it is)
       for (int j = 0; j < 6; ++j) bodies_[b].velocity[j] = synchronized_[b][j] + change[6 * b + j] / std::max(copies_[b], 1.0);
     synchronized_[b] = bodies_[b].velocity;
   }

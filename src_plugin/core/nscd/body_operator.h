@@ -111,7 +111,7 @@ class BodyContactOperator final : public ContactOperator {
   // velocities after a sweep (mass splitting, core/nscd/nscd_step.h): every body takes
   // V_sync + (1/k) Σ_copies (V_copy − V_sync); a body touched by this worker's contacts
   // alone (k = 1) keeps its velocity as it is, to the bit. Collective.
-  bool distributed() const { return !copies_.empty(); }
+  bool distributed() const { return distributed_; }
   void synchronize(WorkerExchange& exchange);
   // W x over every worker's contacts with the bodies' true masses (not split): x one
   // impulse per contact of this worker (local frames); the bodies' velocity changes
@@ -219,6 +219,7 @@ class BodyContactOperator final : public ContactOperator {
   double norm_q_ = 0.0;
   // distributed: per body k (touching_copies), whether a contact here touches it, and its
   // velocity after the last exchange
+  bool distributed_ = false;
   std::vector<double> copies_;
   std::vector<char> touched_here_;
   std::vector<Vector6d> synchronized_;

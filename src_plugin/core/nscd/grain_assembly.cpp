@@ -160,6 +160,7 @@ void count_touching_copies(GrainStepProblem& problem) {
     touched[c.body_b] = 1.0;
   }
   problem.exchange->sum_over_copies(touched, 1);
+  problem.step.distributed = true;
   problem.step.touching_copies = std::move(touched);
 }
 

@@ -40,7 +40,7 @@ NscdStepResult solve_nscd_step(const NscdStep& step, const SolverSettings& setti
   settings.validate();
   BodyContactOperator op(step);
   if (exchange != nullptr && !op.distributed())
-    throw InvalidArgument("exchange", "a distributed solve needs the step's touching_copies");
+    throw InvalidArgument("exchange", "a distributed solve needs a distributed step (NscdStep::distributed)");
   NscdStepResult result;
   result.contacts = solve_frictional_contact(op, settings, warm_start, backoff, couple_warm_start, exchange);
   const int body_count = static_cast<int>(step.bodies.size());

@@ -116,7 +116,9 @@ struct NscdStep {
   // copies' impulse increments applied to the true mass. It is a Gauss–Seidel sweep
   // within a worker and a Jacobi step across workers that cannot overshoot where several
   // workers push one body (each sees it k times lighter). touching_copies: per body, k
-  // (0: no contact of any worker touches it); empty when one worker holds the problem.
+  // (0: no contact of any worker touches it). distributed: the step is one worker's part
+  // (touching_copies then has one entry per body; a worker may hold no body at all).
+  bool distributed = false;
   std::vector<double> touching_copies;
 };
 
