@@ -148,7 +148,8 @@ run             1
         for mode, ranks in (("replicated", 1), ("distributed", 1), ("distributed", 2), ("distributed", 3),
                             ("distributed", 4)):
             tag = f"{mode}{ranks}"
-            text = full_precision(HEAD.format(boundary="f f f", processors="* * *") + "read_restart pile.restart\n" +
+            # (the subdomains split x and y: the pile lies across them)
+            text = full_precision(HEAD.format(boundary="f f f", processors="* * 1") + "read_restart pile.restart\n" +
                                   step.format(mode=mode, tag=tag), "d")
             r = run(text, workdir=made.workdir, np_ranks=ranks)
             self.assertRanCleanly(r)
@@ -167,7 +168,7 @@ run             1
             self.assertEqual(rows.shape, reference_rows.shape, tag)
             np.testing.assert_array_equal(rows[:, :3], reference_rows[:, :3], err_msg=tag)
             self.assertLess(np.max(np.abs(rows[:, 3:] - reference_rows[:, 3:])), 1e-12, tag)
-            self.assertLess(velocities, 1e-7 * speed, tag)
+            self.assertLess(velocities, 5e-8 * speed, tag)
 
 
 class PeriodicRestart(DeckTestCase):
