@@ -1,4 +1,5 @@
 #include "fix_nscd_polyhedra.h"
+#include "fix_nscd_polyhedra_state.h"
 
 #include <mpi.h>
 
@@ -32,10 +33,12 @@
 #include "plugin_args.h"
 #include "plugin_vector.h"
 #include "plugin_comm.h"
+#include "rank_grains.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using wiregrain_lmp::vec3;
+using namespace fix_nscd_polyhedra_layout;
 
 namespace {
 
@@ -48,13 +51,6 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 // bounding radius: Table 1's ratio r_p / a_max.
 constexpr double kSharpReferenceOfBounding = 0.1;
 
-// per grain: its sleep state, asleep (0/1), quiet time, drift v (3), ω (3), checked load
-// impulse (3) and moment (3) (GrainState)
-constexpr int kSleepState = 14;
-// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
-constexpr int kGrainRecord = 25 + kSleepState;
-// per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
-constexpr int kAtomRecord = 12 + kSleepState;
 // the first number of the fix's global restart data (older builds wrote 0 or 1 there);
 // -2: points without rolling couples, -3: without the pair cache; both still read
 constexpr double kRestartLayout = -4.0;               // + the pair cache
@@ -62,31 +58,6 @@ constexpr double kRestartLayoutWithoutCache = -3.0;
 constexpr double kRestartLayoutWithoutCouples = -2.0;
 
 }  // namespace
-
-// keyword skin's default (measured: docs/benchmarks.md, "The column's run time")
-constexpr double kDefaultPairSkin = 0.1;
-// keyword project's defaults: the overlap (relative to the pair's smaller bounding radius)
-// beyond which the end-of-step poses are projected, and the cap on the passes
-// (core/nscd/overlap_projection.h; docs/commands/fix_nscd_polyhedra.md, "Why the defaults")
-constexpr double kDefaultProjectTolerance = 5e-5;
-constexpr int kDefaultProjectPasses = 20;
-
-struct FixNSCDPolyhedra::CoreState {
-  wiregrain::GrainStepOptions options;
-  std::vector<wiregrain::PlaneWall> walls;
-  // per wall: its own 'wall_friction' given; the others take the grains' 'friction' (at
-  // init and on fix_modify friction), whatever the keyword order
-  std::vector<bool> own_wall_friction;
-  void walls_take_grain_friction() {
-    for (size_t w = 0; w < walls.size(); w++)
-      if (!own_wall_friction[w]) walls[w].friction = options.friction;
-  }
-  wiregrain::GrainImpulseMemory impulses;
-  double pair_skin = kDefaultPairSkin;               // keyword skin
-  std::unique_ptr<wiregrain::GrainPairCache> pairs;  // skin > 0
-  wiregrain::ContactList published;
-  wiregrain_lmp::NscdPlates plates;  // keyword plate (nscd_plate.h)
-};
 
 const wiregrain::ContactList &FixNSCDPolyhedra::published_contacts() const { return core_->published; }
 
@@ -214,6 +185,9 @@ const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> FixNSCDPolyhedra::keywords_ 
     {"detection", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        fix.share_detection_ = value_choice<bool>(args, key, {{"shared", true}, {"replicated", false}});
      }},
+    {"solve", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
+       fix.distributed_ = value_choice<bool>(args, key, {{"replicated", false}, {"distributed", true}});
+     }},
     {"manifold", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        fix.core_->options.near_vertices = value_choice<bool>(args, key, {{"near_vertices", true}, {"closest", false}});
      }},
@@ -287,6 +261,11 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   if (core_->options.solver.freeze > 0 && core_->options.solver.measure == wiregrain::ConvergenceMeasure::increment)
     args.fail("'freeze' needs 'convergence natural_map' or 'convergence both' (the increment does not see frozen contacts)");
   if (core_->pair_skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(core_->pair_skin));
+  if (distributed_) {
+    check_distributed_keywords();
+    rank_grains_.reset(new wiregrain_lmp::RankGrains(lmp, this));
+    comm_forward = comm_reverse = wiregrain_lmp::RankGrains::kMaxWidth;
+  }
   wall_fix_ids_.resize(core_->walls.size());
   core_->walls_take_grain_friction();
   time_integrate = 1;
@@ -424,7 +403,9 @@ void FixNSCDPolyhedra::init() {
   if (missing)
     wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
                                std::to_string(missing) + " grains have no shape (made by create_atoms? use create_grains)");
+  largest_radius_ = largest_bounding_radius();
   check_periodic_box();
+  if (distributed_) check_distributed_keywords();  // (fix_modify may have turned sleeping on)
 }
 
 // The simulation box for the core (core/geometry/periodic_box.h): its bounds and which
@@ -435,6 +416,17 @@ wiregrain::PeriodicBox FixNSCDPolyhedra::periodic_box() const {
   box.hi = vec3(domain->boxhi);
   for (int d = 0; d < 3; d++) box.periodic[d] = domain->periodicity[d] != 0;
   return box;
+}
+
+// The largest bounding radius of the group's grains (all ranks).
+double FixNSCDPolyhedra::largest_bounding_radius() const {
+  double local = 0.0, largest = 0.0;
+  const wiregrain::ShapeLibrary &shapes = grains_->shapes();
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0 && atom->shapetype[i] < shapes.size())
+      local = std::max(local, shapes[atom->shapetype[i]].bounding_radius);
+  MPI_Allreduce(&local, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  return largest;
 }
 
 // Periodic boundaries: every grain pair is taken in its minimum image, which must be the
@@ -457,12 +449,7 @@ void FixNSCDPolyhedra::check_periodic_box() {
                                        "xyz"[d] + " (its normal has a component along " + "xyz"[d] +
                                        "): a wall must not cut a periodic dimension");
   }
-  double local = 0.0, largest = 0.0;
-  const wiregrain::ShapeLibrary &shapes = grains_->shapes();
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->shapetype[i] >= 0 && atom->shapetype[i] < shapes.size())
-      local = std::max(local, shapes[atom->shapetype[i]].bounding_radius);
-  MPI_Allreduce(&local, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double largest = largest_radius_;
   const double skin = core_->pairs ? core_->pair_skin : 0.0, margin = core_->options.margin;
   const double reach = 2.0 * largest + skin + margin;
   for (int d = 0; d < 3; d++)
@@ -578,9 +565,10 @@ void FixNSCDPolyhedra::final_integrate() {
   if (solves_at_end_of_step(update->ntimestep)) solve_step();
 }
 
-// One grain step on every rank (replicated solve), then the own grains' results written
-// back. h = (steps summed) dt; the setup solve, with no steps summed, uses the setup
-// forces and h = N dt.
+// One grain step: replicated (every rank solves the whole problem, keeps its own grains'
+// results) or distributed (each rank its own pairs, with its ghost grains; core/nscd/
+// grain_step.h, GrainPartition). h = (steps summed) dt; the setup solve, with no steps
+// summed, uses the setup forces and h = N dt.
 void FixNSCDPolyhedra::solve_step() {
   solved_once_ = true;
   sync_wall_fixes();
@@ -588,18 +576,28 @@ void FixNSCDPolyhedra::solve_step() {
   core_->plates.prepare(lmp, core_->walls, h);
   core_->options.box = periodic_box();
   const double start = MPI_Wtime();
-  const std::vector<wiregrain::GrainState> grains = gather_grains();
-  check_lost_grains((bigint)grains.size());
+  const std::vector<wiregrain::GrainState> grains = distributed_ ? rank_grains() : gather_grains();
+  const size_t own_count = distributed_ ? (size_t)rank_grains_->owned() : grains.size();
+  bigint grain_count = (bigint)own_count;
+  if (distributed_) MPI_Allreduce(MPI_IN_PLACE, &grain_count, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  check_lost_grains(grain_count);
   wiregrain::GrainStepProblem problem;
   try {
-    // detection shared: each rank computes a block of the candidate pairs, the blocks are
-    // all-gathered (the same problem on every rank, to the bit)
+    // replicated, detection shared: each rank computes a block of the candidate pairs, the
+    // blocks are all-gathered (the same problem on every rank, to the bit)
     const wiregrain::WorkShare share = rank_share();
+    wiregrain::GrainPartition partition;
+    if (distributed_) {
+      partition.owned = rank_grains_->owned();
+      partition.exchange = rank_grains_.get();
+    }
     problem = wiregrain::assemble_grain_step(grains, grains_->shapes(), core_->walls, h, core_->options, core_->impulses,
-                                             core_->pairs.get(), share_detection_ ? &share : nullptr);
-  } catch (const std::exception &e) {  // the same on every rank (replicated solve)
+                                             core_->pairs.get(), share_detection_ && !distributed_ ? &share : nullptr,
+                                             distributed_ ? &partition : nullptr);
+  } catch (const std::exception &e) {  // the same on every rank (a collective step)
     solve_failed(e);
   }
+  if (distributed_) check_ghost_cutoff(problem.activation);
   const double detected = MPI_Wtime();
   if (problem_every_ > 0 && update->ntimestep % problem_every_ == 0 && comm->me == 0) write_problem(problem.step);
   wiregrain::GrainStepResult result;
@@ -611,7 +609,7 @@ void FixNSCDPolyhedra::solve_step() {
   timings_[0] = detected - start;
   timings_[1] = MPI_Wtime() - detected;
   const double solved = MPI_Wtime();
-  scatter_results(grains, result);
+  scatter_results(grains, result, own_count);
   project_overlaps(grains, problem, result);
   clocks_[0] += timings_[0];
   clocks_[1] += timings_[1];
@@ -653,9 +651,12 @@ void FixNSCDPolyhedra::sync_wall_fixes() {
   }
 }
 
+// Replicated, every rank fails alike (error->all); distributed, a rank may fail alone and
+// stops the others (error->one: "ERROR on proc N: ...").
 void FixNSCDPolyhedra::solve_failed(const std::exception &e) {
-  wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
-                             "contact solve failed at step " + std::to_string(update->ntimestep) + ": " + e.what());
+  const std::string what = "contact solve failed at step " + std::to_string(update->ntimestep) + ": " + e.what();
+  if (distributed_) error->one(FLERR, ("fix nscd/polyhedra (id " + std::string(id) + "): " + what).c_str());
+  wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, what);
   throw;  // not reached: style_error stops the run
 }
 
@@ -775,12 +776,13 @@ void FixNSCDPolyhedra::check_overlap(const std::vector<wiregrain::GrainState> &g
   error->warning(FLERR, line, 0);
 }
 
-// The own grains: new v, ω (and L), the step-start v_n, L_n (θ-method), contact force and torque.
+// The own grains: new v, ω (and L), the step-start v_n, L_n (θ-method), contact force and
+// torque; of grains[0, grain_count) (distributed: the own grains, not the ghosts).
 void FixNSCDPolyhedra::scatter_results(const std::vector<wiregrain::GrainState> &grains,
-                                       const wiregrain::GrainStepResult &result) {
+                                       const wiregrain::GrainStepResult &result, size_t grain_count) {
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 6; k++) contact_force_[i][k] = 0.0;
-  for (size_t k = 0; k < grains.size(); k++) {
+  for (size_t k = 0; k < grain_count; k++) {
     const int i = atom->map(grains[k].tag);
     if (i < 0 || i >= atom->nlocal) continue;
     for (int d = 0; d < 3; d++) {
@@ -822,8 +824,23 @@ void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState>
   } catch (const std::exception &e) {
     solve_failed(e);
   }
+  size_t grain_count = grains.size();
+  if (distributed_) {  // each grain moved by every rank's pairs on its copies
+    std::vector<double> moved(3 * grains.size());
+    for (size_t k = 0; k < grains.size(); k++)
+      for (int d = 0; d < 3; d++) moved[3 * k + d] = corrections[k][d];
+    rank_grains_->sum_over_copies(moved, 3);
+    for (size_t k = 0; k < grains.size(); k++)
+      for (int d = 0; d < 3; d++) corrections[k][d] = moved[3 * k + d];
+    grain_count = (size_t)rank_grains_->owned();
+    double counts[2] = {double(stats.projections), stats.max_overlap_before};
+    MPI_Allreduce(MPI_IN_PLACE, &counts[0], 1, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(MPI_IN_PLACE, &counts[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    stats.projections = (int)counts[0];
+    stats.max_overlap_before = counts[1];
+  }
   double **x = atom->x;
-  for (size_t k = 0; k < grains.size(); k++) {
+  for (size_t k = 0; k < grain_count; k++) {
     if (corrections[k].isZero(0.0)) continue;
     const int i = atom->map(grains[k].tag);
     if (i < 0 || i >= atom->nlocal) continue;
@@ -867,10 +884,15 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   }
 }
 
-// The solve is replicated on every rank: each contact is published by the rank that owns grain b.
+// Replicated, each contact is published by the rank that owns grain b; distributed, each
+// rank holds its own pairs' contacts only and publishes them all.
 void FixNSCDPolyhedra::publish_contacts(const wiregrain::GrainStepResult &result) {
   core_->published.clear();
   for (const wiregrain::ContactRecord &c : result.contacts.records()) {
+    if (distributed_) {
+      core_->published.add(c);
+      continue;
+    }
     const int i = atom->map((int)c.b);
     if (i >= 0 && i < atom->nlocal) core_->published.add(c);
   }
@@ -947,12 +969,26 @@ double FixNSCDPolyhedra::compute_vector(int k) {
 // and the pair cache (its kept pairs' GJK simplices are warm starts: without them the
 // continued run would differ from the straight one in the last bits)
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
+  // distributed: each rank holds its own pairs' warm starts, rank 0 writes them all
+  const std::vector<double> all_impulses = distributed_ ? all_ranks_impulses() : std::vector<double>();
   if (comm->me != 0) return;
   std::vector<double> data = {kRestartLayout, solved_once_ ? 1.0 : 0.0, double(summed_steps_), move_pending_ ? 1.0 : 0.0, last_h_,
                               double(core_->walls.size())};
   for (const wiregrain::PlaneWall &w : core_->walls) data.insert(data.end(), w.point.data(), w.point.data() + 3);
   // per pair (ascending): its key, its point count, then each point
-  const std::vector<wiregrain::GrainImpulseMemory::Entry> &points = core_->impulses.points();
+  wiregrain::GrainImpulseMemory all_ranks;
+  for (size_t k = 0; k + kImpulseRecord <= all_impulses.size(); k += kImpulseRecord) {
+    const double *r = &all_impulses[k];
+    wiregrain::GrainImpulseMemory::Impulse point{vec3(r + 2), vec3(r + 5)};
+    point.normal = vec3(r + 8);
+    point.gap = r[11];
+    point.status = static_cast<wiregrain::ContactStatus>((int)r[12]);
+    point.couple = vec3(r + 13);
+    all_ranks.add({(long)r[0], (long)r[1]}, point);
+  }
+  all_ranks.commit();
+  const std::vector<wiregrain::GrainImpulseMemory::Entry> &points =
+      distributed_ ? all_ranks.points() : core_->impulses.points();
   const size_t pairs_at = data.size();
   data.push_back(0.0);
   size_t count_at = 0;
@@ -975,7 +1011,10 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
   }
   data.push_back(core_->impulses.backoff.skip);
   data.push_back(core_->impulses.backoff.wait);
-  const std::vector<double> cache = core_->pairs ? core_->pairs->serialize() : std::vector<double>();
+  // (distributed: each rank's cache holds its own grains; a continued run builds them anew,
+  // which finds the same pairs)
+  const std::vector<double> cache =
+      core_->pairs && !distributed_ ? core_->pairs->serialize() : std::vector<double>();
   data.push_back(double(cache.size()));  // 0: no cache
   data.insert(data.end(), cache.begin(), cache.end());
   const int size = (int)(data.size() * sizeof(double));

@@ -95,6 +95,7 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 namespace wiregrain_lmp {
 template <class Target>
 class KeywordTable;
+class RankGrains;
 }
 
 namespace wiregrain {
@@ -131,6 +132,13 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   int size_restart(int);
   int maxsize_restart();
   double memory_usage();
+  // solve distributed: the ghost grains' exchange (grains/rank_grains.h) and the ghost
+  // cutoff the contact reach needs
+  int pack_comm(int, int *, double *, int, int *);
+  void unpack_comm(int, int, double *);
+  int pack_reverse_comm(int, int, double *);
+  void unpack_reverse_comm(int, int *, double *);
+  double extend_cut_ghost();
 
   // the contacts of the last solve whose grain b this rank owns
   const wiregrain::ContactList &published_contacts() const;
@@ -169,6 +177,10 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double project_tolerance_;                // keyword project (0: off)
   int project_passes_;
   bool share_detection_ = true;             // keyword detection shared|replicated
+  bool distributed_ = false;                // keyword solve replicated|distributed
+  std::unique_ptr<wiregrain_lmp::RankGrains> rank_grains_;  // solve distributed
+  double largest_radius_ = 0.0;             // of the group's grains, at init
+  double largest_activation_ = 0.0;         // of the steps so far (solve distributed)
   long projections_ = 0;                    // pair corrections since the fix was made
   double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
   double stick_solves_[3] = {0.0, 0.0, 0.0};  // method subspace: tried, kept, factorisations, since the fix was made
@@ -189,9 +201,18 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   void solve_step();
   wiregrain::PeriodicBox periodic_box() const;
   void check_periodic_box();
+  double largest_bounding_radius() const;
   void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
-  void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &);
+  // solve distributed (fix_nscd_polyhedra_distributed.cpp): this rank's own grains and
+  // ghost grains, the checks of the ghost cutoff, the restart's warm starts of all ranks
+  std::vector<wiregrain::GrainState> rank_grains();
+  double needed_ghost_cutoff(double activation) const;
+  void check_ghost_cutoff(double activation);
+  void check_distributed_keywords();
+  std::vector<double> all_ranks_impulses();
+  void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &,
+                       size_t grain_count);
   wiregrain::WorkShare rank_share();
   void project_overlaps(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepProblem &,
                         const wiregrain::GrainStepResult &);

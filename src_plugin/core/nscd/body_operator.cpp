@@ -16,6 +16,7 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   step.law.validate();
   require_positive("time_step", step.time_step);
   set_bodies(step);
+  set_copies(step);
   const int n = static_cast<int>(step.contacts.size());
   links_.resize(n);
   start_normal_velocity_.resize(n);
@@ -28,6 +29,89 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   }
   norm_q_ = std::sqrt(norm_q_squared);
   set_rolling_blocks(step);
+}
+
+// Mass splitting (core/nscd/nscd_step.h): a body touched on k > 1 workers is swept with
+// k times its inverse mass and inertia (the Delassus blocks of its contacts with them).
+void BodyContactOperator::set_copies(const NscdStep& step) {
+  if (!step.distributed) return;
+  distributed_ = true;
+  const int body_count = static_cast<int>(bodies_.size());
+  if (static_cast<int>(step.touching_copies.size()) != body_count)
+    throw InvalidArgument("bodies", "touching_copies has " + std::to_string(step.touching_copies.size()) +
+                                        " entries for " + std::to_string(body_count) + " bodies");
+  copies_ = step.touching_copies;
+  touched_here_.assign(body_count, 0);
+  for (const NscdContact& contact : step.contacts)  // (indices out of range: check_contact's error)
+    for (int body : {contact.body_a, contact.body_b})
+      if (body >= 0 && body < body_count) touched_here_[body] = 1;
+  for (int b = 0; b < body_count; ++b) {
+    if (!(copies_[b] >= (touched_here_[b] ? 1.0 : 0.0)) || !std::isfinite(copies_[b]))
+      throw InvalidArgument("bodies", "body " + std::to_string(b) + ": touching_copies " +
+                                          std::to_string(copies_[b]) + " below the copies touched here");
+    if (copies_[b] > 1.0) {
+      bodies_[b].inverse_mass *= copies_[b];
+      bodies_[b].inverse_inertia *= copies_[b];
+    }
+  }
+  synchronized_.resize(body_count);
+  for (int b = 0; b < body_count; ++b) synchronized_[b] = bodies_[b].velocity;
+}
+
+Eigen::Matrix3d BodyContactOperator::true_delassus_block(int c) const {
+  const Link& link = links_[c];
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
+  for (const auto& [body, H] : {std::pair<int, const RowJacobian*>{link.body_a, &link.jacobian_a},
+                                std::pair<int, const RowJacobian*>{link.body_b, &link.jacobian_b}}) {
+    if (body < 0) continue;
+    const double split = copies_.empty() ? 1.0 : std::max(copies_[body], 1.0);
+    const Body& b = bodies_[body];
+    W += (b.inverse_mass / split) * H->leftCols<3>() * H->leftCols<3>().transpose() +
+         H->rightCols<3>() * (b.inverse_inertia / split) * H->rightCols<3>().transpose();
+  }
+  return W;
+}
+
+std::vector<Eigen::Vector3d> BodyContactOperator::delassus_product(const std::vector<Eigen::Vector3d>& x,
+                                                                   WorkerExchange& exchange) const {
+  const int body_count = static_cast<int>(bodies_.size());
+  std::vector<double> change(6 * static_cast<std::size_t>(body_count), 0.0);
+  for (int c = 0; c < static_cast<int>(links_.size()); ++c) {
+    if (x[c].isZero(0.0)) continue;
+    const Link& link = links_[c];
+    for (const auto& [body, H] : {std::pair<int, const RowJacobian*>{link.body_a, &link.jacobian_a},
+                                  std::pair<int, const RowJacobian*>{link.body_b, &link.jacobian_b}}) {
+      if (body < 0) continue;
+      const double split = copies_.empty() ? 1.0 : std::max(copies_[body], 1.0);
+      const Eigen::Vector3d linear = H->leftCols<3>().transpose() * x[c];
+      const Eigen::Vector3d angular = (bodies_[body].inverse_inertia / split) * (H->rightCols<3>().transpose() * x[c]);
+      for (int j = 0; j < 3; ++j) {
+        change[6 * body + j] += bodies_[body].inverse_mass / split * linear[j];
+        change[6 * body + 3 + j] += angular[j];
+      }
+    }
+  }
+  exchange.sum_over_copies(change, 6);
+  std::vector<Eigen::Vector3d> product(links_.size(), Eigen::Vector3d::Zero());
+  for (int c = 0; c < static_cast<int>(links_.size()); ++c) {
+    const Link& link = links_[c];
+    if (link.body_a >= 0) product[c] += side_velocity(link.jacobian_a, Eigen::Map<const Vector6d>(&change[6 * link.body_a]));
+    if (link.body_b >= 0) product[c] += side_velocity(link.jacobian_b, Eigen::Map<const Vector6d>(&change[6 * link.body_b]));
+  }
+  return product;
+}
+
+void BodyContactOperator::synchronize(WorkerExchange& exchange) {
+  const int body_count = static_cast<int>(bodies_.size());
+  std::vector<double> change(6 * static_cast<std::size_t>(body_count));
+  for (int b = 0; b < body_count; ++b)
+    for (int j = 0; j < 6; ++j) change[6 * b + j] = bodies_[b].velocity[j] - synchronized_[b][j];
+  exchange.sum_over_copies(change, 6);
+  for (int b = 0; b < body_count; ++b) {
+    if (!(copies_[b] == 1.0 && touched_here_[b]))  // (one copy touched, here: as it is)
+      for (int j = 0; j < 6; ++j) bodies_[b].velocity[j] = synchronized_[b][j] + change[6 * b + j] / std::max(copies_[b], 1.0);
+    synchronized_[b] = bodies_[b].velocity;
+  }
 }
 
 void BodyContactOperator::set_bodies(const NscdStep& step) {

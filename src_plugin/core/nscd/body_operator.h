@@ -40,8 +40,10 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
 #include <vector>
 
+#include "core/common/worker_exchange.h"
 #include "core/nscd/nscd_step.h"
 
 namespace wiregrain {
@@ -104,6 +106,25 @@ class BodyContactOperator final : public ContactOperator {
   const BlockSparseMatrix3& delassus_matrix() override;
 
   const Vector6d& body_velocity(int b) const { return bodies_[b].velocity; }
+
+  // A distributed step (NscdStep::touching_copies non-empty): the exchange of the copies'
+  // velocities after a sweep (mass splitting, core/nscd/nscd_step.h): every body takes
+  // V_sync + (1/k) Σ_copies (V_copy − V_sync); a body touched by this worker's contacts
+  // alone (k = 1) keeps its velocity as it is, to the bit. Collective.
+  bool distributed() const { return distributed_; }
+  void synchronize(WorkerExchange& exchange);
+  // W x over every worker's contacts with the bodies' true masses (not split): x one
+  // impulse per contact of this worker (local frames); the bodies' velocity changes
+  // M⁻¹ Hᵀ x summed over every copy, read by each contact. Collective.
+  std::vector<Eigen::Vector3d> delassus_product(const std::vector<Eigen::Vector3d>& x, WorkerExchange& exchange) const;
+  // W_cc with the true masses (the sweep's delassus_block(c) has the split ones)
+  Eigen::Matrix3d true_delassus_block(int c) const;
+  // ‖q‖ over every worker's contacts (collective); free_velocity_norm() is this worker's
+  double free_velocity_norm_over_workers(WorkerExchange& exchange) const {
+    double squared = norm_q_ * norm_q_;
+    exchange.sum_over_workers(&squared, 1);
+    return std::sqrt(squared);
+  }
   double start_normal_velocity(int c) const { return start_normal_velocity_[c]; }
   // Normal velocity without the shift s_c.
   double unshifted_normal_velocity(int c, const NscdStep& step) const {
@@ -144,6 +165,7 @@ class BodyContactOperator final : public ContactOperator {
   void check_contact(const NscdStep& step, int c) const;
   void set_link(const NscdStep& step, int c);
   void set_rolling_blocks(const NscdStep& step);
+  void set_copies(const NscdStep& step);
 
   // M⁻¹ Hᵀ of one side
   Eigen::Matrix<double, 6, 3> response(int b, const ContactJacobian& H) const {
@@ -195,6 +217,12 @@ class BodyContactOperator final : public ContactOperator {
   std::vector<Body> bodies_;
   std::vector<double> start_normal_velocity_;
   double norm_q_ = 0.0;
+  // distributed: per body k (touching_copies), whether a contact here touches it, and its
+  // velocity after the last exchange
+  bool distributed_ = false;
+  std::vector<double> copies_;
+  std::vector<char> touched_here_;
+  std::vector<Vector6d> synchronized_;
   BlockSparseMatrix3 delassus_;  // assembled on demand
 };
 

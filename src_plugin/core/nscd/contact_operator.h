@@ -47,5 +47,12 @@ class ContactOperator {
 
 // Siconos error of impulses r on an operator in the state r (see the top of this file).
 double siconos_error(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses);
+// Its sums over the contacts, to be added up over the workers of a distributed step:
+// Σ_c ‖r_c − proj(...)‖², ‖r‖², ‖u‖²; and the error from the summed parts and ‖q‖.
+struct SiconosErrorSums {
+  double residual_squared = 0.0, impulses_squared = 0.0, velocities_squared = 0.0;
+};
+SiconosErrorSums siconos_error_sums(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses);
+double siconos_error(const SiconosErrorSums& sums, double free_velocity_norm);
 
 }  // namespace wiregrain

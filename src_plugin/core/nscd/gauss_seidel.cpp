@@ -10,6 +10,7 @@
 
 #include "core/common/errors.h"
 #include "core/nscd/body_operator.h"
+#include "core/nscd/distributed_stick_solve.h"
 #include "core/nscd/input_checks.h"
 #include "core/nscd/subspace_correction.h"
 
@@ -95,7 +96,8 @@ double sweep_contacts(Operator& op, const std::vector<int>& order, bool backward
 // far, and the bookkeeping of the stopping test and of the stick solves.
 class GaussSeidelSolve {
  public:
-  GaussSeidelSolve(ContactOperator& op, const SolverSettings& settings, StickSolveBackoff* backoff);
+  GaussSeidelSolve(ContactOperator& op, const SolverSettings& settings, StickSolveBackoff* backoff,
+                   WorkerExchange* exchange);
   ContactSolution run(const std::vector<Eigen::Vector3d>& warm_start,
                       const std::vector<Eigen::Vector2d>& couple_warm_start);
 
@@ -118,6 +120,7 @@ class GaussSeidelSolve {
   double error_now();
   // one stick solve, counted in the report; returns the error before it
   double try_stick_solve(StickSolveOutcome& outcome);
+  StickSolveOutcome distributed_stick_solve_step(double error_before);
 
   ContactOperator& op_;
   const SolverSettings& settings_;
@@ -129,6 +132,10 @@ class GaussSeidelSolve {
   std::mt19937_64 generator_;
   BodyContactOperator* const body_op_;
   const bool rolling_;
+  // a distributed step (nscd_step.h, NscdStep::touching_copies): the workers' exchange
+  // and ‖q‖ over all of them
+  WorkerExchange* const exchange_;
+  double free_velocity_norm_ = 0.0;
   int check_interval_ = 1, next_error_check_ = 0;  // the Siconos error's checks
   // method subspace: whether the backoff allows any in this solve, and their schedule
   bool stick_solves_ = false;
@@ -138,7 +145,8 @@ class GaussSeidelSolve {
   bool error_known_ = false;
 };
 
-GaussSeidelSolve::GaussSeidelSolve(ContactOperator& op, const SolverSettings& settings, StickSolveBackoff* backoff)
+GaussSeidelSolve::GaussSeidelSolve(ContactOperator& op, const SolverSettings& settings, StickSolveBackoff* backoff,
+                                   WorkerExchange* exchange)
     : op_(op),
       settings_(settings),
       backoff_(backoff),
@@ -148,7 +156,13 @@ GaussSeidelSolve::GaussSeidelSolve(ContactOperator& op, const SolverSettings& se
       generator_(settings.seed),
       body_op_(dynamic_cast<BodyContactOperator*>(&op)),
       rolling_(body_op_ != nullptr && body_op_->has_rolling()),
+      exchange_(exchange),
       schedule_(settings.max_iterations) {
+  if (exchange_ != nullptr && (body_op_ == nullptr || !body_op_->distributed()))
+    throw InvalidArgument("exchange", "a distributed solve needs the body operator of a distributed step");
+  if (exchange_ != nullptr && rolling_)
+    throw InvalidArgument("exchange", "rolling resistance is not solved distributed");
+  free_velocity_norm_ = exchange_ != nullptr ? body_op_->free_velocity_norm_over_workers(*exchange_) : op.free_velocity_norm();
   result_.impulses.assign(n_, Eigen::Vector3d::Zero());
   result_.states.assign(n_, ContactState::open);
   for (int c = 0; c < n_; ++c) order_[c] = c;
@@ -207,7 +221,10 @@ double GaussSeidelSolve::sweep(int iteration, double& couple_increment_squared) 
                            couple_increment_squared)
           : sweep_contacts(op_, order_, backward, iteration, settings_, frozen_until_, result_, counts, changed,
                            couple_increment_squared);
-  if (changed) error_known_ = false;
+  if (exchange_ != nullptr) body_op_->synchronize(*exchange_);
+  // distributed: another worker's impulses may have changed (every worker computes the
+  // error at the same sweeps)
+  if (changed || exchange_ != nullptr) error_known_ = false;
   NscdReport& report = result_.report;
   report.open = counts[0];
   report.stick = counts[1];
@@ -268,11 +285,18 @@ bool GaussSeidelSolve::couples_converged(double couple_increment_squared, double
   }
   // normalised as the Siconos error, less ‖u‖ (not at hand here): max(‖q‖, ‖r‖)
   return body_op_->rolling_residual(result_.couples, result_.impulses) <=
-         settings_.tolerance * std::max(op_.free_velocity_norm(), norm_r);
+         settings_.tolerance * std::max(free_velocity_norm_, norm_r);
 }
 
 double GaussSeidelSolve::error_now() {
-  if (!error_known_) known_error_ = siconos_error(op_, result_.impulses);
+  if (!error_known_ && exchange_ != nullptr) {
+    SiconosErrorSums sums = siconos_error_sums(op_, result_.impulses);
+    double parts[3] = {sums.residual_squared, sums.impulses_squared, sums.velocities_squared};
+    exchange_->sum_over_workers(parts, 3);
+    known_error_ = siconos_error(SiconosErrorSums{parts[0], parts[1], parts[2]}, free_velocity_norm_);
+  } else if (!error_known_) {
+    known_error_ = siconos_error(op_, result_.impulses);
+  }
   error_known_ = true;
   return known_error_;
 }
@@ -281,6 +305,12 @@ double GaussSeidelSolve::try_stick_solve(StickSolveOutcome& outcome) {
   NscdReport& report = result_.report;
   const double error_before = error_now();
   ++report.subspace_solves;
+  if (exchange_ != nullptr) {
+    outcome = distributed_stick_solve_step(error_before);
+    stick_solve_harmed_ |= outcome == StickSolveOutcome::harmful;
+    if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
+    return error_before;
+  }
   double error_after = 0.0;
   outcome = subspace_correction(op_, result_.impulses, result_.states, settings_, error_before, error_after, report);
   error_known_ = outcome == StickSolveOutcome::kept;
@@ -288,6 +318,35 @@ double GaussSeidelSolve::try_stick_solve(StickSolveOutcome& outcome) {
   stick_solve_harmed_ |= outcome == StickSolveOutcome::harmful;
   if (outcome == StickSolveOutcome::kept) ++report.subspace_accepted;
   return error_before;
+}
+
+// The distributed stick solve (core/nscd/distributed_stick_solve.h): its candidate applied
+// on every worker, kept when it halves the Siconos error over all of them, else taken
+// back (as subspace_correction does on one worker).
+StickSolveOutcome GaussSeidelSolve::distributed_stick_solve_step(double error_before) {
+  const DistributedStickSolve solve =
+      distributed_stick_solve(*body_op_, result_.impulses, result_.states, settings_, free_velocity_norm_, *exchange_);
+  result_.report.subspace_factorizations += solve.iterations;  // (CG iterations stand for the factorisations)
+  if (!solve.any_closed) return StickSolveOutcome::harmless;
+  std::vector<Eigen::Vector3d> delta(n_);
+  for (int c = 0; c < n_; ++c) {
+    delta[c] = solve.candidate[c] - result_.impulses[c];
+    if (delta[c].isZero(0.0)) continue;
+    op_.add_impulse(c, delta[c]);
+    result_.impulses[c] = solve.candidate[c];
+  }
+  body_op_->synchronize(*exchange_);
+  error_known_ = false;
+  const double error_after = error_now();
+  if (error_after < 0.5 * error_before) return StickSolveOutcome::kept;
+  for (int c = 0; c < n_; ++c) {
+    if (delta[c].isZero(0.0)) continue;
+    op_.add_impulse(c, -delta[c]);
+    result_.impulses[c] -= delta[c];
+  }
+  body_op_->synchronize(*exchange_);
+  error_known_ = false;
+  return error_after > 2.0 * error_before ? StickSolveOutcome::harmful : StickSolveOutcome::harmless;
 }
 
 // converged without a kept stick solve: one more (core/nscd/subspace_correction.h), which
@@ -323,6 +382,7 @@ ContactSolution GaussSeidelSolve::run(const std::vector<Eigen::Vector3d>& warm_s
                                       const std::vector<Eigen::Vector2d>& couple_warm_start) {
   apply_warm_start(warm_start);
   apply_couple_warm_start(couple_warm_start);
+  if (exchange_ != nullptr) body_op_->synchronize(*exchange_);  // the warm starts of every worker
   if (stick_solves_ && backoff_ != nullptr && backoff_->skip > 0) {
     --backoff_->skip;
     stick_solves_ = false;
@@ -330,9 +390,15 @@ ContactSolution GaussSeidelSolve::run(const std::vector<Eigen::Vector3d>& warm_s
   NscdReport& report = result_.report;
   for (int iteration = 1; iteration <= settings_.max_iterations; ++iteration) {
     double couple_increment_squared = 0.0;
-    const double increment_squared = sweep(iteration, couple_increment_squared);
+    double increment_squared = sweep(iteration, couple_increment_squared);
     double norm_r_squared = 0.0;
     for (const Eigen::Vector3d& r : result_.impulses) norm_r_squared += r.squaredNorm();
+    if (exchange_ != nullptr) {
+      double sums[2] = {increment_squared, norm_r_squared};
+      exchange_->sum_over_workers(sums, 2);
+      increment_squared = sums[0];
+      norm_r_squared = sums[1];
+    }
     const double norm_r = std::sqrt(norm_r_squared);
     report.increment = std::sqrt(increment_squared);
     if (norm_r > DBL_EPSILON) report.increment /= norm_r;
@@ -354,9 +420,10 @@ ContactSolution GaussSeidelSolve::run(const std::vector<Eigen::Vector3d>& warm_s
 ContactSolution solve_frictional_contact(ContactOperator& op, const SolverSettings& settings,
                                          const std::vector<Eigen::Vector3d>& warm_start,
                                          StickSolveBackoff* backoff,
-                                         const std::vector<Eigen::Vector2d>& couple_warm_start) {
+                                         const std::vector<Eigen::Vector2d>& couple_warm_start,
+                                         WorkerExchange* exchange) {
   settings.validate();
-  return GaussSeidelSolve(op, settings, backoff).run(warm_start, couple_warm_start);
+  return GaussSeidelSolve(op, settings, backoff, exchange).run(warm_start, couple_warm_start);
 }
 
 }  // namespace wiregrain

@@ -31,6 +31,7 @@
 
 #include <vector>
 
+#include "core/common/worker_exchange.h"
 #include "core/nscd/contact_operator.h"
 #include "core/nscd/coulomb_local.h"
 #include "core/nscd/solver_settings.h"
@@ -48,7 +49,7 @@ struct NscdReport {
   long slide_fallbacks = 0;            // local slide solves that needed the scan
   int subspace_solves = 0;             // stick solves tried (method subspace)
   int subspace_accepted = 0;           // of which halved the Siconos error and were kept
-  int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made
+  int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made (distributed: CG iterations)
   long frozen_updates = 0;             // contact updates skipped (freeze)
 };
 
@@ -78,9 +79,13 @@ struct ContactSolution {
 // couple_warm_start: empty, or one rolling couple per contact (t1, t2 components),
 // applied with the impulses; entries of contacts without rolling resistance (all of them
 // on an operator other than solve_nscd_step's) are ignored.
+// exchange: the workers of a distributed step (core/nscd/nscd_step.h, NscdStep::
+// touching_copies), on the body operator only (InvalidArgument("exchange", ...) on another
+// operator or with rolling resistance); null: one worker.
 ContactSolution solve_frictional_contact(ContactOperator& op, const SolverSettings& settings,
                                          const std::vector<Eigen::Vector3d>& warm_start = {},
                                          StickSolveBackoff* backoff = nullptr,
-                                         const std::vector<Eigen::Vector2d>& couple_warm_start = {});
+                                         const std::vector<Eigen::Vector2d>& couple_warm_start = {},
+                                         WorkerExchange* exchange = nullptr);
 
 }  // namespace wiregrain

@@ -157,6 +157,38 @@ void check_periodic_reach(const PeriodicBox& box, double reach) {
 }
 
 
+// A distributed step's partition (GrainPartition): InvalidArgument("sleep" | "exchange" |
+// "rolling_friction" | "walls" | "grains", ...).
+void check_partition(const GrainPartition& partition, const std::vector<GrainState>& grains,
+                     const std::vector<PlaneWall>& walls, const GrainStepOptions& options, const WorkShare* share) {
+  if (partition.exchange == nullptr || share != nullptr)
+    throw InvalidArgument("exchange", "grain step: a distributed step needs the workers' exchange and no shared detection");
+  if (options.sleep.on()) throw InvalidArgument("sleep", "grain step: sleeping grains are not solved distributed");
+  if (options.rolling_friction > 0.0)
+    throw InvalidArgument("rolling_friction", "grain step: rolling resistance is not solved distributed");
+  for (const PlaneWall& w : walls)  // (a plate would be a body of every worker)
+    if (w.plate()) throw InvalidArgument("walls", "grain step: a plate is not solved distributed");
+  if (partition.owned < 0 || partition.owned > static_cast<int>(grains.size()))
+    throw InvalidArgument("grains", "grain step: " + std::to_string(partition.owned) + " own grains of " +
+                                        std::to_string(grains.size()));
+  for (int k = 1; k < partition.owned; k++)
+    if (!(grains[k - 1].tag < grains[k].tag))
+      throw InvalidArgument("grains", "grain step: a worker's own grains must come first in ascending tag order");
+}
+
+// Mass splitting (core/nscd/nscd_step.h): per body, how many of its copies over all
+// workers this step's contacts touch.
+void count_touching_copies(GrainStepProblem& problem) {
+  std::vector<double> touched(problem.step.bodies.size(), 0.0);
+  for (const NscdContact& c : problem.step.contacts) {
+    if (c.body_a >= 0) touched[c.body_a] = 1.0;
+    touched[c.body_b] = 1.0;
+  }
+  problem.exchange->sum_over_copies(touched, 1);
+  problem.step.distributed = true;
+  problem.step.touching_copies = std::move(touched);
+}
+
 // Step 1: every grain a body with its free velocities and implicit damping (a sleeping
 // grain: infinite mass and no velocity). largest_radius: the largest bounding radius R;
 // fastest: the largest |v_free| + |ω_free| R.
@@ -262,16 +294,22 @@ using namespace grain_step_detail;
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double h, const GrainStepOptions& options,
                                      const GrainImpulseMemory& memory, GrainPairCache* pairs,
-                                     const WorkShare* share) {
+                                     const WorkShare* share, const GrainPartition* partition) {
   options.validate();
   check_inputs(grains, library, walls, h, options.box);
   const int n = static_cast<int>(grains.size());
+  if (partition) check_partition(*partition, grains, walls, options, share);
   GrainStepProblem problem;
   problem.wall_count = static_cast<int>(walls.size());
   problem.walls = walls;
   problem.step.time_step = h;
   problem.step.law = options.law;
-  problem.box = options.box;
+  // distributed: the copies carry their image positions, pairs are taken as they are
+  problem.box = partition ? PeriodicBox() : options.box;
+  if (partition) {
+    problem.exchange = partition->exchange;
+    problem.owned = partition->owned;
+  }
   if (options.rolling_friction > 0.0) {
     problem.rolling_friction = options.rolling_friction;
     problem.sweep_radius.resize(n);
@@ -281,17 +319,26 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   const bool sleep = options.sleep.on();
   if (sleep) begin_sleeping_step(problem, grains, library, walls, options);
   // 1. bodies
-  const BodyExtent extent = add_free_bodies(problem, grains, library, options.damping);
+  BodyExtent extent = add_free_bodies(problem, grains, library, options.damping);
   add_plate_bodies(problem, walls);
+  if (partition) {  // over every worker's grains
+    extent.largest_radius = partition->exchange->max_over_workers(extent.largest_radius);
+    extent.fastest = partition->exchange->max_over_workers(extent.fastest);
+  }
   // 2. contact points of every pair whose gap may close within the step (grain_detection.h)
   double wall_speed = 0.0;
   for (const PlaneWall& w : walls) wall_speed = std::max(wall_speed, w.velocity.norm());
   for (const PlaneWall& w : walls)  // a plate: its start or free speed (contacts only slow its approach)
     if (w.plate()) wall_speed = std::max(wall_speed, w.free_velocity(h).norm());
   const double activation = options.margin + 2.0 * h * (2.0 * extent.fastest + wall_speed) + 1e-12;
+  problem.activation = activation;
+  problem.largest_radius = extent.largest_radius;
   if (options.box.any()) check_periodic_reach(options.box, 2.0 * extent.largest_radius + activation + (pairs ? pairs->skin() : 0.0));
-  const DetectedContacts contacts = detect_contacts(grains, library, walls, options, problem.asleep, activation,
-                                                    extent.largest_radius, pairs, share);
+  GrainStepOptions detection_options = options;
+  detection_options.box = problem.box;
+  const DetectedContacts contacts = detect_contacts(grains, library, walls, detection_options, problem.asleep,
+                                                    activation, extent.largest_radius, pairs, share,
+                                                    partition ? partition->owned : -1);
   // 3. the points from the top down
   const DetectionOrder order = add_points_top_down(problem, grains, walls, options, contacts);
   // 4. warm start
@@ -299,6 +346,7 @@ GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, cons
   set_step_contacts(problem);
   // the frozen points: last step's points of the pairs that sleep now
   if (sleep) freeze_sleeping_pairs(problem, grains, walls, memory);
+  if (partition) count_touching_copies(problem);
   return problem;
 }
 

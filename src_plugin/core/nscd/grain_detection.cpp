@@ -90,9 +90,16 @@ void kept_pair_candidates(GrainPairCache& pairs, const std::vector<char>& asleep
 
 // The candidates of the broad-phase grid: the grain pairs whose bounding spheres come
 // within activation + skin.
+// owned ≥ 0: only the pairs of this worker (detect_contacts).
+bool owns_pair(const std::vector<GrainState>& grains, int owned, int a, int b) {
+  if (owned < 0) return true;
+  if (grains[a].tag == grains[b].tag) return false;  // a grain and its own image
+  return (grains[a].tag < grains[b].tag ? a : b) < owned;
+}
+
 void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                      const std::vector<char>& asleep, double activation, double skin, double largest_radius,
-                     const PeriodicBox& box, std::vector<NarrowPhaseCandidate>& candidates) {
+                     const PeriodicBox& box, int owned, std::vector<NarrowPhaseCandidate>& candidates) {
   const auto sleeping = [&](int k) { return !asleep.empty() && asleep[k]; };
   const int n = static_cast<int>(grains.size());
   const double cell = 2.0 * largest_radius + activation + skin;
@@ -106,7 +113,7 @@ void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& 
     const double ra = library[grains[a].shape].bounding_radius;
     near.clear();
     grid.for_each_near(grains[a].position, [&](int b, const Eigen::Vector3d&) {
-      if (b <= a) return;
+      if (b <= a || !owns_pair(grains, owned, a, b)) return;
       const double reach = ra + library[grains[b].shape].bounding_radius + activation + skin;
       if (box.minimum_image(grains[b].position - grains[a].position).squaredNorm() < reach * reach) near.push_back(b);
     });
@@ -119,9 +126,9 @@ void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& 
 // The candidates of each wall: its awake grains within `activation` of its plane.
 void wall_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                      const std::vector<PlaneWall>& walls, const std::vector<char>& asleep, double activation,
-                     std::vector<NarrowPhaseCandidate>& candidates) {
+                     int owned, std::vector<NarrowPhaseCandidate>& candidates) {
   const auto sleeping = [&](int k) { return !asleep.empty() && asleep[k]; };
-  const int n = static_cast<int>(grains.size());
+  const int n = owned >= 0 ? owned : static_cast<int>(grains.size());
   for (int w = 0; w < (int)walls.size(); w++)
     for (int b = 0; b < n; b++) {
       if (sleeping(b)) continue;  // frozen (a moving wall within reach woke it)
@@ -156,7 +163,7 @@ void update_pair_cache(GrainPairCache& pairs, bool reused, bool warm_geometry, c
 DetectedContacts detect_contacts(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                  const std::vector<PlaneWall>& walls, const GrainStepOptions& options,
                                  const std::vector<char>& asleep, double activation, double largest_radius,
-                                 GrainPairCache* pairs, const WorkShare* share) {
+                                 GrainPairCache* pairs, const WorkShare* share, int owned) {
   const int n = static_cast<int>(grains.size());
   ContactOptions contact_options;
   contact_options.near_vertices = options.near_vertices;
@@ -168,8 +175,8 @@ DetectedContacts detect_contacts(const std::vector<GrainState>& grains, const Sh
   if (reuse)
     kept_pair_candidates(*pairs, asleep, activation, warm_geometry, candidates);
   else if (n > 0)
-    grid_candidates(grains, library, asleep, activation, skin, largest_radius, options.box, candidates);
-  wall_candidates(grains, library, walls, asleep, activation, candidates);
+    grid_candidates(grains, library, asleep, activation, skin, largest_radius, options.box, owned, candidates);
+  wall_candidates(grains, library, walls, asleep, activation, owned, candidates);
   ContactOptions build_options = contact_options;  // a cache build learns which pairs lie beyond activation + skin
   build_options.exit_beyond_activation = skin;
   std::vector<std::optional<PosedShape>> posed(n);  // the grains of this worker's candidates

@@ -46,7 +46,10 @@ struct DetectedContacts {
 DetectedContacts detect_contacts(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                  const std::vector<PlaneWall>& walls, const GrainStepOptions& options,
                                  const std::vector<char>& asleep, double activation, double largest_radius,
-                                 GrainPairCache* pairs, const WorkShare* share);
+                                 GrainPairCache* pairs, const WorkShare* share, int owned = -1);
+// owned ≥ 0: a worker of a distributed step (core/nscd/grain_step.h, GrainPartition): only
+// the pairs it owns (the grain of the smaller tag among its first `owned`; a wall pair's
+// grain among them).
 
 }  // namespace grain_step_detail
 }  // namespace wiregrain

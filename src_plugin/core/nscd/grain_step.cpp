@@ -61,6 +61,7 @@ namespace {
 struct ContactImpulses {
   std::vector<Eigen::Vector3d> on_grain, moment, on_wall;
 };
+void sum_over_workers(const GrainStepProblem& problem, ContactImpulses& out);
 ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vector<GrainState>& grains,
                                  const NscdStepResult& solved) {
   const int n = static_cast<int>(grains.size());
@@ -92,7 +93,33 @@ ContactImpulses contact_impulses(const GrainStepProblem& problem, const std::vec
   for (size_t f = 0; f < problem.frozen.size(); f++)
     add(problem.frozen_bodies[f].first, problem.frozen_bodies[f].second, problem.frozen[f].first.first,
         problem.frozen[f].second.position, problem.frozen[f].second.impulse);
+  if (problem.exchange != nullptr) sum_over_workers(problem, out);
   return out;
+}
+
+// Distributed: each grain's impulse and moment summed over every worker's contacts on its
+// copies (the moments about the copy's own centre, the same vector for every image), the
+// walls' over the workers.
+void sum_over_workers(const GrainStepProblem& problem, ContactImpulses& out) {
+  const std::size_t n = out.on_grain.size();
+  std::vector<double> per_grain(6 * n);
+  for (std::size_t k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) {
+      per_grain[6 * k + d] = out.on_grain[k][d];
+      per_grain[6 * k + 3 + d] = out.moment[k][d];
+    }
+  problem.exchange->sum_over_copies(per_grain, 6);
+  for (std::size_t k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) {
+      out.on_grain[k][d] = per_grain[6 * k + d];
+      out.moment[k][d] = per_grain[6 * k + 3 + d];
+    }
+  std::vector<double> walls(3 * out.on_wall.size());
+  for (std::size_t w = 0; w < out.on_wall.size(); w++)
+    for (int d = 0; d < 3; d++) walls[3 * w + d] = out.on_wall[w][d];
+  if (!walls.empty()) problem.exchange->sum_over_workers(walls.data(), static_cast<int>(walls.size()));
+  for (std::size_t w = 0; w < out.on_wall.size(); w++)
+    for (int d = 0; d < 3; d++) out.on_wall[w][d] = walls[3 * w + d];
 }
 
 // The solve of the step; with sleeping on, the sleepers that cannot stay at rest wake
@@ -103,7 +130,8 @@ NscdStepResult solve_with_sleepers(GrainStepProblem& problem, const std::vector<
                                    GrainImpulseMemory& memory, int& woken_in_step, int& sleeper_checks) {
   using namespace grain_step_detail;
   const SolverSettings solver = options.solver_for_step(step_number);
-  NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff, problem.couple_warm_start);
+  NscdStepResult solved = solve_nscd_step(problem.step, solver, problem.warm_start, &memory.backoff,
+                                          problem.couple_warm_start, problem.exchange);
   if (options.sleep.on()) {
     for (std::vector<int> woken = check_sleepers(problem, grains, options, solved, sleeper_checks); !woken.empty();
          woken = check_sleepers(problem, grains, options, solved, sleeper_checks)) {
@@ -159,6 +187,13 @@ void report_solve(const GrainStepProblem& problem, const NscdStepResult& solved,
   stats.subspace_accepted = report.subspace_accepted;
   stats.subspace_factorizations = report.subspace_factorizations;
   stats.frozen_points = static_cast<int>(problem.frozen.size());
+  if (problem.exchange != nullptr) {  // over the workers
+    double counts = stats.contact_points;
+    problem.exchange->sum_over_workers(&counts, 1);
+    stats.contact_points = static_cast<int>(counts);
+    stats.max_overlap = problem.exchange->max_over_workers(stats.max_overlap);
+    stats.max_predicted_penetration = problem.exchange->max_over_workers(stats.max_predicted_penetration);
+  }
 }
 
 }  // namespace

@@ -62,6 +62,7 @@
 #include <vector>
 
 #include "core/common/work_share.h"
+#include "core/common/worker_exchange.h"
 #include "core/contact/contact_list.h"
 #include "core/geometry/periodic_box.h"
 #include "core/geometry/shape_library.h"
@@ -193,6 +194,24 @@ struct GrainStepOptions {
   void validate() const;
 };
 
+// A grain step spread over workers that each own a part of the grains (fix
+// nscd/polyhedra's `solve distributed`: the MPI ranks and their subdomains;
+// core/common/worker_exchange.h). A worker's grains are its own, grains[0, owned) in
+// ascending tag order, followed by copies of other workers' grains within the contact
+// reach of its own (and periodic images of its own: along periodic dimensions the copies
+// carry their image positions, and pairs are taken as the positions are, not in the
+// minimum image). Ownership: a grain pair is detected and solved by the worker that owns
+// the grain of the smaller tag, a grain–wall pair by the grain's owner, so every pair is
+// found by exactly one worker when each worker holds copies of every grain within reach
+// of its own. The activation distance is the largest over the workers (the same as one
+// worker holding every grain would use), the solve exchanges the copies' velocities after
+// each sweep (mass splitting, NscdStep::touching_copies), and the contact forces and
+// torques of each grain are summed over the workers' contacts on its copies.
+struct GrainPartition {
+  int owned = 0;
+  WorkerExchange* exchange = nullptr;  // required
+};
+
 // A contact point of the step: the solver's row and where it came from.
 struct GrainContactPoint {
   NscdContact constraint;             // body indices into the grain list, Jacobians, μ, gap
@@ -227,7 +246,13 @@ struct GrainStepProblem {
   // point's rolling radius R is the sum of its two grains'; a wall's is 0); else empty
   double rolling_friction = 0.0;
   std::vector<double> sweep_radius;
-  PeriodicBox box;  // the options' (lever arms in the minimum image)
+  PeriodicBox box;  // the options' (lever arms in the minimum image); none when distributed
+  // distributed (GrainPartition): the workers' exchange, and how many grains are this
+  // worker's own; null and all
+  WorkerExchange* exchange = nullptr;
+  int owned = 0;
+  double activation = 0.0;      // the activation distance of the step
+  double largest_radius = 0.0;  // the largest bounding radius (over every worker's grains)
 };
 
 struct GrainStepStats {
@@ -268,11 +293,18 @@ struct GrainStepResult {
 // pairs in their fixed order, then the wall pairs) in one block per worker, the contact
 // points joined, and every worker assembles the same problem from them: the same points,
 // to the bit, as one worker computing every pair.
+// With `partition` (a worker of a distributed step, GrainPartition): the pairs this worker
+// owns, the activation distance over all workers, NscdStep::touching_copies; collective.
+// Sleeping is refused then (InvalidArgument("sleep", ...)), and `share` must be null.
 GrainStepProblem assemble_grain_step(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                      const std::vector<PlaneWall>& walls, double time_step,
                                      const GrainStepOptions& options, const GrainImpulseMemory& memory,
-                                     GrainPairCache* pairs = nullptr, const WorkShare* share = nullptr);
-// Step 5; replaces `memory` by this step's impulses. Sleeping grains that wake within
+                                     GrainPairCache* pairs = nullptr, const WorkShare* share = nullptr,
+                                     const GrainPartition* partition = nullptr);
+// Step 5; replaces `memory` by this step's impulses. Distributed (problem.exchange): the
+// velocities of every grain of the worker (its own and the copies), each grain's contact
+// force and torque summed over all workers' contacts, the walls' forces and the stats'
+// counts summed over the workers, the contact list and the memory this worker's. Sleeping grains that wake within
 // the step join `problem` (their frozen points become its contact points). NumericalFailure
 // or InvalidArgument from the solver.
 GrainStepResult solve_grain_step(GrainStepProblem& problem, const std::vector<GrainState>& grains,

@@ -35,11 +35,14 @@ std::unique_ptr<ContactOperator> body_contact_operator(const NscdStep& step) {
 NscdStepResult solve_nscd_step(const NscdStep& step, const SolverSettings& settings,
                                const std::vector<Eigen::Vector3d>& warm_start,
                                StickSolveBackoff* backoff,
-                               const std::vector<Eigen::Vector2d>& couple_warm_start) {
+                               const std::vector<Eigen::Vector2d>& couple_warm_start,
+                               WorkerExchange* exchange) {
   settings.validate();
   BodyContactOperator op(step);
+  if (exchange != nullptr && !op.distributed())
+    throw InvalidArgument("exchange", "a distributed solve needs a distributed step (NscdStep::distributed)");
   NscdStepResult result;
-  result.contacts = solve_frictional_contact(op, settings, warm_start, backoff, couple_warm_start);
+  result.contacts = solve_frictional_contact(op, settings, warm_start, backoff, couple_warm_start, exchange);
   const int body_count = static_cast<int>(step.bodies.size());
   result.velocities.resize(body_count);
   result.angular_velocities.resize(body_count);

@@ -38,6 +38,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/common/worker_exchange.h"
 #include "core/nscd/gauss_seidel.h"
 
 namespace wiregrain {
@@ -103,6 +104,22 @@ struct NscdStep {
   MoreauJeanLaw law;
   std::vector<NscdBody> bodies;
   std::vector<NscdContact> contacts;
+  // A step spread over workers (solve_nscd_step with a WorkerExchange; fix nscd/polyhedra's
+  // `solve distributed`): each worker holds the contacts it owns and, as bodies, the
+  // bodies they touch, its own and copies of other workers'. Mass splitting (Tonge,
+  // Benevolenski & Voroshilov, "Mass splitting for jitter-free parallel rigid body
+  // simulation", ACM Trans. Graph. 31(4):105, 2012): a body whose copies on k workers are
+  // touched by contacts is swept on each with the mass m / k (inertia I / k), and after
+  // each sweep every copy takes
+  //     V = V_sync + (1/k) Σ_copies (V_copy − V_sync),
+  // V_sync its velocity after the last exchange: the mean of the copies, i.e. all the
+  // copies' impulse increments applied to the true mass. It is a Gauss–Seidel sweep
+  // within a worker and a Jacobi step across workers that cannot overshoot where several
+  // workers push one body (each sees it k times lighter). touching_copies: per body, k
+  // (0: no contact of any worker touches it). distributed: the step is one worker's part
+  // (touching_copies then has one entry per body; a worker may hold no body at all).
+  bool distributed = false;
+  std::vector<double> touching_copies;
 };
 
 struct NscdStepResult {
@@ -118,10 +135,18 @@ struct NscdStepResult {
 // "contacts", ...) on bad input (body index out of range, a contact whose Delassus block
 // has W_nn ≤ 0, e.g. between two infinite masses; negative inverse mass; μ < 0; non-finite
 // data). warm_start, backoff, couple_warm_start: as solve_frictional_contact's.
+// exchange: the workers' communication of a distributed step (NscdStep::touching_copies;
+// core/common/worker_exchange.h), null for a step held by one worker. Distributed, the
+// sweeps alternate with exchanges of the copies' velocities, the stopping measures are
+// summed over the workers (every worker stops after the same sweep), method subspace's
+// stick solves are solved by conjugate gradients over all workers
+// (core/nscd/distributed_stick_solve.h), and rolling resistance is refused
+// (InvalidArgument("exchange", ...)).
 NscdStepResult solve_nscd_step(const NscdStep& step, const SolverSettings& settings,
                                const std::vector<Eigen::Vector3d>& warm_start = {},
                                StickSolveBackoff* backoff = nullptr,
-                               const std::vector<Eigen::Vector2d>& couple_warm_start = {});
+                               const std::vector<Eigen::Vector2d>& couple_warm_start = {},
+                               WorkerExchange* exchange = nullptr);
 
 // The operator solve_nscd_step sweeps on, for tests and benchmarks of the sweep itself;
 // the same InvalidArgument as solve_nscd_step on a bad step.

@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""Benchmark: fix nscd/polyhedra `solve replicated` against `solve distributed` on the
+paper's Table 1 column without wire (input_scripts/in.column -var wire 0: 915 grains), its
+wall phase continued from column_relaxed.restart for --time time units, on 1 and 2 ranks,
+the runs alternated (--repeat rounds): the wall time of the run, the NSCD clocks of rank 0
+(gather + detection, solve, scatter + overlap projection), the peak resident memory of
+each rank, the column's height at the end, and the speed-ups side by side.
+
+    bench/nscd_distributed.py [--liggghts build/liggghts] [--relaxed DIR] [--time 5] [--repeat 2]
+
+Without --relaxed the restart is made first (in.column -var wire 0 with each layer
+deposited for 1.5 time units and relaxed to t = 14: a few minutes on 2 ranks) in a
+temporary folder; --relaxed DIR reuses the column_relaxed.restart and column_deposited.txt
+of a folder."""
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+PREP = {"wire": 0, "t_layer": 1.5, "t_wire": 0, "t_relax": 14, "t_end": 14.01}
+
+
+def mpirun(args, ranks, liggghts, workdir, variables, log):
+    # each rank's peak resident memory into rss.<rank> (Open MPI names the rank in the environment)
+    line = ["/usr/bin/time", "-f", "%M", "-o", "rss.$OMPI_COMM_WORLD_RANK", liggghts, "-in",
+            os.path.join(ROOT, "input_scripts", "in.column"), "-var", "root", ROOT]
+    for key, value in variables.items():
+        line += ["-var", key, str(value)]
+    cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), "sh", "-c",
+           " ".join(f"'{w}'" if not w.startswith("rss.") else w for w in line)]
+    start = time.time()
+    with open(log, "w") as out:
+        proc = subprocess.run(cmd + args, cwd=workdir, stdout=out, stderr=subprocess.STDOUT)
+    elapsed = time.time() - start
+    text = open(log).read()
+    if proc.returncode != 0:
+        raise SystemExit(f"run failed ({log}):\n{text[-3000:]}")
+    rss = [int(open(os.path.join(workdir, f"rss.{r}")).read().split()[-1]) / 1024.0 for r in range(ranks)]
+    return elapsed, text, rss
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
+    parser.add_argument("--relaxed", help="a folder with column_relaxed.restart and column_deposited.txt")
+    parser.add_argument("--time", type=float, default=5.0, help="time units of the wall phase timed")
+    parser.add_argument("--repeat", type=int, default=2)
+    args = parser.parse_args()
+    liggghts = os.path.abspath(args.liggghts)
+    work = tempfile.mkdtemp(prefix="nscd-distributed-")
+    if args.relaxed:
+        for name in ("column_relaxed.restart", "column_deposited.txt"):
+            shutil.copy(os.path.join(args.relaxed, name), work)
+    else:
+        print(f"making the relaxed column in {work} ...", flush=True)
+        mpirun([], 2, liggghts, work, PREP, os.path.join(work, "prep.log"))
+    phase = dict(PREP, resume=1, t_end=PREP["t_relax"] + args.time)
+    results = {}
+    for round_ in range(args.repeat):
+        for solve in ("replicated", "distributed"):
+            for ranks in (1, 2):
+                run_dir = os.path.join(work, f"{solve}-{ranks}-{round_}")
+                os.makedirs(run_dir)
+                for name in ("column_relaxed.restart", "column_deposited.txt"):
+                    shutil.copy(os.path.join(work, name), run_dir)
+                elapsed, text, rss = mpirun([], ranks, liggghts, run_dir, dict(phase, solve=solve),
+                                            os.path.join(run_dir, "log.txt"))
+                clocks = re.search(r"NSCD clocks: gather \+ detection (\S+) s, solve (\S+) s, scatter \+ overlap "
+                                   r"projection (\S+) s", text)
+                final = re.search(r"in.column final: H_n = (\S+)", text)
+                entry = results.setdefault((solve, ranks), [])
+                entry.append((elapsed, *[float(c) for c in clocks.groups()], max(rss), float(final.group(1))))
+                print(f"{solve:11s} {ranks} rank(s): {elapsed:6.1f} s wall, detection {entry[-1][1]:6.2f} s, solve "
+                      f"{entry[-1][2]:6.2f} s, scatter {entry[-1][3]:5.2f} s, peak RSS per rank {max(rss):6.1f} MiB, "
+                      f"H_n {entry[-1][5]:.6f}", flush=True)
+    best = {key: min(values) for key, values in results.items()}
+    print(f"\nTable 1 column without wire, wall phase {args.time} time units from the relaxed restart, best of "
+          f"{args.repeat}:")
+    print(f"{'':24s} {'wall s':>8s} {'detect s':>9s} {'solve s':>8s} {'NSCD s':>8s} {'RSS MiB':>8s}")
+    for (solve, ranks), b in sorted(best.items()):
+        print(f"{solve + ' ' + str(ranks) + ' rank(s)':24s} {b[0]:8.1f} {b[1]:9.2f} {b[2]:8.2f} {b[1] + b[2]:8.2f} "
+              f"{b[4]:8.1f}")
+    for solve in ("replicated", "distributed"):
+        one, two = best[(solve, 1)], best[(solve, 2)]
+        print(f"{solve}: 2 ranks against 1: wall {one[0] / two[0]:.2f}x, NSCD (detection + solve) "
+              f"{(one[1] + one[2]) / (two[1] + two[2]):.2f}x")
+    rep, dist = best[("replicated", 2)], best[("distributed", 2)]
+    print(f"2 ranks, distributed against replicated: wall {rep[0] / dist[0]:.2f}x, NSCD "
+          f"{(rep[1] + rep[2]) / (dist[1] + dist[2]):.2f}x")
+    print(f"(runs in {work})")
+
+
+if __name__ == "__main__":
+    main()

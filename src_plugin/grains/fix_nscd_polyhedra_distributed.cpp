@@ -1,0 +1,189 @@
+// fix nscd/polyhedra `solve distributed` (docs/commands/fix_nscd_polyhedra.md, "MPI"):
+// each rank steps the pairs it owns with its own grains and LIGGGHTS' ghost grains
+// (core/nscd/grain_step.h, GrainPartition; grains/rank_grains.h for the communication).
+#include <mpi.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <string>
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "core/common/validation.h"
+#include "core/geometry/shape_library.h"
+#include "fix_nscd_polyhedra.h"
+#include "fix_nscd_polyhedra_state.h"
+#include "plugin_args.h"
+#include "plugin_comm.h"
+#include "plugin_vector.h"
+#include "rank_grains.h"
+
+using namespace LAMMPS_NS;
+using namespace fix_nscd_polyhedra_layout;
+using wiregrain_lmp::vec3;
+
+namespace {
+
+// The activation distance the ghost cutoff allows for at a run start, beyond the margin,
+// as a fraction of the largest bounding radius (the step's own is 4 h v_max; a run that
+// needs more stops with an ERROR naming the cutoff to set).
+constexpr double kGhostActivationOfRadius = 0.25;
+
+}  // namespace
+
+// The options distributed steps do not carry (checked when the fix is defined and at
+// each run start: fix_modify may turn sleeping on).
+void FixNSCDPolyhedra::check_distributed_keywords() {
+  const auto refuse = [this](const std::string &what) {
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, "'solve distributed' does not " + what);
+  };
+  if (core_->options.sleep.on()) refuse("take sleeping grains (keyword 'sleep'): use 'solve replicated'");
+  if (core_->options.rolling_friction > 0.0) refuse("take 'rolling_friction': use 'solve replicated'");
+  if (problem_every_ > 0) refuse("write the whole problem ('write_problems'): use 'solve replicated'");
+  if (core_->options.warm_geometry) refuse("take 'warm_geometry yes' (its GJK simplices are not in the restart file)");
+  if (domain->triclinic) refuse("take a triclinic box");
+  if (!core_->plates.empty()) refuse("take a 'plate' (the plate would be a body of every rank): use 'solve replicated'");
+}
+
+// The ghost cutoff that holds every partner within `activation` of a rank's own grains
+// as ghosts until the next reneighbouring (atoms move at most skin/2 before it): a pair
+// reaches 2 R_max + activation between centres. LIGGGHTS' granular communication
+// (an atom style with a radius, orthogonal box: Comm::use_gran_opt) sends an atom within
+// cutghost/2 + skin/2 + its radius of a subdomain, which asks 2 R_max + 2 activation +
+// skin; otherwise an atom within cutghost, which asks 2 R_max + activation + skin.
+double FixNSCDPolyhedra::needed_ghost_cutoff(double activation) const {
+  const bool halved = domain->triclinic == 0 && atom->radius != nullptr;
+  return 2.0 * largest_radius_ + (halved ? 2.0 : 1.0) * activation + neighbor->skin;
+}
+
+// The cutoff asked of LIGGGHTS at each Comm::setup (it adds the skin): the margin and
+// kGhostActivationOfRadius R_max of activation, or twice the largest activation seen.
+double FixNSCDPolyhedra::extend_cut_ghost() {
+  if (!distributed_) return 0.0;
+  const double allowance = std::max(core_->options.margin + kGhostActivationOfRadius * largest_radius_,
+                                    2.0 * largest_activation_);
+  return needed_ghost_cutoff(allowance) - neighbor->skin;
+}
+
+void FixNSCDPolyhedra::check_ghost_cutoff(double activation) {
+  largest_activation_ = std::max(largest_activation_, activation);
+  const double needed = needed_ghost_cutoff(activation);
+  const double held = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
+  if (held >= needed) return;
+  const bool halved = domain->triclinic == 0 && atom->radius != nullptr;
+  const std::string R = wiregrain::format_number(largest_radius_), skin = wiregrain::format_number(neighbor->skin);
+  wiregrain_lmp::style_error(
+      error, "fix", "nscd/polyhedra", id,
+      "solve distributed: step " + std::to_string(update->ntimestep) + " has an activation distance of " +
+          wiregrain::format_number(activation) + " (4 h v_max + margin), so the ghost cutoff must be " +
+          wiregrain::format_number(needed) +
+          (halved ? " (2 x (the largest bounding radius " + R + " + the activation distance) + the neighbor skin " + skin
+                  : " (2 x the largest bounding radius " + R + " + the activation distance + the neighbor skin " + skin) +
+          "), but it is " + wiregrain::format_number(held) + ": set 'communicate single cutoff " +
+          wiregrain::format_number(std::ceil(1.25 * needed * 100.0) / 100.0) + "' or a smaller timestep");
+}
+
+// This rank's own grains (ascending tags) and its ghost grains, with the force and torque
+// averaged over the summed steps (the setup solve: the current ones) in velocity units;
+// each ghost's record comes from its owner (forward communication). A non-finite state
+// stops every rank with an ERROR naming the grain of the smallest tag that has one.
+std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
+  const double ftm2v = force->ftm2v;
+  rank_grains_->collect(groupbit);
+  const std::vector<int> &atoms = rank_grains_->atoms();
+  const int owned = rank_grains_->owned();
+  std::vector<double> records(std::size_t(atom->nlocal + atom->nghost) * kGhostRecord, 0.0);
+  for (int k = 0; k < owned; k++) {
+    const int i = atoms[k];
+    double *r = &records[std::size_t(i) * kGhostRecord];
+    r[0] = atom->shapetype[i];
+    for (int d = 0; d < 4; d++) r[1 + d] = atom->quaternion[i][d];
+    for (int d = 0; d < 3; d++) {
+      r[5 + d] = atom->v[i][d];
+      r[8 + d] = atom->omega[i][d];
+      r[11 + d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
+      r[14 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
+      r[18 + d] = atom->inertia[i][d];
+    }
+    r[17] = atom->rmass[i];
+  }
+  rank_grains_->copy_to_ghosts(records, kGhostRecord);
+  std::vector<wiregrain::GrainState> grains(atoms.size());
+  double bad_tag = INFINITY, bad_what = 0.0;  // the smallest tag with a non-finite state
+  for (size_t k = 0; k < atoms.size(); k++) {
+    const int i = atoms[k];
+    const double *r = &records[std::size_t(i) * kGhostRecord];
+    wiregrain::GrainState &g = grains[k];
+    g.tag = atom->tag[i];
+    g.shape = (int)r[0];
+    g.position = vec3(atom->x[i]);
+    g.orientation = Eigen::Quaterniond(r[1], r[2], r[3], r[4]);
+    g.velocity = vec3(r + 5);
+    g.angular_velocity = vec3(r + 8);
+    g.force = ftm2v * vec3(r + 11);
+    g.torque = ftm2v * vec3(r + 14);
+    g.mass = r[17];
+    g.inertia = vec3(r + 18);
+    const int what = !(g.position.allFinite() && g.orientation.coeffs().allFinite()) ? 1
+                     : !(g.velocity.allFinite() && g.angular_velocity.allFinite()) ? 2
+                     : !(g.force.allFinite() && g.torque.allFinite()) ? 3
+                                                                      : 0;
+    if (what == 0) g.orientation.normalize();
+    if (what != 0 && (int)k < owned && g.tag < bad_tag) {
+      bad_tag = (double)g.tag;
+      bad_what = what;
+    }
+  }
+  double bad[2] = {bad_tag, 0.0}, smallest[2];
+  MPI_Allreduce(bad, smallest, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (std::isfinite(smallest[0])) {
+    bad[1] = smallest[0] == bad_tag ? bad_what : 0.0;
+    MPI_Allreduce(&bad[1], &smallest[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    const char *what = smallest[1] == 1.0 ? "position or orientation"
+                       : smallest[1] == 2.0 ? "velocity"
+                                            : "force or torque (from another style)";
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
+                               "grain " + std::to_string((long)smallest[0]) + " has a non-finite " + what +
+                                   " at step " + std::to_string(update->ntimestep));
+  }
+  return grains;
+}
+
+// Every rank's warm starts (its own pairs'), for rank 0's restart record: kImpulseRecord
+// numbers per point. Collective.
+std::vector<double> FixNSCDPolyhedra::all_ranks_impulses() {
+  std::vector<double> mine;
+  for (const wiregrain::GrainImpulseMemory::Entry &e : core_->impulses.points()) {
+    const wiregrain::GrainImpulseMemory::Impulse &s = e.impulse;
+    const double record[kImpulseRecord] = {double(e.pair.first), double(e.pair.second),
+                                           s.position[0], s.position[1], s.position[2],
+                                           s.impulse[0], s.impulse[1], s.impulse[2],
+                                           s.normal[0], s.normal[1], s.normal[2],
+                                           s.gap, double(static_cast<int>(s.status)),
+                                           s.couple[0], s.couple[1], s.couple[2]};
+    mine.insert(mine.end(), record, record + kImpulseRecord);
+  }
+  return wiregrain_lmp::all_gather_records(world, mine);
+}
+
+int FixNSCDPolyhedra::pack_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/) {
+  return rank_grains_->pack_comm(n, list, buf);
+}
+
+void FixNSCDPolyhedra::unpack_comm(int n, int first, double *buf) { rank_grains_->unpack_comm(n, first, buf); }
+
+int FixNSCDPolyhedra::pack_reverse_comm(int n, int first, double *buf) {
+  return rank_grains_->pack_reverse_comm(n, first, buf);
+}
+
+void FixNSCDPolyhedra::unpack_reverse_comm(int n, int *list, double *buf) {
+  rank_grains_->unpack_reverse_comm(n, list, buf);
+}

@@ -1,0 +1,59 @@
+// fix nscd/polyhedra's state that its two source files share (fix_nscd_polyhedra.cpp, the
+// fix; fix_nscd_polyhedra_distributed.cpp, solve distributed): the core step's options,
+// walls, warm starts and pair cache, and the layouts of its per-grain records. Included by
+// those two files only (the style header is compiled without Eigen).
+#ifndef WIREGRAIN_FIX_NSCD_POLYHEDRA_STATE_H
+#define WIREGRAIN_FIX_NSCD_POLYHEDRA_STATE_H
+
+#include <memory>
+#include <vector>
+
+#include "fix_nscd_polyhedra.h"
+#include "nscd_plate.h"
+
+#include "core/contact/contact_list.h"
+#include "core/nscd/grain_step.h"
+
+namespace fix_nscd_polyhedra_layout {
+
+// per grain: its sleep state, asleep (0/1), quiet time, drift v (3), ω (3), checked load
+// impulse (3) and moment (3) (GrainState)
+constexpr int kSleepState = 14;
+// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
+constexpr int kGrainRecord = 25 + kSleepState;
+// per warm-start point in a distributed restart: pair (2), position, impulse, normal (9),
+// gap, status, couple (3)
+constexpr int kImpulseRecord = 16;
+// per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
+constexpr int kAtomRecord = 12 + kSleepState;
+// per grain sent to the ghosts in a distributed step: shape, q (4), v (3), ω (3), F (3), T (3), m, I (3)
+constexpr int kGhostRecord = 21;
+
+}  // namespace fix_nscd_polyhedra_layout
+
+// keyword skin's default (measured: docs/benchmarks.md, "The column's run time")
+constexpr double kDefaultPairSkin = 0.1;
+// keyword project's defaults: the overlap (relative to the pair's smaller bounding radius)
+// beyond which the end-of-step poses are projected, and the cap on the passes
+// (core/nscd/overlap_projection.h; docs/commands/fix_nscd_polyhedra.md, "Why the defaults")
+constexpr double kDefaultProjectTolerance = 5e-5;
+constexpr int kDefaultProjectPasses = 20;
+
+struct LAMMPS_NS::FixNSCDPolyhedra::CoreState {
+  wiregrain::GrainStepOptions options;
+  std::vector<wiregrain::PlaneWall> walls;
+  // per wall: its own 'wall_friction' given; the others take the grains' 'friction' (at
+  // init and on fix_modify friction), whatever the keyword order
+  std::vector<bool> own_wall_friction;
+  void walls_take_grain_friction() {
+    for (size_t w = 0; w < walls.size(); w++)
+      if (!own_wall_friction[w]) walls[w].friction = options.friction;
+  }
+  wiregrain::GrainImpulseMemory impulses;
+  double pair_skin = kDefaultPairSkin;               // keyword skin
+  std::unique_ptr<wiregrain::GrainPairCache> pairs;  // skin > 0
+  wiregrain::ContactList published;
+  wiregrain_lmp::NscdPlates plates;  // keyword plate (nscd_plate.h)
+};
+
+#endif

@@ -1,0 +1,266 @@
+"""fix nscd/polyhedra solve distributed: each rank steps the grain pairs it owns with its
+own and ghost grains. On one rank it is the replicated solve to the bit (Gauss-Seidel); a
+tall stack carries its weight exactly on 1 to 4 ranks (the stick solve by conjugate
+gradients over the ranks); one step of a pile from the same state finds the same contact
+points and velocities within the solver's tolerance on 1 to 4 ranks; a run continued from
+a restart file repeats the straight run on 2 ranks to the bit; what it does not carry
+stops with an ERROR."""
+
+import numpy as np
+
+from liggghts_run import (DeckTestCase, full_precision, grains_data, main, read_dump, read_local_dump, run)
+
+HEAD = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        {boundary}
+processors      {processors}
+"""
+
+
+def deck(body, boundary="f f f", processors="* * *"):
+    """A deck on grains.data and grains.shapes (grains_data) with `body` after them."""
+    return HEAD.format(boundary=boundary, processors=processors) + f"""grain_shapes    read grains.shapes
+read_data       grains.data
+{body}
+"""
+
+
+def random_pile(count, box, seed):
+    """grains.data and grains.shapes of `count` random grains (create_grains) in the lower
+    half of `box` (xlo xhi ylo yhi zlo zhi), kept apart."""
+    xlo, xhi, ylo, yhi, zlo, zhi = box
+    return run(f"""
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block {xlo} {xhi} {ylo} {yhi} {zlo} {zhi}
+create_box      1 box
+region          fill block {xlo} {xhi} {ylo} {yhi} {zlo + 0.5} {0.5 * (zlo + zhi)}
+create_grains   1 {count} random fill seed {seed}
+write_data      grains.data
+grain_shapes    write grains.shapes
+""")
+
+
+class OneRank(DeckTestCase):
+    # 30 random grains fall onto a frictional floor for 2000 steps with method
+    # gauss_seidel: solve distributed on one rank (its own grains, no ghosts, the same
+    # pairs in the same order, the sums over one worker) is the replicated solve to the
+    # last bit. Measured: identical.
+    def test_one_rank_is_the_replicated_solve(self):
+        made = random_pile(30, (-4, 4, -4, 4, 0, 10), 11)
+        self.assertRanCleanly(made)
+        states = {}
+        for mode in ("replicated", "distributed"):
+            text = full_precision(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-6 method gauss_seidel solve {mode} wall 0 0 0 0 0 1
+timestep        1e-3
+dump            d all custom 2000 dump.{mode} id x y z vx vy vz omegax omegay omegaz f_nscd[3]
+run             2000
+"""), "d")
+            r = run(text, workdir=made.workdir)
+            self.assertRanCleanly(r)
+            states[mode] = read_dump(made.path(f"dump.{mode}"))
+        a, b = states["replicated"], states["distributed"]
+        self.assertGreater(np.max(np.abs(a["f_nscd[3]"])), 0.0)  # in contact
+        for k in a:
+            np.testing.assert_array_equal(b[k], a[k], err_msg=k)
+
+
+class TallStack(DeckTestCase):
+    # 50 unit cubes (m = 1) stacked on a frictional floor, g = 1, the default solver
+    # (method subspace, tolerance 1e-4), the subdomains cutting the stack across (processors
+    # 1 1 *): on 1, 2, 3 and 4 ranks the floor carries 50 m g, interface k from the top k m
+    # g, and the top cube does not move, on every sample of 100 steps, with one sweep per
+    # step (the stick solve, conjugate gradients over the ranks, makes the step exact).
+    # Gauss-Seidel alone hits the sweep cap (1000) every step and leaves the floor 1e-3 off.
+    # Measured (2026-12-06): floor 2.0e-15, interfaces 7.8e-16 relative, the top moved
+    # 2.5e-12 at most (the stick solve's CG stops at 1e-12 of its right-hand side), at most
+    # 2 sweeps; held to 1e-12, 1e-12 and 1e-10.
+    N = 50
+
+    def test_stack_on_one_to_four_ranks(self):
+        n = self.N
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(n)], box=(-3, 3, -3, 3, -1, n + 2))
+        self.assertRanCleanly(made)
+        k = np.arange(1, n + 1)
+        for ranks in (1, 2, 3, 4):
+            r = run(full_precision(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.5 solve distributed wall 0 0 0 0 0 1
+timestep        1e-3
+variable        ztop equal bound(all,zmax)
+thermo_style    custom step f_nscd[9] f_nscd[1] f_nscd[6] v_ztop
+thermo_modify   format float %.17g
+thermo          10
+dump            d all custom 20 dump.{ranks} id z f_nscd[3]
+run             100
+""", processors="1 1 *"), "d"), workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            floor = np.max(np.abs(-t["nscd[9]"][1:] / n - 1.0))
+            top = np.max(np.abs(t["ztop"] - (n - 0.5)))
+            d = read_dump(r.path(f"dump.{ranks}"))
+            order = np.argsort(-d["z"])
+            interface = np.max(np.abs(np.cumsum(d["f_nscd[3]"][order]) / k - 1.0))
+            print(f"\n{n}-cube stack on {ranks} rank(s): floor {floor:.1e}, interfaces {interface:.1e}, top moved "
+                  f"{top:.1e}, sweeps {t['nscd[1]'].max():.0f}, capped steps {t['nscd[6]'][-1]:.0f}")
+            self.assertLess(floor, 1e-12)
+            self.assertLess(interface, 1e-12)
+            self.assertLess(top, 1e-10)
+            self.assertEqual(t["nscd[6]"][-1], 0)
+
+
+class PileStep(DeckTestCase):
+    # 120 random grains dropped onto a frictional floor for 4000 steps (replicated), the
+    # state written to a restart file; from it, one NSCD step (tolerance 1e-10) distributed
+    # on 1, 2, 3 and 4 ranks and replicated on 1: the detection finds the same contact
+    # points (pairs and points to round-off: the same pairs' manifolds computed from the
+    # same poses), and the solve the same velocities within its tolerance. Measured: the
+    # same 0 points, positions 0; velocities within 0 of the largest speed 0; held to 1e-12
+    # and 1e-7.
+    def test_one_step_on_one_to_four_ranks(self):
+        made = random_pile(120, (-6, 6, -6, 6, 0, 12), 23)
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra wall 0 0 0 0 0 1
+timestep        1e-3
+run             4000
+write_restart   pile.restart
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        step = """
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-10 max_iterations 100000 solve {mode} wall 0 0 0 0 0 1
+compute         cl all contact/local
+timestep        1e-3
+dump            d all custom 1 dump.{tag} id vx vy vz omegax omegay omegaz
+dump            dl all local 1 local.{tag} c_cl[1] c_cl[2] c_cl[3] c_cl[4] c_cl[5] c_cl[6]
+dump_modify     dl format "%g %g %g %.17g %.17g %.17g"
+run             1
+"""
+        runs = {}
+        for mode, ranks in (("replicated", 1), ("distributed", 1), ("distributed", 2), ("distributed", 3),
+                            ("distributed", 4)):
+            tag = f"{mode}{ranks}"
+            # (the subdomains split x and y: the pile lies across them)
+            text = full_precision(HEAD.format(boundary="f f f", processors="* * 1") + "read_restart pile.restart\n" +
+                                  step.format(mode=mode, tag=tag), "d")
+            r = run(text, workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            points = read_local_dump(made.path(f"local.{tag}"))
+            rows = np.column_stack([points[f"c_cl[{c}]"] for c in range(1, 7)])
+            rows = rows[np.lexsort(rows.T[::-1])]
+            runs[tag] = (read_dump(made.path(f"dump.{tag}")), rows)
+        reference, reference_rows = runs["replicated1"]
+        speed = max(np.max(np.abs(reference[c])) for c in ("vx", "vy", "vz"))
+        self.assertGreater(len(reference_rows), 200)  # a pile: grain-grain and floor points
+        for tag, (state, rows) in runs.items():
+            velocities = max(np.max(np.abs(state[c] - reference[c])) for c in
+                             ("vx", "vy", "vz", "omegax", "omegay", "omegaz"))
+            print(f"\n{tag}: {len(rows)} contact points (replicated {len(reference_rows)}), velocities within "
+                  f"{velocities:.1e} of the largest speed {speed:.2e}")
+            self.assertEqual(rows.shape, reference_rows.shape, tag)
+            np.testing.assert_array_equal(rows[:, :3], reference_rows[:, :3], err_msg=tag)
+            self.assertLess(np.max(np.abs(rows[:, 3:] - reference_rows[:, 3:])), 1e-12, tag)
+            self.assertLess(velocities, 5e-8 * speed, tag)
+
+
+class PeriodicRestart(DeckTestCase):
+    # 30 grains fall onto a frictional floor in a box periodic along x and y, launched
+    # sideways so that they cross the faces and the subdomain boundaries (2 ranks split x)
+    # while in contact: a run continued from a restart file written in the middle repeats
+    # the straight run to the bit on 2 ranks (the warm starts of both ranks are in the file,
+    # the ghosts are taken in tag order whatever LIGGGHTS' storage order). Measured: 0.
+    def test_restart_on_two_ranks(self):
+        made = run("""
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        p p f
+region          box block -4 4 -4 4 0 10
+create_box      1 box
+region          fill block -4 4 -4 4 1 5
+create_grains   1 30 random fill seed 11
+write_data      grains.data
+grain_shapes    write grains.shapes
+""")
+        self.assertRanCleanly(made)
+        body = """
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra tolerance 1e-6 solve distributed wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[3]
+thermo          100
+dump            d all custom 3000 {dump} id x y z ix iy vx vy vz omegax omegay omegaz
+"""
+        straight = full_precision(deck("velocity        all set 0.8 0.5 0.0\n" + body.format(dump="dump.a"), "p p f"),
+                                  "d") + "run 3000\n"
+        r = run(straight, workdir=made.workdir, np_ranks=2)
+        self.assertRanCleanly(r)
+        half = full_precision(deck("velocity        all set 0.8 0.5 0.0\n" + body.format(dump="dump.h"), "p p f"),
+                              "d") + "run 1500\nwrite_restart pile.restart\n"
+        self.assertRanCleanly(run(half, workdir=made.workdir, np_ranks=2))
+        rest = full_precision(HEAD.format(boundary="p p f", processors="* * *") + "read_restart pile.restart\n" +
+                              body.format(dump="dump.b"), "d") + "run 1500\n"
+        r = run(rest, workdir=made.workdir, np_ranks=2)
+        self.assertRanCleanly(r)
+        a, b = read_dump(made.path("dump.a")), read_dump(made.path("dump.b"))
+        wrapped = int(np.sum((a["ix"] != 0) | (a["iy"] != 0)))
+        print(f"\nperiodic pile on 2 ranks, distributed: {wrapped} grains wrapped, {r.thermo()['nscd[3]'][-1]:.0f} "
+              f"contact points at the end; restart against straight "
+              f"{max(np.max(np.abs(a[k] - b[k])) for k in a):.1e}")
+        self.assertGreater(wrapped, 5)
+        for k in a:
+            np.testing.assert_array_equal(b[k], a[k], err_msg=k)
+
+
+class Errors(DeckTestCase):
+    def setUp(self):
+        self.made = grains_data("cube 1.0", [(0.0, 0.0, 0.5, 1, 0, 0, 0), (0.0, 0.0, 1.5, 1, 0, 0, 0)],
+                                box=(-3, 3, -3, 3, -1, 10))
+        self.assertRanCleanly(self.made)
+
+    def stops(self, fix, message, extra=""):
+        r = run(deck(f"fix             nscd all nscd/polyhedra {fix} wall 0 0 0 0 0 1\n{extra}timestep 1e-3\nrun 1\n"),
+                workdir=self.made.workdir, np_ranks=2)
+        self.assertStopsWith(r, "ERROR: fix nscd/polyhedra (id nscd): " + message)
+
+    def test_what_it_does_not_carry(self):
+        self.stops("solve distributed sleep 0.01 0.5",
+                   "'solve distributed' does not take sleeping grains (keyword 'sleep'): use 'solve replicated'")
+        self.stops("solve distributed rolling_friction 0.1",
+                   "'solve distributed' does not take 'rolling_friction': use 'solve replicated'")
+        self.stops("solve distributed warm_geometry yes",
+                   "'solve distributed' does not take 'warm_geometry yes' (its GJK simplices are not in the restart "
+                   "file)")
+        self.stops("solve distributed write_problems 1 p*.txt",
+                   "'solve distributed' does not write the whole problem ('write_problems'): use 'solve replicated'")
+        self.stops("solve distributed", "'solve distributed' does not take sleeping grains (keyword 'sleep'): use "
+                   "'solve replicated'", extra="fix_modify      nscd sleep 0.01 0.5\n")
+        self.stops("solve parallel", "value of 'solve' must be replicated or distributed, got 'parallel'")
+
+    def test_ghosts_too_short_for_the_activation_distance(self):
+        # a cube launched at 500 against the other: the activation distance 4 h v = 2 asks
+        # for a ghost cutoff of 2 (sqrt(3)/2 + 2) + skin 0.3 (LIGGGHTS' default skin in lj
+        # units; atom_style polyhedron has a radius: LIGGGHTS' granular ghost shells, half
+        # the cutoff plus the atom's radius); the run start gave 2 (sqrt(3)/2 + 0.25 sqrt(3)/2)
+        # + 0.3
+        r = run(deck("fix             nscd all nscd/polyhedra solve distributed wall 0 0 0 0 0 1\n"
+                     "velocity        all set 0 0 -500\ntimestep 1e-3\nrun 1\n"), workdir=self.made.workdir, np_ranks=2)
+        radius = 3 ** 0.5 / 2
+        needed, held = 2 * (radius + 2.0) + 0.3, 2 * 1.25 * radius + 0.3
+        self.assertStopsWith(r, "ERROR: fix nscd/polyhedra (id nscd): solve distributed: step 0 has an activation "
+                                f"distance of 2 (4 h v_max + margin), so the ghost cutoff must be {needed:.12g} (2 x (the "
+                                f"largest bounding radius {radius:.12g} + the activation distance) + the neighbor skin "
+                                f"0.3), but it is {held:.12g}: set 'communicate single cutoff 7.55' or a smaller "
+                                "timestep")
+
+
+if __name__ == "__main__":
+    main()
