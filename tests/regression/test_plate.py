@@ -228,6 +228,8 @@ class PlateErrors(DeckTestCase):
         ("plate 1 spring 10 v_nope", "plate spring v_drive: variable 'nope' does not exist"),
         ("plate 1 load v_peratom", "plate load: variable 'peratom' is not equal-style"),
         ("plate 1 load v_infinite", "plate: variable 'infinite' is inf at step 0"),
+        ("plate 1 load 1 solve distributed", "'solve distributed' does not take a 'plate' (the plate would be a body of "
+         "every rank): use 'solve replicated'"),
     )
 
     def test_messages(self):
