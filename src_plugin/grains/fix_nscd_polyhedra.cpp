@@ -708,16 +708,12 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
     g.load_moment = vec3(r + 36);
   }
   // every rank holds the same grains, so error->all is safe here
-  for (const wiregrain::GrainState &g : grains) {
-    const char *what = !(g.position.allFinite() && g.orientation.coeffs().allFinite()) ? "position or orientation"
-                       : !(g.velocity.allFinite() && g.angular_velocity.allFinite()) ? "velocity"
-                       : !(g.force.allFinite() && g.torque.allFinite()) ? "force or torque (from another style)"
-                                                                        : nullptr;
-    if (what)
+  for (const wiregrain::GrainState &g : grains)
+    if (const int part = non_finite_part(g))
       wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
-                                 "grain " + std::to_string(g.tag) + " has a non-finite " + what + " at step " +
+                                 "grain " + std::to_string(g.tag) + " has a non-finite " + non_finite_words(part) +
+                                     " at step " +
                                      std::to_string(update->ntimestep));
-  }
   return grains;
 }
 

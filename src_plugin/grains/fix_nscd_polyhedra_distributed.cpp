@@ -132,14 +132,11 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
     g.torque = ftm2v * vec3(r + 14);
     g.mass = r[17];
     g.inertia = vec3(r + 18);
-    const int what = !(g.position.allFinite() && g.orientation.coeffs().allFinite()) ? 1
-                     : !(g.velocity.allFinite() && g.angular_velocity.allFinite()) ? 2
-                     : !(g.force.allFinite() && g.torque.allFinite()) ? 3
-                                                                      : 0;
-    if (what == 0) g.orientation.normalize();
-    if (what != 0 && (int)k < owned && g.tag < bad_tag) {
+    const int part = non_finite_part(g);
+    if (part == 0) g.orientation.normalize();
+    if (part != 0 && (int)k < owned && g.tag < bad_tag) {
       bad_tag = (double)g.tag;
-      bad_what = what;
+      bad_what = part;
     }
   }
   double bad[2] = {bad_tag, 0.0}, smallest[2];
@@ -147,11 +144,9 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
   if (std::isfinite(smallest[0])) {
     bad[1] = smallest[0] == bad_tag ? bad_what : 0.0;
     MPI_Allreduce(&bad[1], &smallest[1], 1, MPI_DOUBLE, MPI_MAX, world);
-    const char *what = smallest[1] == 1.0 ? "position or orientation"
-                       : smallest[1] == 2.0 ? "velocity"
-                                            : "force or torque (from another style)";
     wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id,
-                               "grain " + std::to_string((long)smallest[0]) + " has a non-finite " + what +
+                               "grain " + std::to_string((long)smallest[0]) + " has a non-finite " +
+                                   non_finite_words((int)smallest[1]) +
                                    " at step " + std::to_string(update->ntimestep));
   }
   return grains;

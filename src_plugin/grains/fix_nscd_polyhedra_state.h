@@ -39,6 +39,18 @@ constexpr double kDefaultPairSkin = 0.1;
 constexpr double kDefaultProjectTolerance = 5e-5;
 constexpr int kDefaultProjectPasses = 20;
 
+// What of a grain's state is not finite: 0 none, 1 its position or orientation, 2 its
+// velocity, 3 its force or torque; and the words of the ERROR that names it.
+inline int non_finite_part(const wiregrain::GrainState &g) {
+  if (!(g.position.allFinite() && g.orientation.coeffs().allFinite())) return 1;
+  if (!(g.velocity.allFinite() && g.angular_velocity.allFinite())) return 2;
+  if (!(g.force.allFinite() && g.torque.allFinite())) return 3;
+  return 0;
+}
+inline const char *non_finite_words(int part) {
+  return part == 1 ? "position or orientation" : part == 2 ? "velocity" : "force or torque (from another style)";
+}
+
 struct LAMMPS_NS::FixNSCDPolyhedra::CoreState {
   wiregrain::GrainStepOptions options;
   std::vector<wiregrain::PlaneWall> walls;

@@ -17,6 +17,7 @@
 #include "core/common/worker_exchange.h"
 #include "core/geometry/convex_shape.h"
 #include "core/nscd/grain_step.h"
+#include "grain_scenes.h"
 
 using namespace wiregrain;
 
@@ -107,23 +108,11 @@ class WorkerView : public WorkerExchange {
   std::vector<long> tags_;
 };
 
+// a unit cube of mass 1 under gravity
 GrainState cube(long tag, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero()) {
-  GrainState g;
-  g.tag = tag;
-  g.position = position;
-  g.velocity = velocity;
-  g.force = Eigen::Vector3d(0, 0, -kG);
-  g.mass = 1.0;
-  g.inertia = Eigen::Vector3d::Constant(1.0 / 6.0);
-  return g;
+  return test_scenes::unit_cube(tag, position, 1.0, kG, velocity);
 }
-
-PlaneWall floor_wall(double friction = 0.5) {
-  PlaneWall w;
-  w.normal = Eigen::Vector3d::UnitZ();
-  w.friction = friction;
-  return w;
-}
+using test_scenes::floor_wall;
 
 // Worker w's grains: those `owner` gives it (ascending tags), then copies of the others
 // within `reach` (centre distance) of one of them.
@@ -150,8 +139,7 @@ struct Owned {
 };
 std::map<long, Owned> distributed_step(const std::vector<GrainState>& all, const std::vector<int>& owner, int workers,
                                        const GrainStepOptions& options, std::vector<Eigen::Vector3d>* wall_forces = nullptr) {
-  ShapeLibrary library;
-  library.add(ConvexShape::cube(1.0, 0.0));
+  const ShapeLibrary library = test_scenes::unit_cube_library();
   ThreadedExchange exchange(workers);
   std::map<long, Owned> out;
   std::mutex out_mutex;
@@ -180,12 +168,7 @@ std::map<long, Owned> distributed_step(const std::vector<GrainState>& all, const
   return out;
 }
 
-GrainStepOptions tight() {
-  GrainStepOptions options;
-  options.solver.tolerance = 1e-12;
-  options.solver.max_iterations = 100000;
-  return options;
-}
+GrainStepOptions tight() { return test_scenes::tight_options(1e-12); }
 
 }  // namespace
 

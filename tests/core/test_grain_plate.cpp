@@ -8,6 +8,7 @@
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
 #include "core/nscd/grain_step.h"
+#include "grain_scenes.h"
 
 using namespace wiregrain;
 
@@ -15,29 +16,13 @@ namespace {
 
 constexpr double kG = 9.81, kMass = 2.0, kH = 1e-3;
 
-ShapeLibrary unit_cube_library() {
-  ShapeLibrary library;
-  library.add(ConvexShape::cube(1.0, 0.0));
-  return library;
-}
+using test_scenes::floor_wall;
+using test_scenes::unit_cube_library;
 
 // a unit cube (m = 2, I = m/6) at rest with its centre at height z, its weight m g along −z
 // when `weight`
 GrainState cube(long tag, double z, bool weight) {
-  GrainState g;
-  g.tag = tag;
-  g.position = Eigen::Vector3d(0, 0, z);
-  if (weight) g.force = Eigen::Vector3d(0, 0, -kMass * kG);
-  g.mass = kMass;
-  g.inertia = Eigen::Vector3d::Constant(kMass / 6.0);
-  return g;
-}
-
-PlaneWall floor_wall() {
-  PlaneWall w;
-  w.point = Eigen::Vector3d::Zero();
-  w.normal = Eigen::Vector3d::UnitZ();
-  return w;
+  return test_scenes::unit_cube(tag, Eigen::Vector3d(0, 0, z), kMass, weight ? kG : 0.0);
 }
 
 // a top plate at height z (normal −z, into the grains) of mass m_p
@@ -49,12 +34,7 @@ PlaneWall top_plate(double z, double mass) {
   return w;
 }
 
-GrainStepOptions tight() {
-  GrainStepOptions options;
-  options.solver.tolerance = 1e-15;
-  options.solver.max_iterations = 100000;
-  return options;
-}
+GrainStepOptions tight() { return test_scenes::tight_options(1e-15); }
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include "core/common/errors.h"
 #include "core/geometry/convex_shape.h"
 #include "core/nscd/grain_step.h"
+#include "grain_scenes.h"
 
 using namespace wiregrain;
 
@@ -16,36 +17,13 @@ namespace {
 
 constexpr double kG = 9.81, kMass = 2.0, kH = 1e-3;
 
-ShapeLibrary unit_cube_library() {
-  ShapeLibrary library;
-  library.add(ConvexShape::cube(1.0, 0.0));
-  return library;
-}
+using test_scenes::floor_wall;
+using test_scenes::unit_cube_library;
 
 // a unit cube (m = 2, I = m/6) at rest at height z under gravity g along −z
-GrainState resting_cube(long tag, double z) {
-  GrainState g;
-  g.tag = tag;
-  g.position = Eigen::Vector3d(0, 0, z);
-  g.force = Eigen::Vector3d(0, 0, -kMass * kG);
-  g.mass = kMass;
-  g.inertia = Eigen::Vector3d::Constant(kMass / 6.0);
-  return g;
-}
+GrainState resting_cube(long tag, double z) { return test_scenes::unit_cube(tag, Eigen::Vector3d(0, 0, z), kMass, kG); }
 
-PlaneWall floor_wall() {
-  PlaneWall w;
-  w.point = Eigen::Vector3d::Zero();
-  w.normal = Eigen::Vector3d::UnitZ();
-  return w;
-}
-
-GrainStepOptions tight() {
-  GrainStepOptions options;
-  options.solver.tolerance = 1e-15;
-  options.solver.max_iterations = 100000;
-  return options;
-}
+GrainStepOptions tight() { return test_scenes::tight_options(1e-15); }
 
 Eigen::Vector3d sum_of_forces(const ContactList& list, ContactKind kind, long a, long b) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();

@@ -9,6 +9,7 @@ stops with an ERROR."""
 import numpy as np
 
 from liggghts_run import (DeckTestCase, full_precision, grains_data, main, read_dump, read_local_dump, run)
+from test_periodic import periodic_pile
 
 HEAD = """
 units           lj
@@ -178,18 +179,7 @@ class PeriodicRestart(DeckTestCase):
     # the straight run to the bit on 2 ranks (the warm starts of both ranks are in the file,
     # the ghosts are taken in tag order whatever LIGGGHTS' storage order). Measured: 0.
     def test_restart_on_two_ranks(self):
-        made = run("""
-units           lj
-atom_style      polyhedron
-atom_modify     map array sort 0 0.0
-boundary        p p f
-region          box block -4 4 -4 4 0 10
-create_box      1 box
-region          fill block -4 4 -4 4 1 5
-create_grains   1 30 random fill seed 11
-write_data      grains.data
-grain_shapes    write grains.shapes
-""")
+        made = periodic_pile()
         self.assertRanCleanly(made)
         body = """
 fix             g all gravity 1.0 vector 0 0 -1
