@@ -10,6 +10,7 @@ import numpy as np
 
 from liggghts_run import (DeckTestCase, full_precision, grains_data, main, read_dump, read_local_dump, run)
 from test_periodic import periodic_pile
+import test_nscd
 
 HEAD = """
 units           lj
@@ -208,6 +209,14 @@ dump            d all custom 3000 {dump} id x y z ix iy vx vy vz omegax omegay o
         self.assertGreater(wrapped, 5)
         for k in a:
             np.testing.assert_array_equal(b[k], a[k], err_msg=k)
+
+
+class WireLoadedStack(test_nscd.WireLoadedStack):
+    # test_nscd's wire on three stacked cubes (fix wire/grain, the wire sub-cycled) with
+    # solve distributed on 2 ranks, the subdomains cutting the stack (LIGGGHTS splits the
+    # box's longest side, z): at rest the interfaces carry the cubes and the wire above them,
+    # the grains the whole wire, to the same tolerances as one rank's replicated solve.
+    SOLVE, RANKS = "solve distributed", 2
 
 
 class Errors(DeckTestCase):

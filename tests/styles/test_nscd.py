@@ -173,6 +173,8 @@ class WireLoadedStack(DeckTestCase):
     # 8.9e-16 (relative) off, i.e. the wire's share in each 2.6e-13 of m_w g off, the
     # beads' sum 2.4e-13 of m_w g; held to 3e-14 and 3e-12 (without the damping the wire
     # still moves after 10 time units and the interfaces are 9e-6 off).
+    SOLVE, RANKS = "", 1  # (test_distributed.py: the same with solve distributed on 2 ranks)
+
     def test_the_stack_carries_the_wire(self):
         made = wire_scene([(0, 0, 1.1 + 2.2 * k, 1, 0, 0, 0) for k in range(3)], ["loop 0 0 6.72 0.6 2 0.25"],
                           shape="cube 2", box=(-3, 3, -3, 3, -1, 9))
@@ -184,7 +186,7 @@ neigh_modify    delay 0
 fix             g all gravity {G} vector 0 0 -1
 fix             elastic wire wire/elastic
 fix             integr wire nve/gear scheme verlet
-fix             nscd grains nscd/polyhedra timestep 2e-3 wall 0 0 0 0 0 1
+fix             nscd grains nscd/polyhedra timestep 2e-3 {self.SOLVE} wall 0 0 0 0 0 1
 fix             wg wire wire/grain grains
 fix             calm wire viscous 0.02
 timestep        1e-3
@@ -194,7 +196,7 @@ thermo_modify   format float %.17g norm no
 thermo          2000
 dump            d all custom 20000 dump.s id type mass z f_nscd[3] f_wg[3]
 run             20000
-"""), "d"), workdir=made.workdir)
+"""), "d"), workdir=made.workdir, np_ranks=self.RANKS)
         self.assertRanCleanly(r)
         t = r.thermo()
         d = read_dump(r.path("dump.s"))
