@@ -211,6 +211,34 @@ dump            d all custom 3000 {dump} id x y z ix iy vx vy vz omegax omegay o
             np.testing.assert_array_equal(b[k], a[k], err_msg=k)
 
 
+class GrainWiderThanASubdomain(DeckTestCase):
+    # Two cubes of edge 3 (m = 27, bounding radius 2.6) stacked off-axis on the floor, on 4
+    # ranks splitting x into subdomains 2 wide, narrower than a grain (LIGGGHTS' ghosts then
+    # reach across several subdomains): at rest the floor carries 2 m g and each cube's
+    # contact force is m g upwards. Measured: floor and forces exact (54, 27).
+    def test_grain_wider_than_a_subdomain(self):
+        made = grains_data("cube 3.0", [(0.0, 0.0, 1.5, 1, 0, 0, 0), (0.7, 0.3, 4.5, 1, 0, 0, 0)],
+                           box=(-4, 4, -4, 4, -1, 10))
+        self.assertRanCleanly(made)
+        r = run(full_precision(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra solve distributed wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[9]
+thermo_modify   format float %.17g
+thermo          20
+dump            d all custom 100 dump.big id f_nscd[1] f_nscd[2] f_nscd[3]
+run             100
+""", processors="4 1 1"), "d"), workdir=made.workdir, np_ranks=4)
+        self.assertRanCleanly(r)
+        floor = -r.thermo()["nscd[9]"][1:]
+        d = read_dump(r.path("dump.big"))
+        print(f"\ncubes of edge 3 on 4 subdomains 2 wide: floor {floor[-1]:.17g} (54), contact forces z {d['f_nscd[3]']}")
+        np.testing.assert_allclose(floor, 54.0, rtol=1e-14)
+        np.testing.assert_allclose(d["f_nscd[3]"], 27.0, rtol=1e-14)
+        self.assertLess(max(np.max(np.abs(d["f_nscd[1]"])), np.max(np.abs(d["f_nscd[2]"]))), 1e-12)
+
+
 class WireLoadedStack(test_nscd.WireLoadedStack):
     # test_nscd's wire on three stacked cubes (fix wire/grain, the wire sub-cycled) with
     # solve distributed on 2 ranks, the subdomains cutting the stack (LIGGGHTS splits the
