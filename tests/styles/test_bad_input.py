@@ -13,7 +13,7 @@ NSCD_KEYWORDS = ", ".join([
     "friction", "rolling_friction", "damping", "restitution", "theta", "every", "timestep", "tolerance",
     "max_iterations", "convergence", "method", "order", "seed", "freeze", "subspace_regularization",
     "subspace_closing", "warm_start", "warm_geometry", "overlap_recovery", "overlap_speed", "project",
-    "project_passes", "margin", "skin", "detection", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
+    "project_passes", "margin", "skin", "detection", "solve", "manifold", "sleep", "wall", "wall_fix", "wall_friction",
     "wall_velocity", "plate", "write_problems"])
 
 
