@@ -660,6 +660,23 @@ void FixNSCDPolyhedra::solve_failed(const std::exception &e) {
   throw;  // not reached: style_error stops the run
 }
 
+// The state record of grain i (kStateRecord numbers, fix_nscd_polyhedra_state.h), its force
+// and torque averaged over the summed steps (the setup solve: the current ones).
+void FixNSCDPolyhedra::write_grain_record(int i, double *r) const {
+  r[0] = double(atom->tag[i]);
+  r[1] = double(atom->shapetype[i]);
+  for (int d = 0; d < 4; d++) r[5 + d] = atom->quaternion[i][d];
+  for (int d = 0; d < 3; d++) {
+    r[2 + d] = atom->x[i][d];
+    r[9 + d] = atom->v[i][d];
+    r[12 + d] = atom->omega[i][d];
+    r[15 + d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
+    r[18 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
+    r[22 + d] = atom->inertia[i][d];
+  }
+  r[21] = atom->rmass[i];
+}
+
 // Every rank gathers every grain of the group, in tag order, with the force and torque
 // averaged over the summed steps (the setup solve: the current ones), in velocity units
 // (F ftm2v, T ftm2v). A non-finite state stops with an ERROR naming the grain.
@@ -668,18 +685,9 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    double load[6];
-    for (int d = 0; d < 3; d++) {
-      load[d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
-      load[3 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
-    }
-    const double record[25] = {
-        double(atom->tag[i]), double(atom->shapetype[i]), atom->x[i][0], atom->x[i][1], atom->x[i][2],
-        atom->quaternion[i][0], atom->quaternion[i][1], atom->quaternion[i][2], atom->quaternion[i][3],
-        atom->v[i][0], atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1], atom->omega[i][2],
-        load[0], load[1], load[2], load[3], load[4], load[5],
-        atom->rmass[i], atom->inertia[i][0], atom->inertia[i][1], atom->inertia[i][2]};
-    mine.insert(mine.end(), record, record + 25);
+    double record[kStateRecord];
+    write_grain_record(i, record);
+    mine.insert(mine.end(), record, record + kStateRecord);
     mine.insert(mine.end(), sleep_state_[i], sleep_state_[i] + kSleepState);
   }
   const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
@@ -690,16 +698,8 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::gather_grains() {
   for (size_t k = 0; k < grains.size(); k++) {
     const double *r = &all[by_tag[k] * kGrainRecord];
     wiregrain::GrainState &g = grains[k];
-    g.tag = (long)r[0];
-    g.shape = (int)r[1];
-    g.position = vec3(r + 2);
-    g.orientation = Eigen::Quaterniond(r[5], r[6], r[7], r[8]).normalized();
-    g.velocity = vec3(r + 9);
-    g.angular_velocity = vec3(r + 12);
-    g.force = ftm2v * vec3(r + 15);
-    g.torque = ftm2v * vec3(r + 18);
-    g.mass = r[21];
-    g.inertia = vec3(r + 22);
+    g = grain_from_record(r, ftm2v);
+    g.orientation.normalize();
     g.asleep = r[25] != 0.0;
     g.quiet_time = r[26];
     g.drift = vec3(r + 27);

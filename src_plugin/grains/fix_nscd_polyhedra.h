@@ -204,6 +204,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double largest_bounding_radius() const;
   void sync_wall_fixes();
   std::vector<wiregrain::GrainState> gather_grains();
+  void write_grain_record(int i, double *record) const;
   // solve distributed (fix_nscd_polyhedra_distributed.cpp): this rank's own grains and
   // ghost grains, the checks of the ghost cutoff, the restart's warm starts of all ranks
   std::vector<wiregrain::GrainState> rank_grains();

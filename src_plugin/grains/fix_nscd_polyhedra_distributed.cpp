@@ -100,38 +100,15 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
   rank_grains_->collect(groupbit);
   const std::vector<int> &atoms = rank_grains_->atoms();
   const int owned = rank_grains_->owned();
-  std::vector<double> records(std::size_t(atom->nlocal + atom->nghost) * kGhostRecord, 0.0);
-  for (int k = 0; k < owned; k++) {
-    const int i = atoms[k];
-    double *r = &records[std::size_t(i) * kGhostRecord];
-    r[0] = atom->shapetype[i];
-    for (int d = 0; d < 4; d++) r[1 + d] = atom->quaternion[i][d];
-    for (int d = 0; d < 3; d++) {
-      r[5 + d] = atom->v[i][d];
-      r[8 + d] = atom->omega[i][d];
-      r[11 + d] = summed_steps_ > 0 ? force_sum_[i][d] / summed_steps_ : atom->f[i][d];
-      r[14 + d] = summed_steps_ > 0 ? force_sum_[i][3 + d] / summed_steps_ : atom->torque[i][d];
-      r[18 + d] = atom->inertia[i][d];
-    }
-    r[17] = atom->rmass[i];
-  }
-  rank_grains_->copy_to_ghosts(records, kGhostRecord);
+  std::vector<double> records(std::size_t(atom->nlocal + atom->nghost) * kStateRecord, 0.0);
+  for (int k = 0; k < owned; k++) write_grain_record(atoms[k], &records[std::size_t(atoms[k]) * kStateRecord]);
+  rank_grains_->copy_to_ghosts(records, kStateRecord);
   std::vector<wiregrain::GrainState> grains(atoms.size());
   double bad_tag = INFINITY, bad_what = 0.0;  // the smallest tag with a non-finite state
   for (size_t k = 0; k < atoms.size(); k++) {
     const int i = atoms[k];
-    const double *r = &records[std::size_t(i) * kGhostRecord];
-    wiregrain::GrainState &g = grains[k];
-    g.tag = atom->tag[i];
-    g.shape = (int)r[0];
-    g.position = vec3(atom->x[i]);
-    g.orientation = Eigen::Quaterniond(r[1], r[2], r[3], r[4]);
-    g.velocity = vec3(r + 5);
-    g.angular_velocity = vec3(r + 8);
-    g.force = ftm2v * vec3(r + 11);
-    g.torque = ftm2v * vec3(r + 14);
-    g.mass = r[17];
-    g.inertia = vec3(r + 18);
+    wiregrain::GrainState &g = grains[k] = grain_from_record(&records[std::size_t(i) * kStateRecord], ftm2v);
+    g.position = vec3(atom->x[i]);  // (a ghost: its image's position)
     const int part = non_finite_part(g);
     if (part == 0) g.orientation.normalize();
     if (part != 0 && (int)k < owned && g.tag < bad_tag) {

@@ -19,15 +19,15 @@ namespace fix_nscd_polyhedra_layout {
 // per grain: its sleep state, asleep (0/1), quiet time, drift v (3), ω (3), checked load
 // impulse (3) and moment (3) (GrainState)
 constexpr int kSleepState = 14;
-// per grain in the all-gather: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3), sleep state
-constexpr int kGrainRecord = 25 + kSleepState;
+// per grain, its state: tag shape x(3) q(4) v(3) ω(3) F(3) T(3) m I(3) (F, T in force units)
+constexpr int kStateRecord = 25;
+// per grain in the all-gather: the state, the sleep state
+constexpr int kGrainRecord = kStateRecord + kSleepState;
 // per warm-start point in a distributed restart: pair (2), position, impulse, normal (9),
 // gap, status, couple (3)
 constexpr int kImpulseRecord = 16;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
 constexpr int kAtomRecord = 12 + kSleepState;
-// per grain sent to the ghosts in a distributed step: shape, q (4), v (3), ω (3), F (3), T (3), m, I (3)
-constexpr int kGhostRecord = 21;
 
 }  // namespace fix_nscd_polyhedra_layout
 
@@ -38,6 +38,23 @@ constexpr double kDefaultPairSkin = 0.1;
 // (core/nscd/overlap_projection.h; docs/commands/fix_nscd_polyhedra.md, "Why the defaults")
 constexpr double kDefaultProjectTolerance = 5e-5;
 constexpr int kDefaultProjectPasses = 20;
+
+// The grain of a state record (kStateRecord numbers), F and T times ftm2v (velocity units);
+// its orientation as recorded.
+inline wiregrain::GrainState grain_from_record(const double *r, double ftm2v) {
+  wiregrain::GrainState g;
+  g.tag = (long)r[0];
+  g.shape = (int)r[1];
+  g.position = Eigen::Vector3d(r[2], r[3], r[4]);
+  g.orientation = Eigen::Quaterniond(r[5], r[6], r[7], r[8]);
+  g.velocity = Eigen::Vector3d(r[9], r[10], r[11]);
+  g.angular_velocity = Eigen::Vector3d(r[12], r[13], r[14]);
+  g.force = ftm2v * Eigen::Vector3d(r[15], r[16], r[17]);
+  g.torque = ftm2v * Eigen::Vector3d(r[18], r[19], r[20]);
+  g.mass = r[21];
+  g.inertia = Eigen::Vector3d(r[22], r[23], r[24]);
+  return g;
+}
 
 // What of a grain's state is not finite: 0 none, 1 its position or orientation, 2 its
 // velocity, 3 its force or torque; and the words of the ERROR that names it.

@@ -25,7 +25,7 @@ class RankGrains : public wiregrain::WorkerExchange {
  public:
   // the largest number of values per atom any exchange here sends (the fix's
   // comm_forward and comm_reverse)
-  static constexpr int kMaxWidth = 24;
+  static constexpr int kMaxWidth = 25;
 
   RankGrains(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix);
 
