@@ -41,12 +41,16 @@
    v_sleep (|v| + |ω| R) for t_sleep are held and drop out of detection and solve among
    themselves until something moves them (core/nscd/grain_step.h, "Sleeping").
 
-   MPI: every rank gathers all grains of the group, solves the same contact problem in
-   the same order and keeps its own grains' results (replicated solve), so 1 and N ranks
-   give the same state to the last bit; the cost of the solve does not shrink with more
-   ranks. The contact detection is shared (detection shared, the default): each rank
+   MPI, solve replicated (the default): every rank gathers all grains of the group, solves
+   the same contact problem in the same order and keeps its own grains' results, so 1 and
+   N ranks give the same state to the last bit; the cost of the solve does not shrink with
+   more ranks. The contact detection is shared (detection shared, the default): each rank
    computes the contact points of a block of the candidate pairs and the blocks are
    all-gathered, the same points to the bit; detection replicated: every rank computes all.
+   solve distributed (fix_nscd_polyhedra_distributed.cpp, grains/rank_grains.h): each rank
+   steps the pairs of its own grains with LIGGGHTS' ghost grains, nothing gathered
+   (core/nscd/grain_step.h, GrainPartition); the answer agrees with the replicated one
+   within the solver's tolerance.
 
    Periodic boundaries (boundary p, orthogonal box): every grain pair is taken in its
    minimum image (core/geometry/periodic_box.h); the walls must be parallel to the
