@@ -113,6 +113,27 @@ run             1000
         self.assertLess(abs(t["nscd[32]"][row] - k * h * a), 1e-15 * k * h * a)
         self.assertLess(abs(t["nscd[31]"][row] - h * h * a * k * (k + 1) / 2), 1e-15 * h * h * a * k * (k + 1) / 2)
 
+    def test_two_ranks_repeat_one_rank_to_the_bit(self):
+        # the replicated solve with the plate on 2 ranks, the subdomains cutting the stack
+        # (processors 1 1 *): the grains' state, their stresses and the plate's travel,
+        # velocity and forces are one rank's to the last bit. Measured: identical.
+        self.assertRanCleanly(self.result)
+        text = full_precision(deck(f"plate 2.0 load {self.F}", 3.005, """
+thermo_style    custom step f_nscd[12] f_nscd[31] f_nscd[32] f_nscd[33] f_nscd[34]
+thermo_modify   format float %.17g
+thermo          10
+dump            d grains custom 1000 grains2.dump id z vx vy vz c_stress[3]
+run             1000
+""").replace("read_data", "processors      1 1 *\nread_data", 1), "d")
+        two = run(text, workdir=self.made.workdir, np_ranks=2)
+        self.assertRanCleanly(two)
+        one, other = read_dump(self.result.path("grains.dump")), read_dump(two.path("grains2.dump"))
+        for k in one:
+            np.testing.assert_array_equal(other[k], one[k], err_msg=k)
+        t1, t2 = self.result.thermo(), two.thermo()
+        for k in ("nscd[12]", "nscd[31]", "nscd[32]", "nscd[33]", "nscd[34]"):
+            np.testing.assert_array_equal(t2[k], t1[k], err_msg=k)
+
     def test_plate_and_interfaces_carry_the_statics(self):
         self.assertRanCleanly(self.result)
         t = self.result.thermo()
