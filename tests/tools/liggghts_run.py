@@ -6,6 +6,7 @@ WIREGRAIN_DECK_TIMEOUT (seconds one liggghts run may take; the sanitized tests s
 import math
 import os
 import re
+import shutil
 import subprocess
 import tempfile
 import unittest
@@ -105,13 +106,20 @@ def deck_box(style, xy, z, types):
                                f"create_box      {types} box\n")
 
 
+_created_grains = {}  # (shape, count, density, sweep, box) -> the create_grains run
+
+
 def grains_data(shape, poses, density=1.0, sweep=0.0, box=(-30, 30, -30, 30, -1, 60)):
     """Run create_grains for len(poses) grains of one fixed shape (e.g. "cube 1") and
     rewrite the data file with the given poses [(x, y, z, qw, qi, qj, qk), ...].
     Returns the run (its workdir holds grains.data and grains.shapes). A sphere ("sphere R")
-    takes no sweep (its radius is its sweep radius)."""
-    sweep_words = "" if shape.startswith("sphere") else f" sweep {sweep}"
-    made = run(f"""
+    takes no sweep (its radius is its sweep radius). The grains of one (shape, count,
+    density, sweep, box) are created once per test process and copied into a fresh
+    directory for every call, so a caller may rewrite its files."""
+    key = (shape, len(poses), density, sweep, tuple(box))
+    if key not in _created_grains:
+        sweep_words = "" if shape.startswith("sphere") else f" sweep {sweep}"
+        _created_grains[key] = run(f"""
 units lj
 atom_style polyhedron
 atom_modify map array sort 0 0.0
@@ -122,6 +130,13 @@ create_grains 1 {len(poses)} random box seed 7 shape {shape}{sweep_words} densit
 write_data grains.data
 grain_shapes write grains.shapes
 """)
+    created = _created_grains[key]
+    made = Run(created.returncode, created.output, tempfile.mkdtemp(prefix="wiregrain-"))
+    for name in ("grains.data", "grains.shapes"):
+        if os.path.exists(created.path(name)):
+            shutil.copy(created.path(name), made.path(name))
+    if created.returncode != 0:
+        return made
     with open(made.path("grains.data")) as f:
         lines = f.read().splitlines()
     k = next(i for i, line in enumerate(lines) if line.startswith("Atoms")) + 2
