@@ -52,8 +52,10 @@ constexpr double kLargeOverlapOfSweep = 0.5;
 constexpr double kSharpReferenceOfBounding = 0.1;
 
 // the first number of the fix's global restart data (older builds wrote 0 or 1 there);
-// -2: points without rolling couples, -3: without the pair cache; both still read
-constexpr double kRestartLayout = -4.0;               // + the pair cache
+// -2: points without rolling couples, -3: without the pair cache, -4: without the plates;
+// all still read
+constexpr double kRestartLayout = -5.0;               // + the plates
+constexpr double kRestartLayoutWithoutPlates = -4.0;
 constexpr double kRestartLayoutWithoutCache = -3.0;
 constexpr double kRestartLayoutWithoutCouples = -2.0;
 
@@ -963,7 +965,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
 // pending move and its h), the wall positions, the warm-start impulses (with each point's
 // normal, gap and status: frozen points; and its rolling couple), the stick-solve backoff
 // and the pair cache (its kept pairs' GJK simplices are warm starts: without them the
-// continued run would differ from the straight one in the last bits)
+// continued run would differ from the straight one in the last bits), the plates' state
 void FixNSCDPolyhedra::write_restart(FILE *fp) {
   // distributed: each rank holds its own pairs' warm starts, rank 0 writes them all
   const std::vector<double> all_impulses = distributed_ ? all_ranks_impulses() : std::vector<double>();
@@ -1013,6 +1015,8 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
       core_->pairs && !distributed_ ? core_->pairs->serialize() : std::vector<double>();
   data.push_back(double(cache.size()));  // 0: no cache
   data.insert(data.end(), cache.begin(), cache.end());
+  const std::vector<double> plates = core_->plates.state();
+  data.insert(data.end(), plates.begin(), plates.end());
   const int size = (int)(data.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(data.data(), sizeof(double), data.size(), fp);
@@ -1020,7 +1024,7 @@ void FixNSCDPolyhedra::write_restart(FILE *fp) {
 
 void FixNSCDPolyhedra::restart(char *buf) {
   const double *d = reinterpret_cast<const double *>(buf);
-  if (d[0] != kRestartLayout && d[0] != kRestartLayoutWithoutCache &&
+  if (d[0] != kRestartLayout && d[0] != kRestartLayoutWithoutPlates && d[0] != kRestartLayoutWithoutCache &&
       d[0] != kRestartLayoutWithoutCouples) {  // a file of a build before sleeping
     if (comm->me == 0)
       error->warning(FLERR, ("fix nscd/polyhedra (id " + std::string(id) +
@@ -1055,12 +1059,13 @@ void FixNSCDPolyhedra::restart(char *buf) {
   core_->impulses.commit();
   core_->impulses.backoff.skip = (int)d[k++];
   core_->impulses.backoff.wait = (int)d[k++];
-  const size_t cache_numbers = d[0] == kRestartLayout ? (size_t)d[k++] : 0;
-  if (cache_numbers > 0 && core_->pairs) {
-    try {
-      core_->pairs->restore(d + k, cache_numbers);
-    } catch (const std::exception &e) {
-      wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, std::string("restart file: ") + e.what());
-    }
+  const bool has_cache = d[0] == kRestartLayout || d[0] == kRestartLayoutWithoutPlates;
+  const size_t cache_numbers = has_cache ? (size_t)d[k++] : 0;
+  try {
+    if (cache_numbers > 0 && core_->pairs) core_->pairs->restore(d + k, cache_numbers);
+    k += cache_numbers;
+    if (d[0] == kRestartLayout) core_->plates.restore(d + k);
+  } catch (const std::exception &e) {
+    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, std::string("restart file: ") + e.what());
   }
 }

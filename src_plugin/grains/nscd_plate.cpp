@@ -72,7 +72,46 @@ void NscdPlates::init(LAMMPS_NS::LAMMPS* lmp, const std::string& id, const std::
       style_error(lmp->error, "fix", "nscd/polyhedra", id_, "plate: wall_fix " + p.wall_fix + " is not a fix wire/wall");
     resolve(lmp, p.load, "load");
     resolve(lmp, p.drive, "spring v_drive");
+    if (p.restored) {  // the plane where its fix's restart put it, moving as it was
+      double point[3];
+      p.plane->current_point(point);
+      p.plane->move_plane(point, p.plane_velocity);
+      p.restored = false;
+    }
   }
+}
+
+std::vector<double> NscdPlates::state() const {
+  std::vector<double> data = {double(plates_.size())};
+  for (const Plate& p : plates_) {
+    const double* v = p.plane ? p.plane->velocity() : p.plane_velocity;
+    const double record[kStateNumbers] = {double(p.wall), p.started ? 1.0 : 0.0, p.velocity, p.travel,
+                                          p.drive_travel, p.wire_sum[0], p.wire_sum[1], p.wire_sum[2],
+                                          double(p.wire_steps), p.grains_force, p.drive_force, v[0], v[1], v[2]};
+    data.insert(data.end(), record, record + kStateNumbers);
+  }
+  return data;
+}
+
+size_t NscdPlates::restore(const double* data) {
+  const size_t plates = (size_t)data[0];
+  for (size_t k = 0; k < plates; k++) {
+    const double* r = data + 1 + k * kStateNumbers;
+    for (Plate& p : plates_) {
+      if (p.wall != (size_t)r[0]) continue;
+      p.started = r[1] != 0.0;
+      p.velocity = r[2];
+      p.travel = r[3];
+      p.drive_travel = r[4];
+      for (int d = 0; d < 3; d++) p.wire_sum[d] = r[5 + d];
+      p.wire_steps = (int)r[8];
+      p.grains_force = r[9];
+      p.drive_force = r[10];
+      for (int d = 0; d < 3; d++) p.plane_velocity[d] = r[11 + d];
+      p.restored = true;
+    }
+  }
+  return 1 + plates * kStateNumbers;
 }
 
 double NscdPlates::evaluate(LAMMPS_NS::LAMMPS* lmp, const Value& value) const {

@@ -24,8 +24,11 @@
    velocity v (both along n), the grains' force on it along −n (positive: pushing it
    back) and the drive force along n (F, or the spring's k (d − s)).
 
-   The plate's state (v, s, d) is not in the restart file: a run from a restart starts the
-   plate at the wire/wall plane's velocity with an unstretched spring. */
+   Restart: the fix's restart data hold each plate's state (v, s, d, the beads' force summed
+   since the last solve, the outputs and the plane's velocity), keyed by its wall's index:
+   a run continued from a restart file moves the plate as the straight run does (to the
+   bit when the fix solves every step). A plate on a wall that had none when the file was
+   written starts afresh, at the plane's velocity with an unstretched spring. */
 
 #ifndef WIREGRAIN_NSCD_PLATE_H
 #define WIREGRAIN_NSCD_PLATE_H
@@ -61,6 +64,12 @@ class NscdPlates {
   // after it: the plates' new state, their planes moved
   void advance(const std::vector<wiregrain::PlaneWall>& walls, const wiregrain::GrainStepResult& result, double h,
                double theta);
+  // restart data: the plate count, then kStateNumbers per plate (its wall index first);
+  // restore reads them onto the plates of the same walls (their planes set moving at init)
+  // and returns how many numbers it read
+  std::vector<double> state() const;
+  size_t restore(const double* data);
+  static constexpr int kStateNumbers = 14;
 
  private:
   // a number, or an equal-style variable (v_name)
@@ -85,6 +94,8 @@ class NscdPlates {
     int wire_steps = 0;
     double next_drive = 0.0;  // d_{k+1} of the solve under way
     double grains_force = 0.0, drive_force = 0.0;
+    bool restored = false;                            // from a restart: its plane set at init
+    double plane_velocity[3] = {0.0, 0.0, 0.0};       // the restart's plane velocity
   };
   std::vector<Plate> plates_;
   std::string id_;

@@ -230,6 +230,88 @@ run             {cls.STEPS}
         self.assertGreater(crushed, 1e6 * bound)
 
 
+class FreeSpringOscillation(DeckTestCase):
+    # A plate (m_p = 1) on a spring k = 100 whose drive point stands still (v_drive 0),
+    # started at v0 = 0.5 towards the grains (its fix wire/wall's velocity) 2 above the
+    # stack, which it never reaches (amplitude v0/ω = 0.05): a free oscillator of ω = 10.
+    # With θ = 1 the plate's step is backward Euler on s and v (nscd_plate.h):
+    #     s_{n+1} = s_n + h v_{n+1},   m_p (v_{n+1} − v_n) = −h k s_{n+1},
+    # so u = v + iωs obeys u_{n+1} = u_n / (1 − iωh): u_n = v0 (1 − iωh)^(−n), a spiral that
+    # keeps the period 2π/ω to O(h²) and loses amplitude by (1 + ω²h²)^(−1/2) per step
+    # (backward Euler's damping). The thermo row of step n follows the (n + 1)-th solve.
+    # Measured over 3000 steps (4.8 periods): s and v within 2.5e-15 and 2.4e-15 of the
+    # closed form relative to the amplitudes, the spring's force k (d − s) exact; held to
+    # 1e-13 (the plate's mass 1 % off, m_p + 1.01 h² k, gives 1.2e-5). The amplitude after
+    # 3000 steps is 0.8607 of v0/ω (the exact oscillator's would stay 1).
+    M, K, V0, STEPS, H = 1.0, 100.0, 0.5, 3000, 1e-3
+
+    def test_plate_follows_the_discrete_oscillator(self):
+        made = stack()
+        text = deck(f"plate {self.M} spring {self.K} 0", 5.0, f"""
+thermo_style    custom step f_nscd[31] f_nscd[32] f_nscd[34]
+thermo_modify   format float %.17g
+thermo          10
+run             {self.STEPS}
+""").replace("0 0 5.0 0 0 -1", f"0 0 5.0 0 0 -1 velocity 0 0 -{self.V0}")
+        r = run(text, workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        omega = np.sqrt(self.K / self.M)
+        u = self.V0 * (1 - 1j * omega * self.H) ** (-(t["Step"] + 1))
+        amplitude = self.V0 / omega
+        s_error = np.max(np.abs(t["nscd[31]"] - u.imag / omega)) / amplitude
+        v_error = np.max(np.abs(t["nscd[32]"] - u.real)) / self.V0
+        drive_error = np.max(np.abs(t["nscd[34]"] + self.K * t["nscd[31]"])) / (self.K * amplitude)
+        kept = abs(u[-1]) / self.V0
+        print(f"\nfree spring plate over {self.STEPS} steps: s off by {s_error:.1e}, v by {v_error:.1e} (of the "
+              f"amplitudes), spring force by {drive_error:.1e}; amplitude kept {kept:.4f}")
+        self.assertLess(s_error, 1e-13)
+        self.assertLess(v_error, 1e-13)
+        self.assertLess(drive_error, 1e-13)
+        # it did oscillate: a full swing each way
+        self.assertGreater(np.max(t["nscd[31]"]), 0.8 * amplitude)
+        self.assertLess(np.min(t["nscd[31]"]), -0.8 * amplitude)
+
+
+class RestartOfAPlate(DeckTestCase):
+    # The plate's state is in the fix's restart data: a spring plate driven down onto the
+    # stack (k = 100, v_drive 0.5, from 0.002 above it) for 300 steps, written to a restart
+    # file at step 150 and continued from it, repeats the straight run to the bit: the
+    # grains, the plate's travel, velocity and forces. Without the plate's state the
+    # continued plate starts at rest with an unstretched spring: its travel at step 300 is
+    # 1e-15 instead of 0.002, and the stack carries 7.5 instead of 14.85.
+    BODY = """
+thermo_style    custom step f_nscd[31] f_nscd[32] f_nscd[33] f_nscd[34]
+thermo_modify   format float %.17g
+thermo          10
+dump            d grains custom 300 {dump} id x y z vx vy vz
+"""
+
+    def test_continued_run_repeats_the_straight_one(self):
+        made = stack()
+        plate = "plate 1.0 spring 100 0.5"
+        straight = run(full_precision(deck(plate, 3.002, self.BODY.format(dump="straight.dump") + "run 300\n"), "d"),
+                       workdir=made.workdir)
+        first = run(deck(plate, 3.002, "run 150\nwrite_restart   plate.restart\n"), workdir=made.workdir)
+        for r in (straight, first):
+            self.assertRanCleanly(r)
+        text = deck(plate, 3.002, self.BODY.format(dump="continued.dump") + "run 150\n")
+        text = text.replace("grain_shapes    read scene.shapes\nread_data       scene.data\n",
+                            "read_restart    plate.restart\n")
+        continued = run(full_precision(text, "d"), workdir=made.workdir)
+        self.assertRanCleanly(continued)
+        a, b = straight.thermo(), continued.thermo()
+        rows = np.isin(a["Step"], b["Step"])
+        print(f"\nplate restarted at step 150: travel at 300 {b['nscd[31]'][-1]!r} (straight {a['nscd[31]'][-1]!r}), "
+              f"grains' force {b['nscd[33]'][-1]!r}")
+        self.assertGreater(a["nscd[33]"][-1], 1.0)  # the plate presses on the stack
+        for k in ("nscd[31]", "nscd[32]", "nscd[33]", "nscd[34]"):
+            np.testing.assert_array_equal(b[k], a[k][rows], err_msg=k)
+        one, other = read_dump(straight.path("straight.dump")), read_dump(continued.path("continued.dump"))
+        for k in one:
+            np.testing.assert_array_equal(other[k], one[k], err_msg=k)
+
+
 class PlateErrors(DeckTestCase):
     # bad input of the `plate` keyword: the full ERROR text, naming the argument
     P = "fix nscd/polyhedra (id nscd): "

@@ -12,12 +12,15 @@
 
 namespace wiregrain {
 
+thread_local std::vector<BodyContactOperator::Link> BodyContactOperator::recycled_links_;
+
 BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   step.law.validate();
   require_positive("time_step", step.time_step);
   set_bodies(step);
   set_copies(step);
   const int n = static_cast<int>(step.contacts.size());
+  links_.swap(recycled_links_);
   links_.resize(n);
   start_normal_velocity_.resize(n);
   double norm_q_squared = 0.0;
@@ -29,6 +32,10 @@ BodyContactOperator::BodyContactOperator(const NscdStep& step) {
   }
   norm_q_ = std::sqrt(norm_q_squared);
   set_rolling_blocks(step);
+}
+
+BodyContactOperator::~BodyContactOperator() {
+  if (links_.capacity() > recycled_links_.capacity()) recycled_links_.swap(links_);
 }
 
 // Mass splitting (core/nscd/nscd_step.h): a body touched on k > 1 workers is swept with
