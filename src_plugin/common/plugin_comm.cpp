@@ -8,9 +8,9 @@
 
 namespace wiregrain_lmp {
 
-void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach) {
+void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach, double radius) {
   const bool halved = lmp->domain->triclinic == 0 && lmp->atom->radius != nullptr;
-  const double cutoff = halved ? 2.0 * reach : reach;
+  const double cutoff = halved ? 2.0 * reach : reach + radius;
   if (lmp->comm->cutghostuser < cutoff) lmp->comm->cutghostuser = cutoff;
 }
 

@@ -15,11 +15,13 @@ class Atom;
 
 namespace wiregrain_lmp {
 
-// Make ghost atoms reach at least `reach` beyond each subdomain. LIGGGHTS' granular
-// communication (Comm::use_gran_opt, any atom style with a radius in an orthogonal box)
-// sends atoms only within cutghost/2 + skin/2 + their radius, so the user cutoff must be
-// twice the reach there. Call from init(): Comm::init runs after the styles' init.
-void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach);
+// Make ghost atoms reach at least `reach` beyond each subdomain, measured to their centre
+// minus `radius` (an atom of radius ≤ `radius` whose surface is within `reach`). LIGGGHTS'
+// granular communication (Comm::use_gran_opt, any atom style with a radius in an
+// orthogonal box) sends atoms only within cutghost/2 + skin/2 + their radius, so the user
+// cutoff must be twice the reach there; elsewhere it is the reach + `radius`. Call from
+// init(): Comm::init runs after the styles' init.
+void ensure_ghost_reach(LAMMPS_NS::LAMMPS *lmp, double reach, double radius = 0.0);
 
 // Shift of a periodic image for an atom style's pack_comm (border = false) and
 // pack_border (border = true): box lengths, or for a triclinic box tilt-corrected lengths

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include <Eigen/Core>
@@ -42,9 +43,6 @@ using namespace FixConst;
 using wiregrain_lmp::vec3;
 
 namespace {
-// a grain as gathered: tag, shape, type, x (3), q (4), v (3), ω (3), mass, radius,
-// superquadric half-axes (3) and blockiness (2)
-constexpr int kGrainRecord = 23;
 // keyword skin's default (measured: docs/benchmarks.md, "Wire on grains")
 constexpr double kDefaultSkin = 0.1;
 
@@ -200,6 +198,7 @@ void FixWireGrain::init() {
     kCounts,
     kMaxRest = kCounts, // the longest rest length of the wire group
     kMaxRadius,         // its thickest bead
+    kMaxGrainRadius,    // the largest bounding radius of the grain group
     kValues
   };
   double local[kValues] = {}, global[kValues];
@@ -214,6 +213,7 @@ void FixWireGrain::init() {
       }
     }
     if (!(mask[i] & grain_groupbit_)) continue;
+    if (!(mask[i] & groupbit)) local[kMaxGrainRadius] = std::max(local[kMaxGrainRadius], radius[i]);
     if (polyhedron) local[kPolyhedra] += 1.0;
     else {
       local[kOthers] += 1.0;
@@ -269,8 +269,14 @@ void FixWireGrain::init() {
   }
   history_ = dynamic_cast<FixWireContactHistory *>(wiregrain_lmp::find_companion_fix(lmp, history_id_));
   comm->ghost_velocity = 1;  // the damping needs the velocity of the segment's ghost bead
-  // the next bead of an owned bead must be owned or a ghost
+  // The next bead of an owned bead must be owned or a ghost, and so must every grain its
+  // segment can touch (hold_grains): a grain's surface lies within L + r_w (+ the pair
+  // cache's skin) of the segment's first bead, L ≤ (1 + s) ℓ the segment's length (a
+  // longer one loses its far bead: an error); LIGGGHTS' skin covers the atoms' drift
+  // between neighbour lists.
   wiregrain_lmp::ensure_ghost_reach(lmp, (1.0 + max_stretch_) * longest_segment + neighbor->skin);
+  wiregrain_lmp::ensure_ghost_reach(lmp, 2.0 * segment_reach_ + (core_->pairs ? skin_ : 0.0) + neighbor->skin,
+                                    global[kMaxGrainRadius]);
   held_version_ = -1;
 }
 
@@ -288,7 +294,10 @@ void FixWireGrain::setup_pre_force(int /*vflag*/) {
 }
 
 void FixWireGrain::post_force(int /*vflag*/) {
-  if (stock_grains_ || held_version_ != nscd_->pose_version() || !segments_within_reach()) hold_grains();
+  // (several ranks: a new neighbour list brings other ghost grains)
+  if (stock_grains_ || held_version_ != nscd_->pose_version() || (comm->nprocs > 1 && neighbor->ago == 0) ||
+      !segments_within_reach())
+    hold_grains();
   evaluate(false);
 }
 
@@ -349,46 +358,43 @@ void FixWireGrain::check_time_step() {
   time_step_check_.check(lmp, "fix", "wire/grain", id, springs);
 }
 
-// All grains of the group, as the NSCD fix left them (stock spheres: as they are this
-// step), on every rank.
+// The grains this rank's segments can reach, as the NSCD fix left them (stock spheres: as
+// they are this step): its own and its ghost grains (LIGGGHTS' ghosts, within the reach
+// init() asked for), one copy of each grain (the owned one, else the first ghost: a
+// periodic image is found by HeldGrains' minimum image from any copy). No grain record
+// leaves its rank.
 void FixWireGrain::hold_grains() {
-  std::vector<double> mine;
-  const double identity[4] = {1.0, 0.0, 0.0, 0.0}, none[3] = {0.0, 0.0, 0.0};
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!is_grain(i)) continue;
-    // polyhedra and superquadrics carry a quaternion (atom->quaternion), spheres none
-    const bool superquadric = stock_grains_ && atom->superquadric_flag;
-    const double *x = atom->x[i], *q = stock_grains_ && !superquadric ? identity : atom->quaternion[i],
-                 *v = atom->v[i], *w = atom->omega[i];
-    const double shape = superquadric    ? wiregrain::HeldGrain::kSuperquadric
-                         : stock_grains_ ? wiregrain::HeldGrain::kSphere
-                                         : atom->shapetype[i];
-    const double *half_axes = superquadric ? atom->shape[i] : none, *blockiness = superquadric ? atom->blockiness[i] : none;
-    const double record[kGrainRecord] = {double(atom->tag[i]), shape, double(atom->type[i]),
-                                         x[0], x[1], x[2], q[0], q[1], q[2], q[3], v[0], v[1], v[2], w[0], w[1], w[2],
-                                         atom->rmass[i], atom->radius[i], half_axes[0], half_axes[1], half_axes[2],
-                                         blockiness[0], blockiness[1]};
-    mine.insert(mine.end(), record, record + kGrainRecord);
-  }
-  const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
-  std::vector<wiregrain::HeldGrain> grains(all.size() / kGrainRecord);
-  for (size_t k = 0; k < grains.size(); k++) {
-    const double *r = &all[k * kGrainRecord];
-    wiregrain::HeldGrain &g = grains[k];
-    g.tag = (long)r[0];
-    g.shape = (int)r[1];
-    g.material = (int)r[2];
-    g.position = vec3(r + 3);
-    g.orientation = Eigen::Quaterniond(r[6], r[7], r[8], r[9]);
-    g.motion.velocity = vec3(r + 10);
-    g.motion.angular_velocity = vec3(r + 13);
-    g.motion.mass = r[16];
-    if (g.shape == wiregrain::HeldGrain::kSphere) g.sphere_radius = r[17];
-    if (g.shape == wiregrain::HeldGrain::kSuperquadric) {
-      g.superquadric.half_axes = vec3(r + 18);
-      g.superquadric.n1 = r[21];
-      g.superquadric.n2 = r[22];
+  std::vector<wiregrain::HeldGrain> grains;
+  std::unordered_set<long> taken;
+  const int nall = atom->nlocal + atom->nghost;
+  const bool superquadric = stock_grains_ && atom->superquadric_flag;
+  for (int i = 0; i < nall; i++) {
+    if (!is_grain(i) || !taken.insert(atom->tag[i]).second) continue;
+    wiregrain::HeldGrain g;
+    g.tag = atom->tag[i];
+    g.material = atom->type[i];
+    g.position = vec3(atom->x[i]);
+    g.motion.velocity = vec3(atom->v[i]);
+    g.motion.angular_velocity = vec3(atom->omega[i]);
+    g.motion.mass = atom->rmass[i];
+    if (superquadric) {
+      g.shape = wiregrain::HeldGrain::kSuperquadric;
+      g.superquadric.half_axes = vec3(atom->shape[i]);
+      g.superquadric.n1 = atom->blockiness[i][0];
+      g.superquadric.n2 = atom->blockiness[i][1];
+    } else if (stock_grains_) {
+      g.shape = wiregrain::HeldGrain::kSphere;
+      g.sphere_radius = atom->radius[i];
+    } else {
+      g.shape = atom->shapetype[i];
     }
+    if (superquadric || !stock_grains_) {  // polyhedra and superquadrics carry a quaternion, spheres none
+      const double *q = atom->quaternion[i];
+      g.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+    } else {
+      g.orientation = Eigen::Quaterniond::Identity();
+    }
+    grains.push_back(g);
   }
   wiregrain::PeriodicBox box;
   box.lo = vec3(domain->boxlo);

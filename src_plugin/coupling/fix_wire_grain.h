@@ -26,10 +26,16 @@
    step, which averages over its N steps, applies (Σ F)/N over h = N dt: the grain gets
    exactly the impulse dt·ΣF the wire received.
 
+   Ranks: each rank tests its own segments against its own and its ghost grains (the fix
+   asks LIGGGHTS for the grains whose surface is within (1 + max_stretch) ℓ + 2 r_w + the
+   skins of the subdomain); no grain record leaves its rank. The loads on the
+   grains its segments touch are exchanged among the ranks at the NSCD step's last
+   sub-step.
+
    Stock LIGGGHTS spheres: a grain group without polyhedra is taken as granular spheres
    (atom_style sphere/granular in the hybrid, integrated by fix nve/sphere every step):
-   the same law, the geometry in closed form (wire_sphere_contact), the spheres gathered
-   and their forces and torques applied every step (no sub-cycling).
+   the same law, the geometry in closed form (wire_sphere_contact), the spheres held and
+   their forces and torques applied every step (no sub-cycling).
 
    Tangential springs per (segment, grain), kept by the segment's first bead in fix
    WIRE_GRAIN_HISTORY_<ID> (migrate, restart; dropped when the pair separates).

@@ -513,6 +513,31 @@ run             400
         for column in ("x", "y", "z", "vx", "vy", "vz"):
             np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-12, err_msg=column)
 
+    def test_segment_finds_a_ghost_grain(self):
+        # a rod (box 2.4 × 0.4 × 0.4, sweep 0.05) on the floor of rank 1 (x > 2), its centre
+        # 2.9 from the subdomain boundary x = 2, under the far end of a segment (length 2,
+        # max_stretch 0.2) whose first bead lies on rank 0 at x = 1.95: rank 0 evaluates the
+        # segment against its ghost grains, the rod among them; 2 ranks give the contacts and
+        # the state of 1 (holding only its own grains, rank 0 misses the contact: 0 contacts)
+        made = scene([(4.9, 0.0, 0.25, 1.0, 0.0, 0.0, 0.0)], ["line 1.95 0 0.59 3.95 0 0.59 segment 2.0 radius 0.1"],
+                     shape="box 2.4 0.4 0.4", sweep=0.05, box=(-4, 8, -2, 2, -0.5, 2))
+        states, contacts = [], []
+        for ranks, grid in ((1, "1 1 1"), (2, "2 1 1")):
+            r = run(full_precision(deck(COUPLED.format(g=G, every=5, contact="max_stretch 0.2") + """
+thermo_style    custom step f_wg[1]
+thermo          10
+dump            d all custom 200 dump.s id x y z vx vy vz
+run             200
+""", processors=grid), "d"), np_ranks=ranks, workdir=made.workdir)
+            self.assertRanCleanly(r)
+            contacts.append(r.thermo()["wg[1]"])
+            states.append(read_dump(r.path("dump.s")))
+        print(f"\nrod of the other rank: contacts on 1 rank {contacts[0].max():.0f}, on 2 {contacts[1].max():.0f}")
+        self.assertGreater(contacts[0].max(), 0)
+        np.testing.assert_array_equal(contacts[1], contacts[0])
+        for column in ("x", "y", "z", "vx", "vy", "vz"):
+            np.testing.assert_allclose(states[1][column], states[0][column], rtol=0, atol=1e-12, err_msg=column)
+
     def test_restart_in_the_middle_of_a_sub_cycle_continues_the_straight_run(self):
         # N = 5; the restart file is written after step 233, three sub-steps into an NSCD
         # step; the straight run also stops and goes on at 233 (a run boundary: setup)
