@@ -16,7 +16,7 @@ steps). LIGGGHTS' timers (modify_timing on) of every run give the parts:
   wire–wire contacts           Pair + Neigh (pair wire/contact and the lists only it needs)
   wire–wall contacts           the five fix wire/wall
   wire–grain contacts          fix wire/grain (broad phase, exact evaluations, springs,
-                               the all-gather of the grains once per NSCD step)
+                               holding its rank's grains once per NSCD step)
   grain detection, NSCD solve  fix nscd/polyhedra, split by its own clocks f_nscd[22]
                                (gather + detection) and f_nscd[23] (solve)
   communication, output        Comm, Outpt

@@ -31,7 +31,7 @@ The scene (atom_style hybrid polyhedron wire, Table 1 defaults everywhere):
        c  as a without pair wire/contact
        d  the grains alone (no wire fix, no pair: the beads stay where they are)
      Per sub-step: wire-grain = fix wire/grain's timer (the exact evaluations, the broad
-     phase, the tangential springs, and once per NSCD step the all-gather of the grains and
+     phase, the tangential springs, and once per NSCD step holding the rank's grains in
      the grid: everything the coupling costs apart from the NSCD solve), wire-wire = Pair
      time + Neigh time (the neighbour lists only the pair needs), elastic = fix wire/elastic.
      The loop-time differences a - b and a - c cross-check those timers. NSCD step: fix

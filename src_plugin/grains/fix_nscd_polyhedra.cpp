@@ -295,6 +295,7 @@ FixNSCDPolyhedra::~FixNSCDPolyhedra() {
   atom->delete_callback(id, 1);
   memory->destroy(contact_force_);
   memory->destroy(step_start_velocity_);
+  memory->destroy(run_end_velocity_);
   memory->destroy(force_sum_);
   memory->destroy(sleep_state_);
 }
@@ -302,6 +303,7 @@ FixNSCDPolyhedra::~FixNSCDPolyhedra() {
 void FixNSCDPolyhedra::grow_arrays(int nmax) {
   memory->grow(contact_force_, nmax, 6, "nscd/polyhedra:contact_force");
   memory->grow(step_start_velocity_, nmax, 6, "nscd/polyhedra:step_start_velocity");
+  memory->grow(run_end_velocity_, nmax, 7, "nscd/polyhedra:run_end_velocity");
   memory->grow(force_sum_, nmax, 6, "nscd/polyhedra:force_sum");
   memory->grow(sleep_state_, nmax, kSleepState, "nscd/polyhedra:sleep_state");
   array_atom = contact_force_;
@@ -314,6 +316,7 @@ void FixNSCDPolyhedra::copy_arrays(int i, int j, int /*delflag*/) {
     force_sum_[j][k] = force_sum_[i][k];
   }
   for (int k = 0; k < kSleepState; k++) sleep_state_[j][k] = sleep_state_[i][k];
+  for (int k = 0; k < 7; k++) run_end_velocity_[j][k] = run_end_velocity_[i][k];
 }
 
 // a grain that never went through a solve starts from its current velocity
@@ -325,36 +328,48 @@ void FixNSCDPolyhedra::set_arrays(int i) {
     step_start_velocity_[i][3 + d] = atom->angmom[i][d];
   }
   for (int k = 0; k < kSleepState; k++) sleep_state_[i][k] = 0.0;  // awake
+  for (int k = 0; k < 7; k++) run_end_velocity_[i][k] = 0.0;       // not seen at a run's end
 }
 
 // per grain (kAtomRecord): v_n, L_n (6), the force and torque summed over this step's
 // sub-steps (6), the sleep state (kSleepState)
-int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
+void FixNSCDPolyhedra::pack_record(int i, double *buf) const {
   for (int k = 0; k < 6; k++) buf[k] = step_start_velocity_[i][k];
   for (int k = 0; k < 6; k++) buf[6 + k] = force_sum_[i][k];
   for (int k = 0; k < kSleepState; k++) buf[12 + k] = sleep_state_[i][k];
-  return kAtomRecord;
+}
+
+void FixNSCDPolyhedra::unpack_record(int i, const double *buf) {
+  for (int k = 0; k < 6; k++) step_start_velocity_[i][k] = buf[k];
+  for (int k = 0; k < 6; k++) force_sum_[i][k] = buf[6 + k];
+  for (int k = 0; k < 6; k++) contact_force_[i][k] = 0.0;
+  for (int k = 0; k < kSleepState; k++) sleep_state_[i][k] = buf[12 + k];
+}
+
+// exchange (kExchangeRecord): the record, then the last run's end velocities (setup)
+int FixNSCDPolyhedra::pack_exchange(int i, double *buf) {
+  pack_record(i, buf);
+  for (int k = 0; k < 7; k++) buf[kAtomRecord + k] = run_end_velocity_[i][k];
+  return kExchangeRecord;
 }
 
 int FixNSCDPolyhedra::unpack_exchange(int nlocal, double *buf) {
-  for (int k = 0; k < 6; k++) step_start_velocity_[nlocal][k] = buf[k];
-  for (int k = 0; k < 6; k++) force_sum_[nlocal][k] = buf[6 + k];
-  for (int k = 0; k < 6; k++) contact_force_[nlocal][k] = 0.0;
-  for (int k = 0; k < kSleepState; k++) sleep_state_[nlocal][k] = buf[12 + k];
-  return kAtomRecord;
+  unpack_record(nlocal, buf);
+  for (int k = 0; k < 7; k++) run_end_velocity_[nlocal][k] = buf[kAtomRecord + k];
+  return kExchangeRecord;
 }
 
+// restart (kAtomRecord): the record; a run's end velocities are not in it
 int FixNSCDPolyhedra::pack_restart(int i, double *buf) {
   buf[0] = kAtomRecord + 1;
-  pack_exchange(i, buf + 1);
+  pack_record(i, buf + 1);
   return kAtomRecord + 1;
 }
 
 void FixNSCDPolyhedra::unpack_restart(int nlocal, int nth) {
   const double *record = wiregrain_lmp::fix_restart_record(atom, nlocal, nth, kAtomRecord);
-  if (!record) set_arrays(nlocal);  // created after read_restart: starts from its own state
-  else
-    unpack_exchange(nlocal, const_cast<double *>(record));
+  set_arrays(nlocal);  // created after read_restart: starts from its own state
+  if (record) unpack_record(nlocal, record);
 }
 
 int FixNSCDPolyhedra::size_restart(int /*nlocal*/) { return kAtomRecord + 1; }
@@ -482,47 +497,36 @@ bool FixNSCDPolyhedra::solves_at_end_of_step(bigint step) const { return step % 
 void FixNSCDPolyhedra::setup(int /*vflag*/) {
   grains_known_ = group->count(igroup);
   if (run_end_known_ && move_pending_ && summed_steps_ == 0) {
-    // grains present at both times (created or deleted ones are no change of the others)
-    const auto now = velocities_by_tag();
-    bool changed = false;
-    auto before = run_end_velocities_.begin();
-    for (const auto &grain : now) {
-      while (before != run_end_velocities_.end() && before->first < grain.first) ++before;
-      if (before != run_end_velocities_.end() && before->first == grain.first && before->second != grain.second)
-        changed = true;
+    // grains seen at the last run's end (created ones are no change of the others), each
+    // rank its own (the record migrates with the grain)
+    int changed = 0, anywhere = 0;
+    for (int i = 0; i < atom->nlocal && !changed; i++) {
+      if (!(atom->mask[i] & groupbit) || run_end_velocity_[i][0] == 0.0) continue;
+      for (int d = 0; d < 3; d++)
+        if (run_end_velocity_[i][1 + d] != atom->v[i][d] || run_end_velocity_[i][4 + d] != atom->angmom[i][d])
+          changed = 1;
     }
-    if (changed) {
+    MPI_Allreduce(&changed, &anywhere, 1, MPI_INT, MPI_MAX, world);
+    if (anywhere) {
       move_pending_ = false;
       solved_once_ = false;
     }
   }
   run_end_known_ = false;
-  run_end_velocities_.clear();
   if (!solved_once_ && solves_at_end_of_step(update->ntimestep)) solve_step();
   pose_version_++;
 }
 
 void FixNSCDPolyhedra::post_run() {
-  run_end_velocities_ = velocities_by_tag();
-  run_end_known_ = true;
-}
-
-std::vector<std::pair<long, std::array<double, 6>>> FixNSCDPolyhedra::velocities_by_tag() {
-  std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double record[7] = {double(atom->tag[i]), atom->v[i][0], atom->v[i][1], atom->v[i][2],
-                              atom->angmom[i][0], atom->angmom[i][1], atom->angmom[i][2]};
-    mine.insert(mine.end(), record, record + 7);
+    const bool grain = (atom->mask[i] & groupbit) != 0;
+    run_end_velocity_[i][0] = grain ? 1.0 : 0.0;
+    for (int d = 0; d < 3; d++) {
+      run_end_velocity_[i][1 + d] = grain ? atom->v[i][d] : 0.0;
+      run_end_velocity_[i][4 + d] = grain ? atom->angmom[i][d] : 0.0;
+    }
   }
-  const std::vector<double> all = wiregrain_lmp::all_gather_records(world, mine);
-  std::vector<std::pair<long, std::array<double, 6>>> out(all.size() / 7);
-  for (size_t k = 0; k < out.size(); k++) {
-    out[k].first = (long)all[7 * k];
-    for (int d = 0; d < 6; d++) out[k].second[d] = all[7 * k + 1 + d];
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  run_end_known_ = true;
 }
 
 // The grains move once per solve, at the start of the step after it; they are held

@@ -173,9 +173,10 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   bool solved_once_;                        // a contact solve happened (setup of the first run)
   // v and ω of every grain (by tag, all ranks) as the last run left them, to tell at the
   // next setup whether the deck changed them in between (velocity set, set atom ...)
-  std::vector<std::pair<long, std::array<double, 6>>> run_end_velocities_;
+  double **run_end_velocity_ = nullptr;  // per grain: 1 if the last run's end saw it, its v and L then
   bool run_end_known_ = false;
-  std::vector<std::pair<long, std::array<double, 6>>> velocities_by_tag();
+  void pack_record(int i, double *buf) const;  // the kAtomRecord numbers of grain i
+  void unpack_record(int i, const double *buf);
   double stats_[6];
   double largest_overlap_ = 0.0;            // over all steps since the fix was made
   double project_tolerance_;                // keyword project (0: off)

@@ -28,6 +28,9 @@ constexpr int kGrainRecord = kStateRecord + kSleepState;
 constexpr int kImpulseRecord = 16;
 // per grain in exchange and restart: v_n, L_n (6), Σ F, Σ T (6), sleep state
 constexpr int kAtomRecord = 12 + kSleepState;
+// per grain in exchange only: the restart record, then whether the last run's end saw
+// the grain and its v, L then (7)
+constexpr int kExchangeRecord = kAtomRecord + 7;
 
 }  // namespace fix_nscd_polyhedra_layout
 

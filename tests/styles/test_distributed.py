@@ -2,13 +2,15 @@
 own and ghost grains. On one rank it is the replicated solve to the bit (Gauss-Seidel); a
 tall stack carries its weight exactly on 1 to 4 ranks (the stick solve by conjugate
 gradients over the ranks); one step of a pile from the same state finds the same contact
-points and velocities within the solver's tolerance on 1 to 4 ranks; a run continued from
+points and velocities within the solver's tolerance on 1 to 4 ranks, as does one step of a
+short column with its wire; a run continued from
 a restart file repeats the straight run on 2 ranks to the bit; what it does not carry
 stops with an ERROR."""
 
 import numpy as np
 
-from liggghts_run import (DeckTestCase, full_precision, grains_data, main, read_dump, read_local_dump, run)
+from liggghts_run import (SOURCE, DeckTestCase, full_precision, grains_data, main, read_dump, read_local_dump, run)
+from liggghts_run import deck as deck_file
 from test_periodic import periodic_pile
 import test_nscd
 
@@ -171,6 +173,48 @@ run             1
             np.testing.assert_array_equal(rows[:, :3], reference_rows[:, :3], err_msg=tag)
             self.assertLess(np.max(np.abs(rows[:, 3:] - reference_rows[:, 3:])), 1e-12, tag)
             self.assertLess(velocities, 5e-8 * speed, tag)
+
+
+class ShortColumnStep(DeckTestCase):
+    # The paper's procedure on a short column (input_scripts/in.column: 24 grains in 2
+    # layers, a double loop of R = 3), replicated, to the end of its relaxation (t = 2.5,
+    # column_relaxed.restart: the column standing in its container); from it, one NSCD step (its
+    # N = 2 wire sub-steps), its contacts with the
+    # grains, and the grains' NSCD step at tolerance 1e-10, distributed on 1 to 4 ranks (the
+    # subdomains cut the column along x and y) and replicated on 1: the grains' velocities
+    # agree within the solver's tolerance and the beads' to the round-off of their forces'
+    # order of summation. Measured: grains within 0 (2 and 3 ranks) and 5.5e-11 (4 ranks,
+    # whose subdomains cut grain pairs) of the largest grain speed, beads within 1.1e-19 of
+    # the largest bead speed; held to 5e-8 and 1e-12 (without the mass splitting the 4
+    # ranks' grains are 3.1e-4 off).
+    TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1}
+
+    def test_one_step_on_one_to_four_ranks(self):
+        column = deck_file("input_scripts/in.column")
+        variables = dict(self.TINY, root=SOURCE)
+        straight = run(column, variables=variables)
+        self.assertRanCleanly(straight)
+        states = {}
+        for mode, ranks in (("replicated", 1), ("distributed", 1), ("distributed", 2), ("distributed", 3),
+                            ("distributed", 4)):
+            r = run(column, workdir=straight.workdir, np_ranks=ranks,
+                    variables=dict(variables, resume=1, t_end=2.502, solve=mode, nscd_tolerance=1e-10))
+            self.assertRanCleanly(r)
+            self.assertRegex(r.output, r"Loop time of \S+ on \d+ procs for 2 steps")
+            states[f"{mode}{ranks}"] = read_dump(r.path("post/column_final_2502.dump"))
+        reference = states["replicated1"]
+        grains, beads = reference["type"] == 1, reference["type"] == 2
+        self.assertGreater(np.count_nonzero(beads), 0)
+        speed = {kind: max(np.max(np.abs(reference[c][rows])) for c in ("vx", "vy", "vz"))
+                 for kind, rows in (("grains", grains), ("beads", beads))}
+        for tag, state in states.items():
+            np.testing.assert_array_equal(state["id"], reference["id"], err_msg=tag)
+            worst = {kind: max(np.max(np.abs(state[c][rows] - reference[c][rows])) for c in ("vx", "vy", "vz"))
+                     / speed[kind] for kind, rows in (("grains", grains), ("beads", beads))}
+            print(f"\n{tag}: grains' velocities within {worst['grains']:.1e} of the largest grain speed "
+                  f"{speed['grains']:.2e}, beads' within {worst['beads']:.1e} of {speed['beads']:.2e}")
+            self.assertLess(worst["grains"], 5e-8, tag)
+            self.assertLess(worst["beads"], 1e-12, tag)
 
 
 class PeriodicRestart(DeckTestCase):
