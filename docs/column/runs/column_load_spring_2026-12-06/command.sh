@@ -1,4 +1,4 @@
-#!/bin/sh
+#!/bin/bash
 # The reduced column under a spring-driven plate (docs/results.md, "The column under a
 # plate"): the reduced column (input_scripts/in.column_reduced) of seeds 4242, 1001, 2002,
 # 3003 and 5005, with and without wire, brought to rest under the still plate (ke_settle
