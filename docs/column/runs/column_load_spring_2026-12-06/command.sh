@@ -31,4 +31,4 @@ for seed in 4242 1001 2002 3003 5005; do for wire in 1 0; do
   while [ $(jobs -r | wc -l) -ge $JOBS ]; do sleep 5; done
 done; done
 wait
-postprocess/load_curve.py runs/spring_* > $D/summary.txt
+/usr/bin/python3 postprocess/load_curve.py runs/spring_* > $D/summary.txt
