@@ -86,7 +86,6 @@ FixStyle(nscd/polyhedra,FixNSCDPolyhedra)
 #define LMP_FIX_NSCD_POLYHEDRA_H
 
 #include <cstdio>
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
