@@ -35,14 +35,7 @@ Eigen::Vector3d sum_of_forces(const ContactList& list, ContactKind kind, long a,
 // A sphere (one-vertex grain) of radius r, mass m_s, inertia 2/5 m_s r², at rest at
 // `centre` under gravity.
 GrainState resting_sphere(long tag, int shape, const Eigen::Vector3d& centre, double mass, double radius) {
-  GrainState g;
-  g.tag = tag;
-  g.shape = shape;
-  g.position = centre;
-  g.force = Eigen::Vector3d(0, 0, -mass * kG);
-  g.mass = mass;
-  g.inertia = Eigen::Vector3d::Constant(0.4 * mass * radius * radius);
-  return g;
+  return test_scenes::grain_under_gravity(tag, shape, centre, mass, 0.4 * mass * radius * radius, kG);
 }
 
 }  // namespace
