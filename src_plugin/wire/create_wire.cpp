@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -38,6 +39,9 @@ struct WireSettings {
   std::vector<double> geometry;  // line: x0 y0 z0 x1 y1 z1; loop, helix: cx cy z R turns pitch;
                                  // circle: cx cy z R; spiral: cx cy z r0 r1 turns
   std::string polyline_file;
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // shift dx dy dz: added to every node of the layout
+  double start_angle = 0.0;                         // start_angle θ (degrees): the layout turned about its axis
+  bool start_angle_given = false;
   wiregrain::WireMaterial material;
   bool append = false;
   bool append_last = false;  // append last: the chain end of the largest atom ID
@@ -90,6 +94,14 @@ WireSettings parse_settings(LAMMPS *lmp, wiregrain_lmp::StyleArgs &args, int nar
     if (key == "segment") s.material.segment_length = args.value_positive(key);
     else if (key == "radius") s.material.radius = args.value_positive(key);
     else if (key == "density") s.material.density = args.value_positive(key);
+    else if (key == "shift") {
+      s.shift.x() = args.value_double("dx");
+      s.shift.y() = args.value_double("dy");
+      s.shift.z() = args.value_double("dz");
+    } else if (key == "start_angle") {
+      s.start_angle = args.value_double(key);
+      s.start_angle_given = true;
+    }
     else if (key == "append") {
       const std::string word = args.value_word(key);
       s.append = true;
@@ -123,14 +135,16 @@ WireSettings parse_settings(LAMMPS *lmp, wiregrain_lmp::StyleArgs &args, int nar
     args.fail("'" + s.join_keyword + "' needs 'append' (a join leads from a chain end to the layout)");
   if (s.append && s.join.path == wiregrain::JoinPath::helix && !has_axis(s.layout))
     args.fail("join helix needs a layout with a vertical axis (loop, helix, circle or spiral), not '" + s.layout + "'");
+  if (s.start_angle_given && !has_axis(s.layout))
+    args.fail("start_angle needs a layout with a vertical axis (loop, helix, circle or spiral), not '" + s.layout + "'");
   if (s.append && !s.join_max_given) s.join.max_length = 10.0 * s.material.segment_length;
   // by default no join segment shorter than 2 r_w (pair wire/contact refuses those: the
   // segments on either side would overlap at rest), and none shorter than l_w / 2
   if (!s.join_min_given)
     s.join.min_last = std::min(1.0, std::max(0.5, 2.0 * s.material.radius / s.material.segment_length));
   if (has_axis(s.layout)) {
-    s.join.axis_x = s.geometry[0];
-    s.join.axis_y = s.geometry[1];
+    s.join.axis_x = s.geometry[0] + s.shift.x();
+    s.join.axis_y = s.geometry[1] + s.shift.y();
   }
   return s;
 }
@@ -162,6 +176,9 @@ std::vector<Eigen::Vector3d> wire_nodes(const WireSettings &s, const wiregrain_l
     args.fail("not enough memory for the wire's nodes");
   }
   if (nodes.size() < 2) args.fail("the layout gives fewer than 2 beads");
+  if (s.start_angle != 0.0)
+    wiregrain::turn_about_vertical_axis(nodes, geometry[0], geometry[1], s.start_angle * M_PI / 180.0);
+  for (Eigen::Vector3d &x : nodes) x += s.shift;
   return nodes;
 }
 
@@ -265,7 +282,7 @@ CreateWire::CreateWire(LAMMPS *lmp) : Pointers(lmp) {}
 void CreateWire::command(int narg, char **arg) {
   const std::string id = "-";
   wiregrain_lmp::StyleArgs args(error, "command", "create_wire", id, narg, arg, 0,
-                                {"segment", "radius", "density", "append", "join", "join_max", "join_min"});
+                                {"segment", "radius", "density", "shift", "start_angle", "append", "join", "join_max", "join_min"});
   const WireSettings s = parse_settings(lmp, args, narg);
   const double l_w = s.material.segment_length;
   // Every rank computes the same node list; each keeps the beads in its subdomain.

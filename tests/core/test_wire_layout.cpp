@@ -87,6 +87,28 @@ TEST(WireLayout, FlatDoubleLoop) {
   }
 }
 
+// A double loop turned by θ about its axis is the helix that starts at azimuth θ
+// (wire_helix's φ0, computed from its own formula), node by node.
+TEST(WireLayout, TurnedLoopStartsAtTheAngle) {
+  const double R = 3.0, l = 0.2, cx = 1.5, cy = -0.5, z = 2.0, theta = 2.0;
+  auto nodes = wire_loop(cx, cy, z, R, 2.0, 0.25, l);
+  turn_about_vertical_axis(nodes, cx, cy, theta);
+  WireHelix helix;
+  helix.centre_x = cx;
+  helix.centre_y = cy;
+  helix.z = z;
+  helix.radius = R;
+  helix.turns = 2.0;
+  helix.pitch = 0.25;
+  helix.start_angle = theta;
+  const auto expected = wire_helix(helix, l);
+  ASSERT_EQ(nodes.size(), expected.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) EXPECT_LT((nodes[i] - expected[i]).norm(), 1e-13) << i;
+  EXPECT_NEAR(nodes.front().x(), cx + R * std::cos(theta), 1e-15);
+  EXPECT_NEAR(nodes.front().y(), cy + R * std::sin(theta), 1e-15);
+  expect_all_chords(nodes, l);
+}
+
 // Two turns offset by a pitch 2 r_w = 0.2: the chord includes the rise, every node at
 // distance R from the axis and at height z + pitch · (azimuth swept) / 2π.
 TEST(WireLayout, LoopWithPitchAndHelix) {

@@ -265,6 +265,28 @@ write_data      chain.data
         self.assertLessEqual(np.hypot(*atoms[last][5:7]), 2.4 + 1e-12)
         self.assertGreater(np.hypot(*atoms[last][5:7]), 2.4 - 0.2)
 
+    def test_shift_and_start_angle(self):
+        # shift dx dy dz translates the layout: the polyline (0,0,0) → (1.1,0,0) → (1.1,1.1,0)
+        # resampled at chord l_w = 0.2 has beads at x = 0, 0.2, …, 1.0 on the first leg, then
+        # (1.1, √(0.2² − 0.1²) + 0.2 j) for j = 0..4 on the second; shifted by (-1, 0.5, 2)
+        # start_angle θ turns an axis layout about its axis before the shift: a circle of
+        # R = 1 about (0, 0) at z = 1 turned by 90° and shifted by (0.5, 0, 0) has its first
+        # bead at (0.5, 1, 1) and every bead at distance 1 from (0.5, 0)
+        res = run(BOX.format(processors="") + """
+create_wire     1 polyline path.txt shift -1 0.5 2
+create_wire     1 circle 0 0 1 1 start_angle 90 shift 0.5 0 0
+write_data      chain.data
+""", files={"path.txt": "0 0 0\n1.1 0 0\n1.1 1.1 0\n"})
+        self.assertRanCleanly(res)
+        atoms = atoms_section(res.path("chain.data"))
+        for k in range(11):
+            expected = (0.2 * k, 0, 0) if k <= 5 else (1.1, math.sqrt(0.03) + 0.2 * (k - 6), 0)
+            np.testing.assert_allclose(atoms[k + 1][5:], np.add(expected, (-1, 0.5, 2)), rtol=0, atol=1e-12)
+        self.assertEqual(atoms[11][1], 0)  # the polyline's end: 11 beads
+        self.assertEqual(atoms[12][0], 0)  # the circle's first bead
+        np.testing.assert_allclose(atoms[12][5:], (0.5, 1, 1), rtol=0, atol=1e-15)
+        for t in range(12, max(atoms) + 1):
+            self.assertAlmostEqual(np.hypot(atoms[t][5] - 0.5, atoms[t][6]), 1.0, delta=1e-14)
 
 if __name__ == "__main__":
     main()

@@ -426,4 +426,14 @@ std::vector<Eigen::Vector3d> read_polyline_file(const std::string& path) {
   return read_polyline(in, path);
 }
 
+void turn_about_vertical_axis(std::vector<Eigen::Vector3d>& nodes, double centre_x, double centre_y,
+                              double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Eigen::Vector3d& x : nodes) {
+    const double dx = x.x() - centre_x, dy = x.y() - centre_y;
+    x.x() = centre_x + c * dx - s * dy;
+    x.y() = centre_y + s * dx + c * dy;
+  }
+}
+
 }  // namespace wiregrain

@@ -65,6 +65,13 @@ std::vector<Eigen::Vector3d> wire_circle(double centre_x, double centre_y, doubl
 std::vector<Eigen::Vector3d> wire_spiral(double centre_x, double centre_y, double z, double r0, double r1,
                                          double turns, double segment_length);
 
+// Turns the nodes of a layout about the vertical axis through (centre_x, centre_y) by
+// `angle` (radians, counter-clockwise seen from +z): x' = c + Rz(angle) (x − c), z kept.
+// A loop, circle or spiral laid from azimuth 0 then starts at azimuth `angle`; chords and
+// distances from the axis are kept to round-off.
+void turn_about_vertical_axis(std::vector<Eigen::Vector3d>& nodes, double centre_x, double centre_y,
+                              double angle);
+
 // The stretch that joins the free end of a chain (`from`, its end bead) to the first node
 // of a layout (`to`):
 //   straight: the line from `from` to `to`;
