@@ -5,6 +5,7 @@ write PNGs. On the tiny column without wire (a second per run)."""
 import csv
 import glob
 import json
+import math
 import os
 import re
 import struct
@@ -161,6 +162,67 @@ class Sweep(DeckTestCase):
         obs = json.loads(text.splitlines()[-1])
         self.assertAlmostEqual(obs["H_n"], final["H_n"], delta=1e-14)
         self.assertEqual(obs["phi_p"], final["phi_p"])
+
+
+def write_tops_dump(path, snapshots):
+    """A dump custom file of `id x y z c_gs[7]` (in.column's post/tops.dump columns):
+    snapshots = [(step, x, y, z, top)]."""
+    with open(path, "w") as f:
+        for step, x, y, z, top in snapshots:
+            f.write(f"ITEM: TIMESTEP\n{step}\nITEM: NUMBER OF ATOMS\n{len(x)}\n"
+                    "ITEM: BOX BOUNDS ff ff ff\n-20 20\n-20 20\n0 20\nITEM: ATOMS id x y z c_gs[7]\n")
+            for i in range(len(x)):
+                f.write(f"{i + 1} {x[i]:.9g} {y[i]:.9g} {z[i]:.9g} {top[i]:.9g}\n")
+
+
+class ColumnReadings(DeckTestCase):
+    """postprocess/column_readings.py on written dumps: a block of grains covering the half
+    x <= -0.6 of a disk of R = 6 (the grains on a lattice of spacing 0.25, tops h = 3). With
+    cells of 0.5 the grid nodes at x <= -0.5 see a grain within a cell and those at x >= 0
+    none, so the surface reading is h times the disk's share left of x = -0.25 (the circular
+    segment's area R^2 acos(d/R) - d sqrt(R^2 - d^2) over pi R^2, d = 0.25), within the grid's
+    resolution; the rim (nodes within a cell of r = R) is h times the share of that ring left
+    of x = -0.25, about (pi - 2 asin(d / R)) / 2 pi; q98 is h; the volume reading, twice the
+    mean centre height, is h for centres at h/2. Each reading is normalised by the relaxed
+    column's (tops 2h, centres at h): all 0.5."""
+
+    def test_half_disk(self):
+        h, R, d = 3.0, 6.0, 0.25
+        gx, gy = np.meshgrid(-0.6 - 0.25 * np.arange(30), -7.0 + 0.25 * np.arange(57), indexing="ij")
+        x, y = gx.ravel(), gy.ravel()
+        with tempfile.TemporaryDirectory() as work:
+            os.makedirs(os.path.join(work, "half", "post"))
+            write_tops_dump(os.path.join(work, "half", "post", "column_relaxed_1000.dump"),
+                            [(1000, x, y, np.full_like(x, h), np.full_like(x, 2 * h))])
+            write_tops_dump(os.path.join(work, "half", "post", "tops.dump"),
+                            [(1000, x, y, np.full_like(x, 9.0), np.full_like(x, 9.0)),
+                             (3000, x, y, np.full_like(x, h / 2), np.full_like(x, h))])
+            status, text = script("column_readings.py", "half", "--radius", str(R), "--cell", "0.5", "--dt", "1e-3",
+                                  "--csv", "readings.csv", "--plot", "readings.png", cwd=work)
+            self.assertEqual(status, 0, text)
+            print(text)
+            with open(os.path.join(work, "readings.csv")) as f:
+                rows = list(csv.DictReader(f))
+            self.assertTrue(os.path.getsize(os.path.join(work, "readings.png")) > 0)
+        # the relaxed column, then the snapshot after it (the one at the relaxed step is not a new one)
+        self.assertEqual([float(r["t_since_walls"]) for r in rows], [0.0, 2.0])
+        later = {k: float(v) for k, v in rows[1].items() if k != "run"}
+        segment = (R * R * math.acos(d / R) - d * math.sqrt(R * R - d * d)) / (math.pi * R * R)
+        self.assertAlmostEqual(later["H_q98"], h, delta=1e-12)
+        self.assertAlmostEqual(later["H_volume"], h, delta=1e-12)
+        self.assertAlmostEqual(later["H_surface"], h * segment, delta=0.01 * h)
+        self.assertAlmostEqual(later["H_rim"], h * (math.pi - 2 * math.asin(d / R)) / (2 * math.pi), delta=0.01 * h)
+        for k in ("q98", "surface", "rim", "volume"):
+            self.assertAlmostEqual(later[f"Hn_{k}"], 0.5, delta=1e-7, msg=k)
+            self.assertAlmostEqual(float(rows[0][f"Hn_{k}"]), 1.0, delta=1e-12, msg=k)
+
+    def test_without_the_tops_dump(self):
+        with tempfile.TemporaryDirectory() as work:
+            os.makedirs(os.path.join(work, "run", "post"))
+            status, text = script("column_readings.py", "run", "--radius", "6", cwd=work)
+        self.assertNotEqual(status, 0)
+        self.assertIn("column_readings.py: run: needs post/column_relaxed_STEP.dump and post/tops.dump "
+                      "(in.column -var t_tops T)", text)
 
 
 class EarlyEnd(DeckTestCase):
