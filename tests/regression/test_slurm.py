@@ -6,7 +6,9 @@ runner gives for the same runs (same binary, same deck: the same digits); a seco
 submits nothing; a failing run is listed with its ERROR line."""
 
 import csv
+import glob
 import os
+import re
 import shutil
 import signal
 import socket
@@ -203,6 +205,33 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
         self.assertIn("FAILED v_wall=-1 seed=11:", text)
         self.assertIn("in.column: v_wall must be > 0, got -1", text)
         self.assertEqual(len(self.rows(slurm_out)), 4)
+
+
+    def test_two_ranks_per_task(self):
+        # --ranks 2: each task asks Slurm for 2 tasks and starts the run with mpirun -np 2
+        # inside its allocation; the run's log shows a 2-rank processor grid, and its
+        # observables are those of the local runner's 2-rank run of the same deck and seed
+        work = os.path.join(self.tmp, "two_ranks")
+        os.makedirs(work)
+        common = ["v_wall", "0.2", "--seeds", "11", "--liggghts", LIGGGHTS] + TINY
+        slurm_out, local_out = os.path.join(work, "slurm"), os.path.join(work, "local")
+        status, text = sweep(*common, "--out", slurm_out, "--scheduler", "slurm", "--ranks", "2", "--time", "5",
+                             env=self.env, cwd=work)
+        self.assertEqual(status, 0, text)
+        with open(glob.glob(os.path.join(slurm_out, "slurm", "array-*.sh"))[0]) as f:
+            self.assertIn("#SBATCH --ntasks=2", f.read())
+        status, text = sweep(*common, "--out", local_out, "--jobs", "1", "--ranks", "2", cwd=work)
+        self.assertEqual(status, 0, text)
+        self.wait(self.queue_empty, 120, "the 2-rank array to finish (squeue)")
+        status, text = sweep(*common, "--out", slurm_out, "--collect", cwd=work)
+        self.assertEqual(status, 0, text)
+        self.assertIn("1 runs finished, 0 failed", text)
+        with open(os.path.join(slurm_out, "v_wall=0.2", "seed=11", "log.liggghts")) as f:
+            grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", f.read())
+        self.assertIsNotNone(grid)
+        self.assertEqual(int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)), 2)
+        (s,), (l,) = self.rows(slurm_out), self.rows(local_out)
+        self.assertEqual({k: v for k, v in s.items() if k != "wall_s"}, {k: v for k, v in l.items() if k != "wall_s"})
 
 
 if __name__ == "__main__":
