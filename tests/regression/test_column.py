@@ -57,11 +57,25 @@ def vtk_observables(result):
 
 def minimal_dump(path):
     """A dump custom file read the shortest way (not observables.py's reader): {column: array}."""
-    lines = open(path).read().splitlines()
+    with open(path) as f:
+        lines = f.read().splitlines()
     start = lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS")))
     names = lines[start].split()[2:]
     table = np.loadtxt(lines[start + 1:], ndmin=2)
     return dict(zip(names, table.T))
+
+
+def dump_frames(path):
+    """Every snapshot of a dump custom file, the shortest way: [(step, {column: array})]."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    frames = []
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            n = int(lines[k + 3])
+            names = lines[k + 8].split()[2:]
+            frames.append((int(lines[k + 1]), dict(zip(names, np.loadtxt(lines[k + 9:k + 9 + n], ndmin=2).T))))
+    return frames
 
 
 def assert_dump_observables_match(test, result, *options):
@@ -100,7 +114,7 @@ def assert_vtk_observables_match(test, result, h_n_delta=1e-14):
 class Column(DeckTestCase):
     @classmethod
     def setUpClass(cls):
-        cls.straight = run(COLUMN, variables=TINY)
+        cls.straight = run(COLUMN, variables=dict(TINY, t_tops=0.2))
 
     def test_runs_and_measures(self):
         self.assertRanCleanly(self.straight)
@@ -117,6 +131,38 @@ class Column(DeckTestCase):
         # run: the tops recomputed from the shapes and quaternions
         self.assertRanCleanly(self.straight)
         assert_dump_observables_match(self, self.straight, "--shapes", self.straight.path("post/shapes.txt"))
+
+    def test_tops_through_the_wall_phase(self):
+        # t_tops 0.2: post/tops.dump holds the grains every 200 steps of the wall phase; the
+        # 0.98 quantile of their tops (numpy, independent of compute column/height) is the H
+        # that column.obs printed at the same step (6 digits), and postprocess/column_readings.py
+        # reads the same q98 and normalises by its value in the relaxed dump (H0)
+        self.assertRanCleanly(self.straight)
+        frames = dump_frames(self.straight.path("post/tops.dump"))
+        obs = {int(r[0]): r for r in np.loadtxt(self.straight.path("column.obs"), ndmin=2)}
+        with open(self.straight.path("column_walls.txt")) as f:
+            walls = float(f.read().split()[1])
+        steps = [step for step, _ in frames]
+        self.assertEqual(steps, list(range(steps[0], steps[-1] + 1, 200)))
+        self.assertLessEqual(steps[0], round(walls / 1e-3) + 200)
+        self.assertEqual(steps[-1], 3400)  # the last multiple of 200 before t_end 3.5
+        compared = 0
+        for step, atoms in frames:
+            self.assertEqual(len(atoms["id"]), 24)
+            if step in obs:
+                self.assertAlmostEqual(np.quantile(atoms["c_gs[7]"], 0.98) / obs[step][2], 1.0, delta=1e-5)
+                compared += 1
+        self.assertGreater(compared, 2)
+        out = subprocess.run([sys.executable, os.path.join(SOURCE, "postprocess", "column_readings.py"),
+                              self.straight.workdir, "--radius", "3"], capture_output=True, text=True)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        rows = [l.split() for l in out.stdout.splitlines()[1:]]
+        self.assertEqual(len(rows), 1 + len([s for s in steps if s > round(walls / 1e-3)]))
+        h0 = float(re.search(r"H0 = (\S+),", next(l for l in self.straight.output.splitlines()
+                                                    if l.startswith("in.column final:"))).group(1))
+        self.assertAlmostEqual(float(rows[0][2]) / h0, 1.0, delta=1e-5)
+        last = frames[-1][1]
+        self.assertAlmostEqual(float(rows[-1][3]), np.quantile(last["c_gs[7]"], 0.98) / h0, delta=1e-5)
 
     def test_observables_from_the_vtk_files(self):
         # post/grains_{relaxed,final}_*.vtp and the wire files beside them
@@ -263,13 +309,23 @@ class Column(DeckTestCase):
         # R = 3, floor(4π / 2 asin(l_w / 2R)) + 1 = n), and the final dump holds one chain:
         # every wire bead but one has a segment to a next bead (compute wire/energy's
         # segment length > 0), where the paper's two loops leave two ends
+        # spiral and file lay one chain as well: each layer's path appended to the previous
+        # layer's end (file: a square path of side 4 about the axis, 5 points, at each layer's height)
         n = math.floor(4 * math.pi / (2 * math.asin(0.2 / 6))) + 1
-        for layout, ends in (("continuous", 1), ("loops", 2)):
-            result = self.straight if layout == "loops" else run(COLUMN, variables=dict(TINY, wire_layout=layout))
+        path = {"square.txt": "-2 -2 0\n2 -2 0\n2 2 0\n-2 2 0\n-2 -1.6 0\n"}
+        for layout, ends in (("continuous", 1), ("loops", 2), ("spiral", 1), ("file", 1)):
+            if layout == "loops":
+                result = self.straight
+            else:
+                result = run(COLUMN, variables=dict(TINY, wire_layout=layout, wire_file="square.txt"), files=path)
             self.assertRanCleanly(result)
             created = [l for l in result.output.splitlines() if l.startswith("create_wire:")]
             self.assertEqual(len(created), 2)
-            self.assertEqual(layout == "continuous", f"appended to bead {12 + n} by a straight join" in created[1])
+            if layout == "continuous":
+                self.assertIn(f"appended to bead {12 + n} by a straight join", created[1])
+            self.assertEqual(layout != "loops", "appended to bead" in created[1], layout)
+            if layout == "file":  # the path's 4 + 4 + 4 + 3.6 = 15.6 long: 78 segments of l_w = 0.2
+                self.assertTrue(created[0].startswith("create_wire: 79 beads, 78 segments"), created[0])
             final = minimal_dump(sorted(glob.glob(result.path("post/column_final_*.dump")))[-1])
             beads = final["type"] == 2
             self.assertEqual(np.count_nonzero(beads) - np.count_nonzero(final["c_energy[3]"][beads] > 0), ends, layout)
@@ -523,9 +579,15 @@ class Column(DeckTestCase):
                                     "in.column: grains must be nscd, spheres or superquadrics, got cubes"),
                                    ({"ke_of": "wire"}, "in.column: ke_of must be grains or all, got wire"),
                                    ({"wire_scheme": "rk4"}, "in.column: wire_scheme must be auto, gear5 or verlet, got rk4"),
-                                   ({"wire_layout": "spiral"},
-                                    "in.column: wire_layout must be loops or continuous, got spiral"),
+                                   ({"wire_layout": "zigzag"},
+                                    "in.column: wire_layout must be loops, continuous, spiral or file, got zigzag"),
                                    ({"join_max": -1}, "in.column: join_max must be >= 0 (0: the box height), got -1"),
+                                   ({"spiral_r0": -1}, "in.column: spiral_r0 must be >= 0 (0: R/4), got -1"),
+                                   ({"spiral_pitch": 0}, "in.column: spiral_pitch must be > 0, got 0"),
+                                   ({"wire_layout": "spiral", "R": 3, "spiral_r0": 3},
+                                    "in.column: spiral_r0 (3) must be below R (3)"),
+                                   ({"t_tops": -1}, "in.column: t_tops must be >= 0 (0: no dump of the tops), got -1"),
+                                   ({"t_tops": "1e-4"}, "in.column: t_tops (1e-4) must be 0 or at least dt_SP (0.001)"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)
