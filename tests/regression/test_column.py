@@ -537,6 +537,9 @@ class Column(DeckTestCase):
                                    ({"nlayers": 0}, "in.column: nlayers must be >= 1, got 0"),
                                    ({"v_wall": -0.02}, "in.column: v_wall must be > 0, got -0.02"),
                                    ({"Np": 3, "nlayers": 4}, "in.column: Np (3) must be at least nlayers (4)"),
+                                   ({"Np": -1}, "in.column: Np must be >= 0 (0: 915 (R/10)^2), got -1"),
+                                   # Np 0: round(915 (3/10)^2) = round(82.35) = 82 grains at R = 3
+                                   ({"Np": 0, "R": 3, "nlayers": 100}, "in.column: Np (82) must be at least nlayers (100)"),
                                    ({"t_relax": 10, "t_layer": 10},
                                     "in.column: t_relax (10) must be at least the deposition time"),
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
