@@ -1,17 +1,19 @@
 #!/usr/bin/python3
 """Benchmark: fix nscd/polyhedra `solve replicated` against `solve distributed` on the
-paper's Table 1 column without wire (input_scripts/in.column -var wire 0: 915 grains), its
-wall phase continued from column_relaxed.restart for --time time units, on 1 and 2 ranks,
-the runs alternated (--repeat rounds): the wall time of the run, the NSCD clocks of rank 0
-(gather + detection, solve, scatter + overlap projection), the peak resident memory of
-each rank, the column's height at the end, and the speed-ups side by side.
+paper's Table 1 column (input_scripts/in.column: 915 grains; without its wire unless
+--wire), its wall phase continued from column_relaxed.restart for --time time units, on 1
+and 2 ranks, the runs alternated (--repeat rounds): the wall time of the run, the NSCD
+clocks of rank 0 (gather + detection, solve, scatter + overlap projection), the stick
+solves (tried, kept, and the factorisations, or with `solve distributed` the
+conjugate-gradient iterations, they made), the peak resident memory of each rank, the
+column's height at the end, and the speed-ups side by side.
 
-    bench/nscd_distributed.py [--liggghts build/liggghts] [--relaxed DIR] [--time 5] [--repeat 2]
+    bench/nscd_distributed.py [--liggghts build/liggghts] [--wire] [--relaxed DIR] [--time 5] [--repeat 2]
 
-Without --relaxed the restart is made first (in.column -var wire 0 with each layer
-deposited for 1.5 time units and relaxed to t = 14: a few minutes on 2 ranks) in a
-temporary folder; --relaxed DIR reuses the column_relaxed.restart and column_deposited.txt
-of a folder."""
+Without --relaxed the restart is made first (in.column with each layer, and with --wire
+each wire layer, deposited for 1.5 time units and relaxed for 1 more: a few minutes on 2
+ranks) in a temporary folder; --relaxed DIR reuses the column_relaxed.restart and
+column_deposited.txt of a folder made with the same --wire."""
 
 import argparse
 import os
@@ -24,6 +26,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 PREP = {"wire": 0, "t_layer": 1.5, "t_wire": 0, "t_relax": 14, "t_end": 14.01}
+PREP_WIRE = {"wire": 1, "t_layer": 1.5, "t_wire": 1.5, "t_relax": 22, "t_end": 22.01}
 
 
 def mpirun(args, ranks, liggghts, workdir, variables, log):
@@ -48,19 +51,21 @@ def mpirun(args, ranks, liggghts, workdir, variables, log):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
+    parser.add_argument("--wire", action="store_true", help="the column with its wire (default: without)")
     parser.add_argument("--relaxed", help="a folder with column_relaxed.restart and column_deposited.txt")
     parser.add_argument("--time", type=float, default=5.0, help="time units of the wall phase timed")
     parser.add_argument("--repeat", type=int, default=2)
     args = parser.parse_args()
     liggghts = os.path.abspath(args.liggghts)
+    prep = PREP_WIRE if args.wire else PREP
     work = tempfile.mkdtemp(prefix="nscd-distributed-")
     if args.relaxed:
         for name in ("column_relaxed.restart", "column_deposited.txt"):
             shutil.copy(os.path.join(args.relaxed, name), work)
     else:
         print(f"making the relaxed column in {work} ...", flush=True)
-        mpirun([], 2, liggghts, work, PREP, os.path.join(work, "prep.log"))
-    phase = dict(PREP, resume=1, t_end=PREP["t_relax"] + args.time)
+        mpirun([], 2, liggghts, work, prep, os.path.join(work, "prep.log"))
+    phase = dict(prep, resume=1, t_end=prep["t_relax"] + args.time)
     results = {}
     for round_ in range(args.repeat):
         for solve in ("replicated", "distributed"):
@@ -74,13 +79,16 @@ def main():
                 clocks = re.search(r"NSCD clocks: gather \+ detection (\S+) s, solve (\S+) s, scatter \+ overlap "
                                    r"projection (\S+) s", text)
                 final = re.search(r"in.column final: H_n = (\S+)", text)
+                stick = re.search(r"in.column NSCD stick solves: tried (\S+), kept (\S+), factorisations "
+                                  r"\(solve distributed: CG iterations\) (\S+)", text)
                 entry = results.setdefault((solve, ranks), [])
                 entry.append((elapsed, *[float(c) for c in clocks.groups()], max(rss), float(final.group(1))))
                 print(f"{solve:11s} {ranks} rank(s): {elapsed:6.1f} s wall, detection {entry[-1][1]:6.2f} s, solve "
                       f"{entry[-1][2]:6.2f} s, scatter {entry[-1][3]:5.2f} s, peak RSS per rank {max(rss):6.1f} MiB, "
-                      f"H_n {entry[-1][5]:.6f}", flush=True)
+                      f"H_n {entry[-1][5]:.6f}, stick solves tried {stick.group(1)}, kept {stick.group(2)}, "
+                      f"{'CG iterations' if solve == 'distributed' else 'factorisations'} {stick.group(3)}", flush=True)
     best = {key: min(values) for key, values in results.items()}
-    print(f"\nTable 1 column without wire, wall phase {args.time} time units from the relaxed restart, best of "
+    print(f"\nTable 1 column {'with' if args.wire else 'without'} wire, wall phase {args.time} time units from the relaxed restart, best of "
           f"{args.repeat}:")
     print(f"{'':24s} {'wall s':>8s} {'detect s':>9s} {'solve s':>8s} {'NSCD s':>8s} {'RSS MiB':>8s}")
     for (solve, ranks), b in sorted(best.items()):

@@ -138,12 +138,14 @@ struct Owned {
   Eigen::Vector3d velocity, angular_velocity, contact_force, contact_torque;
 };
 std::map<long, Owned> distributed_step(const std::vector<GrainState>& all, const std::vector<int>& owner, int workers,
-                                       const GrainStepOptions& options, std::vector<Eigen::Vector3d>* wall_forces = nullptr) {
+                                       const GrainStepOptions& options, std::vector<Eigen::Vector3d>* wall_forces = nullptr,
+                                       std::vector<GrainStepStats>* stats = nullptr) {
   const ShapeLibrary library = test_scenes::unit_cube_library();
   ThreadedExchange exchange(workers);
   std::map<long, Owned> out;
   std::mutex out_mutex;
   std::vector<std::thread> threads;
+  if (stats) stats->assign(workers, GrainStepStats());
   for (int w = 0; w < workers; w++)
     threads.emplace_back([&, w] {
       int owned = 0;
@@ -163,6 +165,7 @@ std::map<long, Owned> distributed_step(const std::vector<GrainState>& all, const
         out[grains[k].tag] = {result.velocities[k], result.angular_velocities[k], result.contact_forces[k],
                               result.contact_torques[k]};
       if (wall_forces && w == 0) *wall_forces = result.wall_forces;
+      if (stats) (*stats)[w] = result.stats;
     });
   for (std::thread& t : threads) t.join();
   return out;
@@ -191,6 +194,32 @@ TEST(DistributedStep, StackCutIntoPartsCarriesItsWeight) {
     }
     ASSERT_EQ(walls.size(), 1u);
     EXPECT_NEAR(walls[0].z(), -8 * kG, 1e-11);
+  }
+}
+
+// The stick solve's conjugate gradients, preconditioned by each worker's own block of
+// W_SS + ε D (core/nscd/distributed_stick_solve.h): on one worker that block is the whole
+// matrix and each stick solve ends after one iteration; cut into parts, M⁻¹ A − I has rank
+// at most 12 per body touched by closed contacts of two workers (its 6 velocities seen
+// from either side), so in exact arithmetic CG ends within 1 + 12 s iterations, s such
+// bodies: 1 at one cut of the stack of eight cubes, 2 at two cuts (round-off may add a
+// few). The stack's interfaces are face contacts of 4 points each: 8 × 4 × 3 = 96 unknowns.
+TEST(DistributedStep, StickSolveIterationsStayWithinTheCutsRank) {
+  std::vector<GrainState> stack;
+  for (int k = 0; k < 8; k++) stack.push_back(cube(k + 1, Eigen::Vector3d(0, 0, 0.5 + k)));
+  for (const auto& [owner, shared] : {std::pair<std::vector<int>, int>{{0, 0, 0, 0, 0, 0, 0, 0}, 0},
+                                      std::pair<std::vector<int>, int>{{0, 0, 0, 0, 1, 1, 1, 1}, 1},
+                                      std::pair<std::vector<int>, int>{{0, 0, 2, 2, 2, 1, 1, 1}, 2}}) {
+    const int workers = *std::max_element(owner.begin(), owner.end()) + 1;
+    std::vector<GrainStepStats> stats;
+    distributed_step(stack, owner, workers, tight(), nullptr, &stats);
+    // every worker takes part in every stick solve and counts the same iterations
+    const int solves = stats[0].subspace_solves, iterations = stats[0].subspace_factorizations;
+    std::printf("%d worker(s): %d stick solves, %d CG iterations\n", workers, solves, iterations);
+    ASSERT_GT(solves, 0);
+    for (const GrainStepStats& s : stats) EXPECT_EQ(s.subspace_factorizations, iterations);
+    EXPECT_LE(iterations, solves * (1 + 12 * shared + 2)) << workers << " workers";
+    if (shared == 0) EXPECT_EQ(iterations, solves);
   }
 }
 

@@ -294,9 +294,15 @@ double BodyContactOperator::rolling_residual(const std::vector<Eigen::Vector2d>&
 }
 
 const BlockSparseMatrix3& BodyContactOperator::delassus_matrix() {
-  if (delassus_.block_count() == contact_count()) return delassus_;
+  if (delassus_.block_count() != contact_count()) delassus_ = assemble_delassus(false);
+  return delassus_;
+}
+
+BlockSparseMatrix3 BodyContactOperator::true_delassus_matrix() const { return assemble_delassus(true); }
+
+BlockSparseMatrix3 BodyContactOperator::assemble_delassus(bool true_masses) const {
   const int n = contact_count();
-  delassus_ = BlockSparseMatrix3(n);
+  BlockSparseMatrix3 W(n);
   // per body, the contacts touching it with that side's H and M⁻¹ Hᵀ
   struct Touch {
     int contact;
@@ -304,17 +310,21 @@ const BlockSparseMatrix3& BodyContactOperator::delassus_matrix() {
     Eigen::Matrix<double, 6, 3> response;
   };
   std::vector<std::vector<Touch>> touches(bodies_.size());
+  const auto touch = [&](int c, int body, const RowJacobian& H) {
+    const double split = true_masses && !copies_.empty() ? std::max(copies_[body], 1.0) : 1.0;
+    touches[body].push_back({c, H, response(body, H) / split});
+  };
   for (int c = 0; c < n; ++c) {
     const Link& link = links_[c];
-    if (link.body_a >= 0) touches[link.body_a].push_back({c, link.jacobian_a, response(link.body_a, link.jacobian_a)});
-    if (link.body_b >= 0) touches[link.body_b].push_back({c, link.jacobian_b, response(link.body_b, link.jacobian_b)});
+    if (link.body_a >= 0) touch(c, link.body_a, link.jacobian_a);
+    if (link.body_b >= 0) touch(c, link.body_b, link.jacobian_b);
   }
   for (const std::vector<Touch>& body : touches) {
     for (const Touch& row : body) {
-      for (const Touch& column : body) delassus_.add(row.contact, column.contact, row.H * column.response);
+      for (const Touch& column : body) W.add(row.contact, column.contact, row.H * column.response);
     }
   }
-  return delassus_;
+  return W;
 }
 
 }  // namespace wiregrain

@@ -123,6 +123,10 @@ class BodyContactOperator final : public ContactOperator {
   std::vector<Eigen::Vector3d> delassus_product(const std::vector<Eigen::Vector3d>& x, WorkerExchange& exchange) const;
   // W_cc with the true masses (the sweep's delassus_block(c) has the split ones)
   Eigen::Matrix3d true_delassus_block(int c) const;
+  // W over this worker's contacts with the true masses: the principal block of every
+  // worker's W that belongs to this worker's contacts (its blocks between this worker's
+  // contacts and other workers' are not here); delassus_matrix() has the split masses.
+  BlockSparseMatrix3 true_delassus_matrix() const;
   // ‖q‖ over every worker's contacts (collective); free_velocity_norm() is this worker's
   double free_velocity_norm_over_workers(WorkerExchange& exchange) const {
     double squared = norm_q_ * norm_q_;
@@ -170,6 +174,8 @@ class BodyContactOperator final : public ContactOperator {
   void set_link(const NscdStep& step, int c);
   void set_rolling_blocks(const NscdStep& step);
   void set_copies(const NscdStep& step);
+  // W = H M⁻¹ Hᵀ over this worker's contacts, with the bodies' split masses or their true ones
+  BlockSparseMatrix3 assemble_delassus(bool true_masses) const;
 
   // M⁻¹ Hᵀ of one side
   Eigen::Matrix<double, 6, 3> response(int b, const ContactJacobian& H) const {

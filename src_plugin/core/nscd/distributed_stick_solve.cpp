@@ -4,31 +4,67 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/nscd/subspace_correction.h"
+
 namespace wiregrain {
 
 namespace {
-
-// Per contact: which of its components are unknowns of the stick solve (all three of a
-// closed frictional contact, the normal one of a closed frictionless one, none of an open
-// one), as subspace_correction's closed_components selects them.
-std::vector<Eigen::Vector3d> closed_mask(const BodyContactOperator& op, const std::vector<Eigen::Vector3d>& impulses,
-                                         const std::vector<ContactState>& states, double free_velocity_norm) {
-  const int n = op.contact_count();
-  const double closing = 1e-12 * free_velocity_norm;
-  std::vector<Eigen::Vector3d> mask(n, Eigen::Vector3d::Zero());
-  for (int c = 0; c < n; ++c) {
-    const bool loaded = states[c] != ContactState::open && impulses[c][0] > 0.0;
-    if (!loaded && op.velocity(c)[0] > closing) continue;
-    mask[c] = op.friction_coefficient(c) == 0.0 ? Eigen::Vector3d(1.0, 0.0, 0.0) : Eigen::Vector3d::Ones();
-  }
-  return mask;
-}
 
 double dot(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
   double sum = 0.0;
   for (std::size_t c = 0; c < a.size(); ++c) sum += a[c].dot(b[c]);
   return sum;
 }
+
+// z = M⁻¹ r on this worker's unknowns: the LDLᵀ factors of its own block of
+// W_SS + ε D_S (`factor`), or, where that factorisation failed, each contact's 3×3 block
+// (`block_inverse`).
+class WorkerPreconditioner {
+ public:
+  WorkerPreconditioner(const BodyContactOperator& op, const ClosedComponents& closed, double epsilon,
+                       NscdReport& report)
+      : closed_(closed) {
+    const int m = static_cast<int>(closed.components.size());
+    if (m == 0) return;
+    Eigen::SparseMatrix<double> regularized = closed_block(op.true_delassus_matrix(), closed);
+    for (int k = 0; k < m; ++k) regularized.coeffRef(k, k) *= 1.0 + epsilon;
+    regularized.makeCompressed();
+    factor_ = stick_solve_factors(regularized, report);
+    if (factor_ != nullptr) return;
+    const int n = op.contact_count();
+    block_inverse_.assign(n, Eigen::Matrix3d::Zero());
+    for (int c = 0; c < n; ++c) {
+      if (closed.unknown[3 * c] < 0) continue;
+      const Eigen::Matrix3d W = op.true_delassus_block(c);
+      if (closed.unknown[3 * c + 1] < 0) {
+        block_inverse_[c](0, 0) = 1.0 / ((1.0 + epsilon) * W(0, 0));
+      } else {
+        Eigen::Matrix3d regularized_block = W;
+        regularized_block.diagonal() *= 1.0 + epsilon;
+        block_inverse_[c] = regularized_block.inverse();
+      }
+    }
+  }
+
+  void apply(const std::vector<Eigen::Vector3d>& r, std::vector<Eigen::Vector3d>& z) const {
+    const std::vector<int>& components = closed_.components;
+    const int m = static_cast<int>(components.size());
+    if (factor_ == nullptr) {
+      for (std::size_t c = 0; c < r.size(); ++c) z[c] = block_inverse_.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(block_inverse_[c] * r[c]);
+      return;
+    }
+    Eigen::VectorXd rhs(m);
+    for (int i = 0; i < m; ++i) rhs[i] = r[components[i] / 3][components[i] % 3];
+    const Eigen::VectorXd solution = factor_->solve(rhs);
+    for (Eigen::Vector3d& v : z) v.setZero();
+    for (int i = 0; i < m; ++i) z[components[i] / 3][components[i] % 3] = solution[i];
+  }
+
+ private:
+  const ClosedComponents& closed_;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* factor_ = nullptr;
+  std::vector<Eigen::Matrix3d> block_inverse_;
+};
 
 }  // namespace
 
@@ -37,29 +73,19 @@ DistributedStickSolve distributed_stick_solve(const BodyContactOperator& op, con
                                               double free_velocity_norm, WorkerExchange& exchange) {
   const int n = op.contact_count();
   const double epsilon = settings.subspace_regularization;
-  const std::vector<Eigen::Vector3d> mask = closed_mask(op, impulses, states, free_velocity_norm);
+  const ClosedComponents closed = closed_components(op, impulses, states, free_velocity_norm);
   DistributedStickSolve out;
   out.candidate = impulses;
-  double unknowns = 0.0;
-  for (const Eigen::Vector3d& m : mask) unknowns += m.sum();
+  double unknowns = static_cast<double>(closed.components.size());
   exchange.sum_over_workers(&unknowns, 1);
   if (unknowns == 0.0) return out;
   out.any_closed = true;
-  // the preconditioner: per contact the inverse of (W_cc + ε diag W_cc) on its unknowns
-  std::vector<Eigen::Matrix3d> block_inverse(n, Eigen::Matrix3d::Zero());
-  std::vector<Eigen::Vector3d> diagonal(n, Eigen::Vector3d::Zero());
-  for (int c = 0; c < n; ++c) {
-    if (mask[c].isZero(0.0)) continue;
-    const Eigen::Matrix3d W = op.true_delassus_block(c);
-    diagonal[c] = W.diagonal().cwiseProduct(mask[c]);
-    if (mask[c][1] == 0.0) {
-      block_inverse[c](0, 0) = 1.0 / ((1.0 + epsilon) * W(0, 0));
-    } else {
-      Eigen::Matrix3d regularized = W;
-      regularized.diagonal() *= 1.0 + epsilon;
-      block_inverse[c] = regularized.inverse();
-    }
-  }
+  std::vector<Eigen::Vector3d> mask(n, Eigen::Vector3d::Zero()), diagonal(n, Eigen::Vector3d::Zero());
+  for (const int k : closed.components) mask[k / 3][k % 3] = 1.0;
+  for (int c = 0; c < n; ++c)
+    if (!mask[c].isZero(0.0)) diagonal[c] = op.true_delassus_block(c).diagonal().cwiseProduct(mask[c]);
+  NscdReport factorizations;  // (the caller counts the CG iterations instead)
+  const WorkerPreconditioner preconditioner(op, closed, epsilon, factorizations);
   // A p = W_SS p + ε D_S p on the unknowns
   const auto apply = [&](const std::vector<Eigen::Vector3d>& p) {
     std::vector<Eigen::Vector3d> product = op.delassus_product(p, exchange);
@@ -72,7 +98,7 @@ DistributedStickSolve distributed_stick_solve(const BodyContactOperator& op, con
   };
   std::vector<Eigen::Vector3d> x(n, Eigen::Vector3d::Zero()), residual(n), z(n), p(n);
   for (int c = 0; c < n; ++c) residual[c] = (-op.velocity(c)).cwiseProduct(mask[c]);
-  for (int c = 0; c < n; ++c) z[c] = block_inverse[c] * residual[c];
+  preconditioner.apply(residual, z);
   p = z;
   double rz = sum(dot(residual, z));
   const double rhs_norm = std::sqrt(sum(dot(residual, residual)));
@@ -86,8 +112,8 @@ DistributedStickSolve distributed_stick_solve(const BodyContactOperator& op, con
     for (int c = 0; c < n; ++c) {
       x[c] += alpha * p[c];
       residual[c] -= alpha * Ap[c];
-      z[c] = block_inverse[c] * residual[c];
     }
+    preconditioner.apply(residual, z);
     double sums[2] = {dot(residual, z), dot(residual, residual)};
     exchange.sum_over_workers(sums, 2);
     residual_norm = std::sqrt(sums[1]);

@@ -2,15 +2,22 @@
 // over workers (core/nscd/nscd_step.h, NscdStep::touching_copies): the same system,
 //     (W_SS + ε D_S) Δr_S = −u_S,   D_S = diag(W_SS),
 // over the closed contacts S of every worker, solved by conjugate gradients
-// preconditioned by the contacts' own 3×3 blocks (W_cc + ε diag(W_cc))⁻¹ instead of a
-// sparse factorisation (W_SS is spread over the workers): each iteration one product
-// W p, matrix-free on the bodies with their true masses and one exchange of the bodies'
-// velocity changes among their copies (BodyContactOperator::delassus_product), and two
-// sums over the workers. It stops once the residual is below 1e-12 of the right-hand
-// side, or after max(100, the closed components over all workers) iterations. CG from
-// Δr = 0 leaves what W_SS does not see (the null directions, where ε D alone acts) near
-// 0: the load split among the points of a face as the sweeps left it, as the
-// factorisation does.
+// preconditioned block-Jacobi by worker (additive Schwarz without overlap): each worker
+// factorises its own principal block of W_SS + ε D_S, the rows and columns of its own
+// contacts with the bodies' true masses (sparse LDLᵀ, stick_solve_factors: kept while the
+// block is the same, as on one worker), and applies its inverse to its part of the
+// residual; the blocks between two workers' contacts (through a body both touch) are left
+// to the iterations. Each iteration is one product W p, matrix-free on the bodies with
+// their true masses and one exchange of the bodies' velocity changes among their copies
+// (BodyContactOperator::delassus_product), and two sums over the workers. On one worker
+// the preconditioner is W_SS + ε D_S itself and CG ends after one iteration; on P workers
+// M⁻¹ A − I has rank at most 12 × (bodies touched by closed contacts of two workers), which
+// bounds the iterations in exact arithmetic. It stops once the residual is below 1e-12 of
+// the right-hand side, or after max(100, the closed components over all workers)
+// iterations. Where a worker's factorisation fails, its contacts' own 3×3 blocks
+// (W_cc + ε diag W_cc)⁻¹ precondition instead. CG from Δr = 0 leaves what W_SS does not
+// see (the null directions, where ε D alone acts) near 0: the load split among the points
+// of a face as the sweeps left it, as the factorisation does.
 //
 // The caller (core/nscd/gauss_seidel.cpp) projects the candidate r_S + Δr_S on the
 // Coulomb cones, applies it on every worker and keeps it when it halves the Siconos error

@@ -7,24 +7,14 @@
 
 namespace wiregrain {
 
-namespace {
-
-// The unknowns of a stick solve: the three components of each closed contact, only the
-// normal one of a frictionless contact (its tangential impulse is 0 and stays so).
-// components: the unknowns as 3 c + a (contact c, component a); unknown[3 c + a]: its
-// index among them, −1 for a component left out.
-struct ClosedComponents {
-  std::vector<int> unknown, components;
-};
-
 ClosedComponents closed_components(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses,
-                                   const std::vector<ContactState>& states) {
+                                   const std::vector<ContactState>& states, double free_velocity_norm) {
   const int n = op.contact_count();
   ClosedComponents closed;
   closed.unknown.assign(3 * n, -1);
   // closing or touching (u_n ≤ 0 up to rounding): e.g. the interfaces of a stack falling
   // as one body in the first sweeps, which Gauss–Seidel loads one interface per sweep
-  const double closing = 1e-12 * op.free_velocity_norm();
+  const double closing = 1e-12 * free_velocity_norm;
   for (int c = 0; c < n; ++c) {
     const bool loaded = states[c] != ContactState::open && impulses[c][0] > 0.0;
     if (!loaded && op.velocity(c)[0] > closing) continue;
@@ -37,7 +27,6 @@ ClosedComponents closed_components(const ContactOperator& op, const std::vector<
   return closed;
 }
 
-// W_SS: the rows and columns of W of the closed components.
 Eigen::SparseMatrix<double> closed_block(const BlockSparseMatrix3& W, const ClosedComponents& closed) {
   const int m = static_cast<int>(closed.components.size());
   std::vector<Eigen::Triplet<double>> entries;
@@ -55,17 +44,7 @@ Eigen::SparseMatrix<double> closed_block(const BlockSparseMatrix3& W, const Clos
   return A;
 }
 
-// The LDLᵀ factors of `regularized` (W_SS + ε D_S, compressed), nullptr when the
-// factorisation fails. The fill-reducing ordering (AMD) costs ~20 times the numerical
-// factorisation; it is kept from the last solve of this thread while the pattern of W_SS
-// is unchanged (a resting stack or pile: the same contacts step after step), and the
-// factorisation too while its values are the same to the bit (a pile at rest: the same
-// poses; the same factors as a new factorisation would give, so the results do not
-// change). Kept factors of a W_SS that changed are not kept, even refined on the current
-// one: a coupled column at rest changes W_SS by 5e-8 of its largest entry per step, and
-// factors 1e-6 or 1e-4 old make some stick solves harmful (the near-null directions that
-// ε holds move). report counts the numerical factorisations.
-const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* cached_factors(
+const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* stick_solve_factors(
     const Eigen::SparseMatrix<double>& regularized, NscdReport& report) {
   struct FactorCache {
     std::vector<int> outer, inner;
@@ -102,13 +81,12 @@ const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* cached_factors(
   return &factor;
 }
 
-}  // namespace
 
 StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Vector3d>& impulses,
                                       const std::vector<ContactState>& states, const SolverSettings& settings,
                                       double error_before, double& error_after, NscdReport& report) {
   const double regularization = settings.subspace_regularization;
-  const ClosedComponents closed = closed_components(op, impulses, states);
+  const ClosedComponents closed = closed_components(op, impulses, states, op.free_velocity_norm());
   const std::vector<int>& components = closed.components;
   if (components.empty()) return StickSolveOutcome::harmless;
   const BlockSparseMatrix3& W = op.delassus_matrix();
@@ -117,7 +95,7 @@ StickSolveOutcome subspace_correction(ContactOperator& op, std::vector<Eigen::Ve
   Eigen::SparseMatrix<double> regularized = A;
   for (int k = 0; k < m; ++k) regularized.coeffRef(k, k) *= 1.0 + regularization;
   regularized.makeCompressed();
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* const factor = cached_factors(regularized, report);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* const factor = stick_solve_factors(regularized, report);
   if (factor == nullptr) return StickSolveOutcome::harmful;
   Eigen::VectorXd rhs(m);
   Eigen::VectorXd current(m);

@@ -55,12 +55,42 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include <vector>
 
+#include "core/nscd/block_sparse_matrix.h"
 #include "core/nscd/gauss_seidel.h"
 
 namespace wiregrain {
+
+// The unknowns of a stick solve: the three components of each closed contact (loaded:
+// not open and r_n > 0; or closing or touching: u_n ≤ 1e-12 free_velocity_norm), only the
+// normal one of a frictionless contact (its tangential impulse is 0 and stays so).
+// components: the unknowns as 3 c + a (contact c, component a), ascending; unknown[3 c + a]:
+// its index among them, −1 for a component left out.
+struct ClosedComponents {
+  std::vector<int> unknown, components;
+};
+ClosedComponents closed_components(const ContactOperator& op, const std::vector<Eigen::Vector3d>& impulses,
+                                   const std::vector<ContactState>& states, double free_velocity_norm);
+
+// W_SS: the rows and columns of W of the closed components.
+Eigen::SparseMatrix<double> closed_block(const BlockSparseMatrix3& W, const ClosedComponents& closed);
+
+// The LDLᵀ factors of `regularized` (W_SS + ε D_S, compressed), nullptr when the
+// factorisation fails. The fill-reducing ordering (AMD) costs ~20 times the numerical
+// factorisation; it is kept from the last solve of this thread while the pattern of W_SS
+// is unchanged (a resting stack or pile: the same contacts step after step), and the
+// factorisation too while its values are the same to the bit (a pile at rest: the same
+// poses; the same factors as a new factorisation would give, so the results do not
+// change). Kept factors of a W_SS that changed are not kept, even refined on the current
+// one: a coupled column at rest changes W_SS by 5e-8 of its largest entry per step, and
+// factors 1e-6 or 1e-4 old make some stick solves harmful (the near-null directions that
+// ε holds move). report counts the numerical factorisations.
+const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>* stick_solve_factors(
+    const Eigen::SparseMatrix<double>& regularized, NscdReport& report);
 
 // What one subspace correction did: kept (halved the Siconos error), dropped as
 // harmless (the error neither halved nor doubled: a stack already exact to round-off),
