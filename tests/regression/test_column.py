@@ -15,7 +15,7 @@ import unittest
 
 import numpy as np
 
-from liggghts_run import SOURCE, DeckTestCase, deck, main, run
+from liggghts_run import SOURCE, DeckTestCase, deck, dump_frames, main, run
 
 COLUMN = deck("input_scripts/in.column")
 TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1, "root": SOURCE}
@@ -63,19 +63,6 @@ def minimal_dump(path):
     names = lines[start].split()[2:]
     table = np.loadtxt(lines[start + 1:], ndmin=2)
     return dict(zip(names, table.T))
-
-
-def dump_frames(path):
-    """Every snapshot of a dump custom file, the shortest way: [(step, {column: array})]."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    frames = []
-    for k, line in enumerate(lines):
-        if line.startswith("ITEM: TIMESTEP"):
-            n = int(lines[k + 3])
-            names = lines[k + 8].split()[2:]
-            frames.append((int(lines[k + 1]), dict(zip(names, np.loadtxt(lines[k + 9:k + 9 + n], ndmin=2).T))))
-    return frames
 
 
 def assert_dump_observables_match(test, result, *options):

@@ -6,7 +6,7 @@ import os
 
 import numpy as np
 
-from liggghts_run import DeckTestCase, full_precision, grains_data, main, read_dump, run, warning_lines
+from liggghts_run import DeckTestCase, dump_frames, full_precision, grains_data, main, read_dump, run, warning_lines
 from test_wire_grain import deck as wire_deck, scene as wire_scene
 
 G = 1.0
@@ -35,21 +35,6 @@ read_data       grains.data
 """
 
 
-def dump_snapshots(path):
-    """Every snapshot of a LAMMPS 'dump custom' text file, each {column: array} sorted by id."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    snapshots = []
-    for k, line in enumerate(lines):
-        if line.startswith("ITEM: TIMESTEP"):
-            natoms = int(lines[k + 3])
-            names = lines[k + 8].split()[2:]
-            data = np.array([[float(w) for w in row.split()] for row in lines[k + 9:k + 9 + natoms]])
-            data = data[np.argsort(data[:, names.index("id")])]
-            snapshots.append({name: data[:, j] for j, name in enumerate(names)})
-    return snapshots
-
-
 class Stack(DeckTestCase):
     # N unit cubes (m = 1) stacked on a floor, the fix's default solver (method subspace,
     # tolerance 1e-4): interface k from the top carries k m g, the floor N m g, no grain
@@ -76,7 +61,7 @@ run             {steps}
         t = r.thermo()
         k = np.arange(1, n + 1)
         worst, sideways = 0.0, 0.0
-        for d in dump_snapshots(r.path("dump.s"))[1:]:          # after the first step
+        for d in [frame for _, frame in dump_frames(r.path("dump.s"))][1:]:          # after the first step
             order = np.argsort(-d["z"])                          # top first
             interface = np.cumsum(d["f_nscd[3]"][order])         # force from below on the top k grains
             worst = max(worst, np.max(np.abs(interface / (k * G) - 1.0)))

@@ -201,6 +201,24 @@ def read_dump(path, columns=None):
     return {name: data[:, j] for j, name in enumerate(names)}
 
 
+def dump_frames(path):
+    """Every snapshot of a LAMMPS 'dump custom' text file: [(step, {column: array})], each
+    sorted by id when it has one."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    frames = []
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            count = int(lines[k + 3])
+            names = lines[k + 8].split()[2:]
+            data = np.array([[float(w) for w in row.split()] for row in lines[k + 9:k + 9 + count]])
+            data = data.reshape(count, len(names))
+            if "id" in names:
+                data = data[np.argsort(data[:, names.index("id")])]
+            frames.append((int(lines[k + 1]), {name: data[:, j] for j, name in enumerate(names)}))
+    return frames
+
+
 def read_local_dump(path):
     """Last snapshot of a LAMMPS 'dump local' text file as {column: array} (rows in the
     file's order; empty arrays when the snapshot has no entries)."""
