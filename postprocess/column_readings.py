@@ -17,8 +17,9 @@ when the walls start, the reference of every reading). The readings, for one sna
   averaged over the nodes within R of the axis. A slumping flank lowers it.
 - rim: the same mean over the nodes between R − cell and R from the axis: the height of the
   column at the wire's radius, where a wall of grains should stand.
-- volume: the grains' mean centre height times 2 (the height of a uniform block of the same
-  centre of mass; it falls as the column spreads, whether its top is flat or not).
+- centre: the grains' mean centre height times 2 (the height of a uniform block with the same
+  mean centre height; it falls as the column spreads, whether its top is flat or not): the
+  deck's H_c, whose ratio H_c_n column.obs and the deck's final line give.
 
 Prints one line per snapshot and run (t, then each reading H and H/H(t_walls)); --csv writes
 them, --plot draws the normalised readings against the time since the walls started, one
@@ -34,7 +35,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from observables import read_dump  # noqa: E402
 
-READINGS = ("q98", "surface", "rim", "volume")
+READINGS = ("q98", "surface", "rim", "centre")
 
 
 def readings(x, y, z, top, radius, cell):
@@ -53,7 +54,7 @@ def readings(x, y, z, top, radius, cell):
     height = np.where(near, top[None, :], 0.0).max(axis=1)
     rim = r > radius - cell
     return {"q98": q98, "surface": float(height.mean()), "rim": float(height[rim].mean()),
-            "volume": 2.0 * float(np.mean(z))}
+            "centre": 2.0 * float(np.mean(z))}
 
 
 def grains_of(atoms, grain_type=1):

@@ -55,7 +55,8 @@ def read_summary(path):
 def read_rows(path):
     """{(value, seed): row} of a summary.csv, numbers as floats."""
     with open(path, newline="") as f:
-        return {(float(r["value"]), int(r["seed"])): {k: float(v) for k, v in r.items() if k not in ("param", "value", "seed")}
+        return {(float(r["value"]), int(r["seed"])): {k: float(v) if v != "" else float("nan") for k, v in r.items()
+                                                      if k not in ("param", "value", "seed")}
                 for r in csv.DictReader(f)}
 
 

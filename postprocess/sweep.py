@@ -40,7 +40,10 @@ import time
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FINAL = re.compile(r"^in\.column final: H_n = (\S+) phi_p = (\S+) U_s/L = (\S+) z_wpc = (\S+) "
                    r"\(H0 = (\S+), H = (\S+)\)", re.M)
-COLUMNS = ["param", "value", "seed", "H_n", "phi_p", "U_s/L", "z_wpc", "H0", "H", "wall_s"]
+# the centre reading H_c_n (twice the grains' mean centre height over its value when the
+# walls started), on the same line; empty in the table for a deck that does not print it
+CENTRE = re.compile(r"^in\.column final: .*; H_c_n = (\S+) ", re.M)
+COLUMNS = ["param", "value", "seed", "H_n", "phi_p", "U_s/L", "z_wpc", "H0", "H", "H_c_n", "wall_s"]
 
 
 def parse_final(log_text):
@@ -49,7 +52,10 @@ def parse_final(log_text):
     if not found:
         return None
     values = [float(v) for v in found[-1]]
-    return dict(zip(["H_n", "phi_p", "U_s/L", "z_wpc", "H0", "H"], values))
+    observables = dict(zip(["H_n", "phi_p", "U_s/L", "z_wpc", "H0", "H"], values))
+    centre = CENTRE.findall(log_text)
+    observables["H_c_n"] = float(centre[-1]) if centre else ""
+    return observables
 
 
 def run_directory(out, param, value, seed):
@@ -110,7 +116,7 @@ def write_summary(path, rows):
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         for row in rows:
-            writer.writerow({k: row[k] for k in COLUMNS})
+            writer.writerow({k: row.get(k, "") for k in COLUMNS})
 
 
 def finished(args, value, seed):

@@ -9,6 +9,7 @@ import math
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import unittest
@@ -19,7 +20,7 @@ from liggghts_run import SOURCE, DeckTestCase, deck, dump_frames, main, run
 
 COLUMN = deck("input_scripts/in.column")
 TINY = {"R": 3, "nlayers": 2, "Np": 24, "t_layer": 0.5, "t_relax": 2.5, "t_end": 3.5, "t_obs": 0.1, "root": SOURCE}
-NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc")
+NAMES = ("H_n", "phi_p", "U_s/L", "z_wpc", "H_c_n")
 
 
 def final_observables(result):
@@ -81,6 +82,9 @@ def assert_dump_observables_match(test, result, *options):
     beads = dumps[1]["type"] == 2
     segments = np.count_nonzero(dumps[1]["c_energy[3]"][beads] > 0)
     test.assertAlmostEqual(dumps[1]["f_wg[4]"][beads].sum() / segments, final["z_wpc"], delta=1e-14)
+    # H_c_n: the grains' mean centre height in the final dump over that in the relaxed one
+    centre = [d["z"][d["type"] == 1].mean() for d in dumps]
+    test.assertAlmostEqual(centre[1] / centre[0], final["H_c_n"], delta=1e-13)
 
 
 def assert_vtk_observables_match(test, result, h_n_delta=1e-14):
@@ -102,6 +106,9 @@ class Column(DeckTestCase):
     @classmethod
     def setUpClass(cls):
         cls.straight = run(COLUMN, variables=dict(TINY, t_tops=0.2))
+        # (tests that continue it in its folder write column.obs again)
+        if os.path.exists(cls.straight.path("column.obs")):
+            shutil.copy(cls.straight.path("column.obs"), cls.straight.path("straight_column.obs"))
 
     def test_runs_and_measures(self):
         self.assertRanCleanly(self.straight)
@@ -126,7 +133,7 @@ class Column(DeckTestCase):
         # reads the same q98 and normalises by its value in the relaxed dump (H0)
         self.assertRanCleanly(self.straight)
         frames = dump_frames(self.straight.path("post/tops.dump"))
-        obs = {int(r[0]): r for r in np.loadtxt(self.straight.path("column.obs"), ndmin=2)}
+        obs = {int(r[0]): r for r in np.loadtxt(self.straight.path("straight_column.obs"), ndmin=2)}
         with open(self.straight.path("column_walls.txt")) as f:
             walls = float(f.read().split()[1])
         steps = [step for step, _ in frames]
@@ -261,7 +268,7 @@ class Column(DeckTestCase):
         self.assertRegex(resumed.output, r"Loop time of \S+ on 1 procs for 200 steps")
         a, b = final_observables(straight), final_observables(resumed)
         print(f"\nstraight {a}\nresume 3 {b}")
-        for name in ("H_n", "phi_p", "z_wpc"):
+        for name in ("H_n", "phi_p", "z_wpc", "H_c_n"):
             self.assertEqual(a[name], b[name], name)
         self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
         self.assertIn("at t = 3.5 (t_end 3.5; walls moving since t = 2.5)", resumed.output)

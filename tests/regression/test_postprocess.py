@@ -53,6 +53,7 @@ class Sweep(DeckTestCase):
                 final = [l for l in f if l.startswith("in.column final:")][-1]
             # the row holds the deck's own final line
             self.assertEqual(float(r["H_n"]), float(final.split("H_n = ")[1].split()[0]))
+            self.assertEqual(float(r["H_c_n"]), float(final.split("H_c_n = ")[1].split()[0]))
             self.assertEqual(float(r["U_s/L"]), 0.0)
         # the seeds differ: the columns differ
         self.assertNotEqual(rows[0]["H0"], rows[1]["H0"])
@@ -182,7 +183,7 @@ class ColumnReadings(DeckTestCase):
     none, so the surface reading is h times the disk's share left of x = -0.25 (the circular
     segment's area R^2 acos(d/R) - d sqrt(R^2 - d^2) over pi R^2, d = 0.25), within the grid's
     resolution; the rim (nodes within a cell of r = R) is h times the share of that ring left
-    of x = -0.25, about (pi - 2 asin(d / R)) / 2 pi; q98 is h; the volume reading, twice the
+    of x = -0.25, about (pi - 2 asin(d / R)) / 2 pi; q98 is h; the centre reading, twice the
     mean centre height, is h for centres at h/2. Each reading is normalised by the relaxed
     column's (tops 2h, centres at h): all 0.5."""
 
@@ -209,10 +210,10 @@ class ColumnReadings(DeckTestCase):
         later = {k: float(v) for k, v in rows[1].items() if k != "run"}
         segment = (R * R * math.acos(d / R) - d * math.sqrt(R * R - d * d)) / (math.pi * R * R)
         self.assertAlmostEqual(later["H_q98"], h, delta=1e-12)
-        self.assertAlmostEqual(later["H_volume"], h, delta=1e-12)
+        self.assertAlmostEqual(later["H_centre"], h, delta=1e-12)
         self.assertAlmostEqual(later["H_surface"], h * segment, delta=0.01 * h)
         self.assertAlmostEqual(later["H_rim"], h * (math.pi - 2 * math.asin(d / R)) / (2 * math.pi), delta=0.01 * h)
-        for k in ("q98", "surface", "rim", "volume"):
+        for k in ("q98", "surface", "rim", "centre"):
             self.assertAlmostEqual(later[f"Hn_{k}"], 0.5, delta=1e-7, msg=k)
             self.assertAlmostEqual(float(rows[0][f"Hn_{k}"]), 1.0, delta=1e-12, msg=k)
 
