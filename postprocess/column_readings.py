@@ -2,10 +2,11 @@
 """Readings of a column's height other than the 0.98 quantile of the grains' tops, through
 the wall phase of an in.column run, each normalised by its own value when the walls start.
 
-    postprocess/column_readings.py RUN [RUN ...] --radius R [--cell 1.0] [--dt 1e-3]
+    postprocess/column_readings.py RUN [RUN ...] [--radius R] [--cell 1.0] [--dt 1e-3]
         [--csv OUT.csv] [--plot OUT.png] [--label NAME ...]
 
-RUN is an in.column run folder run with `-var t_tops T`: its post/tops.dump (the grains'
+RUN is an in.column run folder run with `-var t_tops T`, or a CSV this script wrote (--csv;
+its rows are read back, so that a kept table can be drawn again without the dumps): its post/tops.dump (the grains'
 id x y z and top every T in the wall phase) and post/column_relaxed_STEP.dump (the column
 when the walls start, the reference of every reading). The readings, for one snapshot:
 
@@ -82,7 +83,7 @@ def series_of(run, radius, cell, dt):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", nargs="+")
-    parser.add_argument("--radius", type=float, required=True, help="the loop radius R")
+    parser.add_argument("--radius", type=float, help="the loop radius R (needed for run folders)")
     parser.add_argument("--cell", type=float, default=1.0, help="the surface cells' side (a_max)")
     parser.add_argument("--dt", type=float, default=1e-3, help="the LIGGGHTS time step of the runs")
     parser.add_argument("--label", nargs="*", help="one name per run (default: the folder's name)")
@@ -92,8 +93,17 @@ def main(argv=None):
     labels = args.label or [os.path.basename(os.path.normpath(r)) for r in args.runs]
     if len(labels) != len(args.runs):
         sys.exit("column_readings.py: --label needs one name per run")
+    if any(r.endswith(".csv") for r in args.runs) and args.label:
+        sys.exit("column_readings.py: a CSV's rows keep their run names (no --label with a CSV)")
     rows = []
     for run, label in zip(args.runs, labels):
+        if run.endswith(".csv"):
+            with open(run) as f:
+                table = [line.rstrip("\n").split(",") for line in f][1:]
+            rows += [[r[0]] + [float(v) for v in r[1:]] for r in table]
+            continue
+        if args.radius is None:
+            sys.exit("column_readings.py: --radius R is needed to read a run folder")
         series = series_of(run, args.radius, args.cell, args.dt)
         ref = series[0][1]
         for t, h in series:
@@ -114,7 +124,7 @@ def main(argv=None):
         fig, axes = plt.subplots(1, len(READINGS), figsize=(4 * len(READINGS), 3.4), sharey=True)
         for ax, k in zip(axes, READINGS):
             col = head.index(f"Hn_{k}")
-            for label in labels:
+            for label in dict.fromkeys(r[0] for r in rows):
                 mine = [r for r in rows if r[0] == label]
                 ax.plot([r[1] for r in mine], [r[col] for r in mine], label=label)
             ax.set_title(k)

@@ -205,6 +205,11 @@ class ColumnReadings(DeckTestCase):
             with open(os.path.join(work, "readings.csv")) as f:
                 rows = list(csv.DictReader(f))
             self.assertTrue(os.path.getsize(os.path.join(work, "readings.png")) > 0)
+            # the CSV read back: the same rows, drawn again without the dumps
+            again, text_again = script("column_readings.py", "readings.csv", "--plot", "again.png", cwd=work)
+            self.assertEqual(again, 0, text_again)
+            self.assertEqual(text_again.splitlines(), text.splitlines())
+            self.assertTrue(os.path.getsize(os.path.join(work, "again.png")) > 0)
         # the relaxed column, then the snapshot after it (the one at the relaxed step is not a new one)
         self.assertEqual([float(r["t_since_walls"]) for r in rows], [0.0, 2.0])
         later = {k: float(v) for k, v in rows[1].items() if k != "run"}
