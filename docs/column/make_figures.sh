@@ -59,3 +59,6 @@ L=$R/column_load_2026-12-05
 # to compare with"): floor load over weight against the fill height, Janssen's fits
 S=$R/silo_2026-12-06
 /usr/bin/python3 $P/janssen.py $S/rest/seed* $S/mobilized/seed* --plot docs/figures/silo_janssen.png > $S/janssen.txt
+# the Table 1 column with and without wire: four readings of its height through the wall phase
+/usr/bin/python3 $P/column_readings.py $R/table1_readings_2026-12-06/readings.csv \
+    --plot docs/column/table1_readings_2026-12-06.png
