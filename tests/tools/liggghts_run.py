@@ -86,8 +86,8 @@ def run(deck_text, np_ranks=1, variables=None, workdir=None, files=None, extra_a
     cmd += list(extra_args)
     if np_ranks > 1:
         cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(np_ranks)] + cmd
-    # (Open MPI's session directory in the run's own folder: runs started at once by ctest -j
-    # raced to create the shared /tmp/ompi.HOST.UID and one stopped with "File exists")
+    # (Open MPI's temporary directory in the run's own folder: runs started at once by
+    # ctest -j raced to create the shared /tmp/ompi.HOST.UID and one stopped with "File exists")
     env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_orte_tmpdir_base=workdir)
     proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           stdin=subprocess.DEVNULL, timeout=TIMEOUT, env=env)
