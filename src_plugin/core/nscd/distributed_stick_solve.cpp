@@ -10,6 +10,9 @@ namespace wiregrain {
 
 namespace {
 
+// CG stops once its residual has not halved over this many iterations (header)
+constexpr int kStallWindow = 50;
+
 double dot(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
   double sum = 0.0;
   for (std::size_t c = 0; c < a.size(); ++c) sum += a[c].dot(b[c]);
@@ -104,7 +107,12 @@ DistributedStickSolve distributed_stick_solve(const BodyContactOperator& op, con
   const double rhs_norm = std::sqrt(sum(dot(residual, residual)));
   const int cap = std::max(100, static_cast<int>(unknowns));
   double residual_norm = rhs_norm;
+  double residual_before = rhs_norm;  // kStallWindow iterations ago
   while (out.iterations < cap && residual_norm > 1e-12 * rhs_norm) {
+    if (out.iterations > 0 && out.iterations % kStallWindow == 0) {
+      if (residual_norm > 0.5 * residual_before) break;  // stalled (header)
+      residual_before = residual_norm;
+    }
     const std::vector<Eigen::Vector3d> Ap = apply(p);
     const double pAp = sum(dot(p, Ap));
     if (!(pAp > 0.0)) break;  // (a direction W_SS + ε D does not see: round-off)

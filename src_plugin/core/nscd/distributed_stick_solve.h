@@ -13,7 +13,10 @@
 // the preconditioner is W_SS + ε D_S itself and CG ends after one iteration; on P workers
 // M⁻¹ A − I has rank at most 12 × (bodies touched by closed contacts of two workers), which
 // bounds the iterations in exact arithmetic. It stops once the residual is below 1e-12 of
-// the right-hand side, or after max(100, the closed components over all workers)
+// the right-hand side, once it has not halved over 50 iterations (stalled: W_SS of a pile
+// is singular and ε = 1e-9 leaves W_SS + ε D ill-conditioned, so CG there creeps for
+// thousands of iterations to no gain; measured on the Table 1 column in
+// docs/benchmarks.md), or after max(100, the closed components over all workers)
 // iterations. Where a worker's factorisation fails, its contacts' own 3×3 blocks
 // (W_cc + ε diag W_cc)⁻¹ precondition instead. CG from Δr = 0 leaves what W_SS does not
 // see (the null directions, where ε D alone acts) near 0: the load split among the points
