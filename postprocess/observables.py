@@ -48,7 +48,8 @@ import numpy as np
 
 
 def read_dump(path):
-    """The snapshots of a LAMMPS text dump: [(step, {column: array})]."""
+    """The snapshots of a LAMMPS text dump, `dump custom` (ITEM: ATOMS) or `dump local`
+    (ITEM: ENTRIES): [(step, {column: array})]."""
     snapshots = []
     with open(path) as f:
         lines = f.read().splitlines()
@@ -60,8 +61,8 @@ def read_dump(path):
         step = int(lines[k + 1])
         n = int(lines[k + 3])
         header = lines[k + 8].split()
-        if header[:2] != ["ITEM:", "ATOMS"]:
-            sys.exit(f"observables.py: {path}: expected 'ITEM: ATOMS' at line {k + 9}")
+        if header[:2] not in (["ITEM:", "ATOMS"], ["ITEM:", "ENTRIES"]):
+            sys.exit(f"observables.py: {path}: expected 'ITEM: ATOMS' or 'ITEM: ENTRIES' at line {k + 9}")
         names = header[2:]
         rows = np.array([[float(w) for w in line.split()] for line in lines[k + 9:k + 9 + n]]).reshape(n, len(names))
         snapshots.append((step, {name: rows[:, j] for j, name in enumerate(names)}))

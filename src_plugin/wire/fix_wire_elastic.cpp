@@ -79,7 +79,7 @@ FixWireElastic::FixWireElastic(LAMMPS *lmp, int narg, char **arg)
   extscalar = 1;
   extvector = 0;
   peratom_flag = 1;
-  size_peratom_cols = 3;
+  size_peratom_cols = kBeadColumns;
   peratom_freq = 1;
   local_sums_[0] = local_sums_[1] = local_sums_[2] = 0.0;
   global_sums_[0] = global_sums_[1] = global_sums_[2] = 0.0;
@@ -210,7 +210,8 @@ void FixWireElastic::post_force(int /*vflag*/) {
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
 
-  for (int i = 0; i < nlocal; i++) bead_energy_[i][0] = bead_energy_[i][1] = bead_energy_[i][2] = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < kBeadColumns; k++) bead_energy_[i][k] = 0.0;
 
   // image of bead j nearest to position `ref`
   const auto image_near = [&](int j, const Eigen::Vector3d &ref) {
@@ -250,6 +251,7 @@ void FixWireElastic::post_force(int /*vflag*/) {
         bead_energy_[n][0] += 0.5 * s.energy;
       }
       bead_energy_[i][2] = (xn - xi).norm();
+      bead_energy_[i][3] = s.tension;
       if (!(bead_energy_[i][2] > 0.0))  // the stretching force along (xn − xi)/|xn − xi| has no direction
         error->one(FLERR, ("fix wire/elastic (id " + std::string(id) + "): the segment from bead " +
                            std::to_string(tag[i]) + " to bead " + std::to_string(next[i]) + " has zero length at step " +
@@ -329,12 +331,12 @@ wiregrain::BeadElasticEnergy FixWireElastic::bead_energy(int i) const {
 }
 
 void FixWireElastic::grow_arrays(int nmax) {
-  memory->grow(bead_energy_, nmax, 3, "wire/elastic:bead_energy");
+  memory->grow(bead_energy_, nmax, kBeadColumns, "wire/elastic:bead_energy");
   array_atom = bead_energy_;
 }
 
 void FixWireElastic::copy_arrays(int i, int j, int /*delflag*/) {
-  for (int k = 0; k < 3; k++) bead_energy_[j][k] = bead_energy_[i][k];
+  for (int k = 0; k < kBeadColumns; k++) bead_energy_[j][k] = bead_energy_[i][k];
 }
 
-double FixWireElastic::memory_usage() { return double(atom->nmax) * 3 * sizeof(double); }
+double FixWireElastic::memory_usage() { return double(atom->nmax) * kBeadColumns * sizeof(double); }

@@ -66,7 +66,8 @@ class FixWireElastic : public Fix, public wiregrain_lmp::WireEnergySource {
   std::vector<double> youngs_modulus_of_type_;          // E_w per atom type, from init()
   double m_elo_, m_rot_;
   class AtomVecWire *wire_;
-  double **bead_energy_;        // per bead: stretching, bending energy, segment length
+  static constexpr int kBeadColumns = 4;
+  double **bead_energy_;        // per bead: stretching, bending energy, length and tension of the segment to the next bead
   double local_sums_[3];        // stretching, bending energy, wire length of owned beads
   double global_sums_[3];
   bigint sums_step_;            // step of global_sums_, -1 if none

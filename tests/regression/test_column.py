@@ -4,6 +4,7 @@ relaxed column's restart file gives the straight run's observables, and the deck
 checks of its variables stop with an ERROR."""
 
 import concurrent.futures
+import csv
 import glob
 import math
 import json
@@ -105,7 +106,7 @@ def assert_vtk_observables_match(test, result, h_n_delta=1e-14):
 class Column(DeckTestCase):
     @classmethod
     def setUpClass(cls):
-        cls.straight = run(COLUMN, variables=dict(TINY, t_tops=0.2))
+        cls.straight = run(COLUMN, variables=dict(TINY, t_tops=0.2, t_wire_state=0.5))
         # (tests that continue it in its folder write column.obs again)
         if os.path.exists(cls.straight.path("column.obs")):
             shutil.copy(cls.straight.path("column.obs"), cls.straight.path("straight_column.obs"))
@@ -296,6 +297,75 @@ class Column(DeckTestCase):
         print(f"\ntiny column without wire: {obs}")
         self.assertEqual((obs["U_s/L"], obs["z_wpc"]), (0.0, 0.0))
         self.assertGreater(obs["phi_p"], 0.0)
+
+    def test_wire_along_its_length(self):
+        # t_wire_state 0.5: post/wire_state.dump holds the beads every 500 steps of the wall
+        # phase. A laid segment's tension is E_w pi r_w^2 (l - l_w)/l_w of its dumped length
+        # (E_w = 100, r_w = 0.1, l_w = 0.2: 9 digits written); the contacts of
+        # post/wire_grain_contacts.dump (compute contact/local) are, segment by segment, the
+        # grains fix wire/grain counted for the bead (f_wg[4]). postprocess/wire_along.py finds
+        # the paper's two loops (two chains, no join) and the continuous wire's two layers
+        # (one chain, the second call's beads beyond the first's a join) and counts every
+        # contact that carries a force once.
+        n = math.floor(4 * math.pi / (2 * math.asin(0.2 / 6))) + 1
+        continuous = run(COLUMN, variables=dict(TINY, wire_layout="continuous", t_wire_state=0.5))
+        for result, joined, chains in ((self.straight, False, 2), (continuous, True, 1)):
+            self.assertRanCleanly(result)
+            states = dump_frames(result.path("post/wire_state.dump"))
+            contacts = dict(dump_frames(result.path("post/wire_grain_contacts.dump")))
+            self.assertEqual([s for s, _ in states], [2500, 3000, 3500])
+            ids = states[0][1]["id"].astype(int)
+            first = ids[0]
+            laid = (ids >= first) & (ids < first + n - 1)  # the first layer's laid segments
+            touching = carrying = 0
+            for step, beads in states:
+                tension = 100 * math.pi * 0.01 * (beads["f_elastic[3]"] - 0.2) / 0.2
+                np.testing.assert_allclose(beads["f_elastic[4]"][laid], tension[laid], rtol=0, atol=2e-7)
+                rows = contacts[step]
+                per_segment = np.bincount(rows["c_wgc[2]"].astype(int), minlength=ids.max() + 1)[ids]
+                np.testing.assert_array_equal(per_segment, beads["f_wg[4]"])
+                touching += int(beads["f_wg[4]"].sum())
+                carrying += int(np.sum(rows["c_wgc[16]"] > 0))
+            self.assertGreater(touching, 10)
+            # the laid and join segments (by their first bead) from create_wire's own lines:
+            # "atom IDs a..b", "(J of the join)", "appended to bead e"
+            laid, join = set(), set()
+            for line in (l for l in result.output.splitlines() if l.startswith("create_wire:")):
+                a, b = map(int, re.search(r"atom IDs (\d+)\.\.(\d+)", line).groups())
+                j = re.search(r"\((\d+) of the join\)", line)
+                j = int(j.group(1)) if j else 0
+                laid.update(range(a + j, b))
+                join.update(range(a, a + j))
+                e = re.search(r"appended to bead (\d+)", line)
+                if e:
+                    join.add(int(e.group(1)))
+            self.assertEqual(len(join) > 0, joined)
+            sums = {"layer": [0.0, 0, 0, 0], "join": [0.0, 0, 0, 0]}  # tension, segments, sliding, carrying
+            for step, beads in states:
+                for part, members in (("layer", laid), ("join", join)):
+                    pick = np.isin(beads["id"].astype(int), list(members))
+                    sums[part][0] += beads["f_elastic[4]"][pick].sum()
+                    sums[part][1] += pick.sum()
+                    rows = contacts[step]
+                    on = np.isin(rows["c_wgc[2]"].astype(int), list(members))
+                    sums[part][2] += int(np.sum(on & (rows["c_wgc[16]"] == 2)))
+                    sums[part][3] += int(np.sum(on & (rows["c_wgc[16]"] > 0)))
+            self.assertEqual(sums["layer"][3] + sums["join"][3], carrying)
+            out = subprocess.run([sys.executable, os.path.join(SOURCE, "postprocess", "wire_along.py"),
+                                  result.workdir, "--bins", "1", "--csv", result.path("along.csv")],
+                                 capture_output=True, text=True)
+            self.assertEqual(out.returncode, 0, out.stderr)
+            self.assertIn(f"2 layers of {n} laid beads, {len(join) - 1 if joined else 0} join beads, "
+                          f"{chains} chain(s), 3 snapshots", out.stdout)
+            with open(result.path("along.csv")) as f:
+                rows = {r["part"]: r for r in csv.DictReader(f)}
+            self.assertEqual(sorted(rows), ["join", "layer"])
+            for part, (tension, segments, sliding, carried) in sums.items():
+                if segments:
+                    self.assertAlmostEqual(float(rows[part]["tension"]), tension / segments, delta=1e-12)
+                self.assertEqual(int(rows[part]["contacts"]), carried, part)
+                if carried:
+                    self.assertAlmostEqual(float(rows[part]["slide"]), sliding / carried, delta=1e-15)
 
     def test_continuous_wire(self):
         # wire_layout continuous: the second layer's double loop continues the first layer's

@@ -60,6 +60,33 @@ run 0
             self.assertAlmostEqual(d["fx"][-1] / tension, -1.0, delta=1e-10)
             self.assertLess(np.max(np.abs(d["fx"][1:-1])), 1e-10 * tension)
 
+    # Each segment stretched by its own strain eps_k carries the tension m_elo E A eps_k
+    # (compressed: negative), written with its first bead as the per-atom f_ID[4], next to
+    # its length f_ID[3]; the last bead has no segment (0, 0). On 2 ranks the same.
+    def test_tension_per_segment(self):
+        E, r, l, m_elo = 100.0, 0.1, 0.2, 0.7
+        strains = [1e-3, -2e-3, 5e-3, 0.0, 3e-2, -1e-2, 2e-3, 4e-3]
+        xs = np.concatenate([[0.0], np.cumsum([l * (1 + e) for e in strains])])
+        pos = [(x - xs[-1] / 2, 0.0, 0.0) for x in xs]
+        deck = f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+fix el all wire/elastic E {E} m_elo {m_elo} m_rot 0.1
+dump d all custom 1 dump.t id f_el[3] f_el[4]
+dump_modify d sort id format "%d %.17g %.17g"
+run 0
+"""
+        tension = [m_elo * E * math.pi * r * r * e for e in strains] + [0.0]
+        length = [l * (1 + e) for e in strains] + [0.0]
+        for ranks in (1, 2):
+            res = run(deck, files={"chain.data": data_file(pos, l, r, 1.0)}, np_ranks=ranks)
+            self.assertRanCleanly(res)
+            d = read_dump(res.path("dump.t"))
+            np.testing.assert_allclose(d["f_el[4]"], tension, rtol=0, atol=1e-12 * max(map(abs, tension)))
+            np.testing.assert_allclose(d["f_el[3]"], length, rtol=0, atol=1e-14)
+
 
 def relax_run(deck, files, free_group, damping, dt, t_end, scheme="verlet"):
     """Integrate `free_group` with viscous damping until t_end; returns the run."""
