@@ -21,21 +21,21 @@ double dot(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vecto
 
 // z = M⁻¹ r on this worker's unknowns: the LDLᵀ factors of its own block of
 // W_SS + ε D_S (`factor`), or, where that factorisation failed, each contact's 3×3 block
-// (`block_inverse`).
+// (`block_inverse`; zero for a worker without unknowns and for its contacts not closed).
 class WorkerPreconditioner {
  public:
   WorkerPreconditioner(const BodyContactOperator& op, const ClosedComponents& closed, double epsilon,
                        NscdReport& report)
       : closed_(closed) {
+    const int n = op.contact_count();
     const int m = static_cast<int>(closed.components.size());
+    block_inverse_.assign(n, Eigen::Matrix3d::Zero());
     if (m == 0) return;
     Eigen::SparseMatrix<double> regularized = closed_block(op.true_delassus_matrix(), closed);
     for (int k = 0; k < m; ++k) regularized.coeffRef(k, k) *= 1.0 + epsilon;
     regularized.makeCompressed();
     factor_ = stick_solve_factors(regularized, report);
     if (factor_ != nullptr) return;
-    const int n = op.contact_count();
-    block_inverse_.assign(n, Eigen::Matrix3d::Zero());
     for (int c = 0; c < n; ++c) {
       if (closed.unknown[3 * c] < 0) continue;
       const Eigen::Matrix3d W = op.true_delassus_block(c);
@@ -53,7 +53,7 @@ class WorkerPreconditioner {
     const std::vector<int>& components = closed_.components;
     const int m = static_cast<int>(components.size());
     if (factor_ == nullptr) {
-      for (std::size_t c = 0; c < r.size(); ++c) z[c] = block_inverse_.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(block_inverse_[c] * r[c]);
+      for (std::size_t c = 0; c < r.size(); ++c) z[c] = block_inverse_[c] * r[c];
       return;
     }
     Eigen::VectorXd rhs(m);
