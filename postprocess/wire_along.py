@@ -32,9 +32,9 @@ For each run it prints the layers found and, in --bins equal bins of u:
   snapshot alone;
 - slide: the fraction of the wire-grain contacts of the bin's segments that slide (status 2,
   on the Coulomb limit) among those that carry a force (status 1 stick or 2 slide), over
-  the snapshots, and their number;
+  the snapshots, their number, and that number per segment and snapshot;
 and the same for the join segments (u empty). --csv writes these rows (run, label, part,
-u_lo, u_hi, tension, tension_last, slide, contacts); --plot draws tension and slide against
+u_lo, u_hi, tension, tension_last, slide, contacts, per_segment); --plot draws tension and slide against
 u, one line per label (the mean over its runs, ± their standard error with two or more),
 the joins as points at u = -0.05. A run's label: --label (one per RUN) or its folder's
 parent's name (postprocess/sweep.py's PARAM=VALUE)."""
@@ -53,7 +53,7 @@ from observables import read_dump  # noqa: E402
 LENGTH, TENSION, TOUCHING = "f_elastic[3]", "f_elastic[4]", "f_wg[4]"
 SEGMENT, GRAIN, STATUS = "c_wgc[2]", "c_wgc[3]", "c_wgc[16]"
 STICK, SLIDE = 1, 2
-FIELDS = ("run", "label", "part", "u_lo", "u_hi", "tension", "tension_last", "slide", "contacts")
+FIELDS = ("run", "label", "part", "u_lo", "u_hi", "tension", "tension_last", "slide", "contacts", "per_segment")
 
 
 class Layers:
@@ -140,7 +140,8 @@ def profile(run, bins):
             rows.append({"part": "layer" if k < bins else "join",
                          "u_lo": edges[k] if k < bins else math.nan, "u_hi": edges[k + 1] if k < bins else math.nan,
                          "tension": tension_sum[k] / tension_count[k], "tension_last": last[k] / last_count[k],
-                         "slide": slide[k] / carrying[k], "contacts": int(carrying[k])})
+                         "slide": slide[k] / carrying[k], "contacts": int(carrying[k]),
+                         "per_segment": carrying[k] / tension_count[k]})
     return info, rows
 
 
@@ -150,7 +151,7 @@ def read_csv(path):
     with open(path) as f:
         for row in csv.DictReader(f):
             out = {"part": row["part"], "contacts": int(row["contacts"])}
-            for name in ("u_lo", "u_hi", "tension", "tension_last", "slide"):
+            for name in ("u_lo", "u_hi", "tension", "tension_last", "slide", "per_segment"):
                 out[name] = float(row[name])
             runs.setdefault(row["run"], (row["label"], []))[1].append(out)
     return runs
@@ -213,7 +214,7 @@ def main():
         for r in rows:
             where = "joins" if r["part"] == "join" else f"u {r['u_lo']:.2f}-{r['u_hi']:.2f}"
             print(f"{label} {run} {where}: tension {r['tension']:.5g} (last {r['tension_last']:.5g}), "
-                  f"sliding {r['slide']:.4f} of {r['contacts']} contacts")
+                  f"sliding {r['slide']:.4f} of {r['contacts']} contacts ({r['per_segment']:.3f} per segment and snapshot)")
     if a.csv:
         with open(a.csv, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=FIELDS)

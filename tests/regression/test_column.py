@@ -364,6 +364,8 @@ class Column(DeckTestCase):
                 if segments:
                     self.assertAlmostEqual(float(rows[part]["tension"]), tension / segments, delta=1e-12)
                 self.assertEqual(int(rows[part]["contacts"]), carried, part)
+                if segments:
+                    self.assertAlmostEqual(float(rows[part]["per_segment"]), carried / segments, delta=1e-15)
                 if carried:
                     self.assertAlmostEqual(float(rows[part]["slide"]), sliding / carried, delta=1e-15)
 
