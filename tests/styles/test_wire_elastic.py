@@ -35,6 +35,21 @@ def bead_mass(density, radius, length):
     return density * math.pi * radius ** 2 * length
 
 
+def chain_step_deck(E, m_elo, columns, formats):
+    """A deck that reads chain.data under fix wire/elastic (id el) and dumps `columns` of
+    its beads, sorted by id, once (run 0) to dump.f."""
+    return f"""
+units lj
+atom_style wire
+boundary f f f
+read_data chain.data
+fix el all wire/elastic E {E} m_elo {m_elo} m_rot 0.1
+dump d all custom 1 dump.f {columns}
+dump_modify d sort id format "{formats}"
+run 0
+"""
+
+
 class AxialStretch(DeckTestCase):
     # A straight chain stretched uniformly by strain eps: the end beads feel the tension
     # m_elo E A eps, inner beads nothing.
@@ -42,16 +57,7 @@ class AxialStretch(DeckTestCase):
         for m_elo in (1.0, 0.3):
             eps, E, r, l, n = 1e-3, 100.0, 0.1, 0.2, 10
             pos = [(k * l * (1 + eps), 0.0, 0.0) for k in range(n + 1)]
-            deck = f"""
-units lj
-atom_style wire
-boundary f f f
-read_data chain.data
-fix el all wire/elastic E {E} m_elo {m_elo} m_rot 0.1
-dump d all custom 1 dump.f id x fx fy fz
-dump_modify d format "%d %.17g %.17g %.17g %.17g"
-run 0
-"""
+            deck = chain_step_deck(E, m_elo, "id x fx fy fz", "%d %.17g %.17g %.17g %.17g")
             res = run(deck, files={"chain.data": data_file(pos, l, r, 1.0)})
             self.assertRanCleanly(res)
             d = read_dump(res.path("dump.f"))
@@ -68,22 +74,13 @@ run 0
         strains = [1e-3, -2e-3, 5e-3, 0.0, 3e-2, -1e-2, 2e-3, 4e-3]
         xs = np.concatenate([[0.0], np.cumsum([l * (1 + e) for e in strains])])
         pos = [(x - xs[-1] / 2, 0.0, 0.0) for x in xs]
-        deck = f"""
-units lj
-atom_style wire
-boundary f f f
-read_data chain.data
-fix el all wire/elastic E {E} m_elo {m_elo} m_rot 0.1
-dump d all custom 1 dump.t id f_el[3] f_el[4]
-dump_modify d sort id format "%d %.17g %.17g"
-run 0
-"""
+        deck = chain_step_deck(E, m_elo, "id f_el[3] f_el[4]", "%d %.17g %.17g")
         tension = [m_elo * E * math.pi * r * r * e for e in strains] + [0.0]
         length = [l * (1 + e) for e in strains] + [0.0]
         for ranks in (1, 2):
             res = run(deck, files={"chain.data": data_file(pos, l, r, 1.0)}, np_ranks=ranks)
             self.assertRanCleanly(res)
-            d = read_dump(res.path("dump.t"))
+            d = read_dump(res.path("dump.f"))
             np.testing.assert_allclose(d["f_el[4]"], tension, rtol=0, atol=1e-12 * max(map(abs, tension)))
             np.testing.assert_allclose(d["f_el[3]"], length, rtol=0, atol=1e-14)
 
