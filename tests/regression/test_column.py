@@ -657,6 +657,8 @@ class Column(DeckTestCase):
                                     "in.column: spiral_r0 (3) must be below R (3)"),
                                    ({"t_tops": -1}, "in.column: t_tops must be >= 0 (0: no dump of the tops), got -1"),
                                    ({"t_tops": "1e-4"}, "in.column: t_tops (1e-4) must be 0 or at least dt_SP (0.001)"),
+                                   ({"t_wire_state": -1}, "in.column: t_wire_state must be >= 0 (0: no dump of the wire state), got -1"),
+                                   ({"t_wire_state": "1e-4"}, "in.column: t_wire_state (1e-4) must be 0 or at least dt_SP (0.001)"),
                                    ({"R": 1, "Np": 100, "nlayers": 1},
                                     "create_grains (id -): region too small for the layer")):
             self.assertStopsWith(run(COLUMN, variables=variables), message)
