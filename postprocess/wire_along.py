@@ -50,8 +50,8 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from observables import read_dump  # noqa: E402
 
-LENGTH, TENSION, TOUCHING = "f_elastic[3]", "f_elastic[4]", "f_wg[4]"
-SEGMENT, GRAIN, STATUS = "c_wgc[2]", "c_wgc[3]", "c_wgc[16]"
+LENGTH, TENSION = "f_elastic[3]", "f_elastic[4]"   # post/wire_state.dump
+SEGMENT, STATUS = "c_wgc[2]", "c_wgc[16]"           # post/wire_grain_contacts.dump
 STICK, SLIDE = 1, 2
 FIELDS = ("run", "label", "part", "u_lo", "u_hi", "tension", "tension_last", "slide", "contacts", "per_segment")
 
