@@ -6,7 +6,8 @@ load's path to the floor, the wire's tension, and a picture of the network.
 
     postprocess/force_network.py RUN [--step STEP] [--out DIR] [--per-point]
         [--bin-width 0.25] [--density 1.5] [--g 1] [--axis X Y] [--R R] [--r-bins 4]
-        [--z-bins 5] [--planes 5 | --plane-z Z [Z ...]] [--E-w 100] [--m-elo 1] [--l0 0.2]
+        [--z-bins 5] [--section circle | --section square D] [--planes 5 | --plane-z Z [Z ...]]
+        [--E-w 100] [--m-elo 1] [--l0 0.2]
         [--prefix load] [--contacts FILE] [--grains FILE] [--wire FILE] [--vtp FILE]
         [--stress c_stress[3]] [--energy c_energy] [--no-plots] [--no-picture]
         [--size 1000 1000] [--view side|elevated|top] [--bar-radius 0.2]
@@ -76,7 +77,25 @@ Output (printed, and in DIR/network_STEP.json; DIR defaults to the contacts file
    the stretching energy ½ k_s (l − l0)² of the segments, half to each bead (consecutive
    IDs along a wire, as create_wire numbers them), against the dump's c_energy[1]; a wrong
    E_w, m_elo or l0 shows as a mismatch.
-5. Picture (network_STEP_picture.png, --size W H pixels, --view): each grain–grain and
+5. Confinement: in --z-bins slabs from the floor to the highest grain centre or
+   wire–grain contact point, what holds the grains in sideways, as Janssen's silo: per
+   slab the force normal to the confining surface that the wire (the rows of kind 2: its
+   horizontal force on the grain along −e_r, e_r the unit vector from the axis to the
+   contact point) and the side walls (kind 4 rows whose normal is within 60° of the
+   horizontal: their f_n) put on the grains, per unit height (q = Σ f / Δz) and as a
+   pressure p = q / perimeter; the vertical stress of the grains whose centres are in the
+   slab and inside the section, σ_v = −Σ V σ_zz / (A Δz); and their ratio K = p / σ_v,
+   Janssen's K where the walls confine. The section (--section): a circle of radius R
+   (perimeter 2πR, area πR²; the column) or, with --section square D, a square of side D
+   (4D, D²; in.silo's container). From the wire's side (item 4), the hoop force of its
+   tension: each segment pulls its two beads towards each other with T; q_hoop is the sum
+   over the beads in the slab of that pull's component towards the axis, over Δz (a
+   circular loop of radius r: T l / r per segment of length l). It is what the wire's
+   other forces balance: the grains' push (q_wire), and also the walls' friction on beads
+   lying on the floor, the turns of a loop pressing on each other, bending and the beads'
+   acceleration; q_hoop = q_wire says that the tension is held by the grains
+   (network_STEP_confinement.png).
+6. Picture (network_STEP_picture.png, --size W H pixels, --view): each grain–grain and
    grain–wall contact with f_n > 0 as a tube from grain centre to grain centre (to the
    contact point for a wall), its radius --bar-radius × f_n / max f_n (at least a tenth of
    it, to stay visible) and its colour f_n (colour bar), over the grains of the .vtp drawn
@@ -385,6 +404,69 @@ def external_forces(rows, grains):
     return out
 
 
+def confinement(rows, grains, wire, tension, axis, radius, square, z_bins, density):
+    """Item 5: the sideways confinement of the grains per height slab, by the wire and the
+    side walls, against their vertical stress."""
+    wg, gw = rows["kind"] == WIRE_GRAIN, rows["kind"] == GRAIN_WALL
+    closed = (rows["status"] != 0) & (rows["fn"] > 0)
+    # the wire: the force on the grain (listed on b; a grain listed as a receives its opposite)
+    on_b = grains.rows_of(rows["b"][wg]) >= 0
+    force = np.where(on_b[:, None], rows["force"][wg], -rows["force"][wg]) * closed[wg][:, None]
+    point = rows["point"][wg]
+    rx, ry = point[:, 0] - axis[0], point[:, 1] - axis[1]
+    r = np.hypot(rx, ry)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        inward = np.where(r > 0, -(force[:, 0] * rx + force[:, 1] * ry) / r, 0.0)
+    side = gw & closed & (np.abs(rows["normal"][:, 2]) < 0.5)
+    top = max([float(grains.x[:, 2].max())] + point[:, 2].tolist())
+    edges = np.linspace(0.0, top * (1 + 1e-12) + 1e-12, z_bins + 1)
+    dz = np.diff(edges)
+
+    def per_slab(z, values):
+        k = bin_index(np.asarray(z, dtype=float), edges)
+        return np.bincount(k[k >= 0], np.asarray(values, dtype=float)[k >= 0], z_bins)
+
+    q_wire = per_slab(point[:, 2], inward) / dz
+    q_walls = per_slab(rows["point"][side][:, 2], rows["fn"][side]) / dz
+    if square is not None:
+        perimeter, area = 4.0 * square, square ** 2
+        inside = (np.abs(grains.x[:, 0] - axis[0]) <= square / 2) & (np.abs(grains.x[:, 1] - axis[1]) <= square / 2)
+    else:
+        perimeter, area = 2.0 * np.pi * radius, np.pi * radius ** 2
+        inside = np.hypot(grains.x[:, 0] - axis[0], grains.x[:, 1] - axis[1]) <= radius
+    if grains.sigma_zz is not None:
+        vs = (grains.mass / density) * grains.sigma_zz
+        sigma_v = -per_slab(grains.x[inside, 2], vs[inside]) / (area * dz)
+    else:
+        sigma_v = np.full(z_bins, np.nan)
+    q_hoop = np.zeros(z_bins)
+    if wire is not None and tension is not None and tension["segments"]:
+        # each segment pulls its two beads towards each other with its tension T
+        row = {int(i): k for k, i in enumerate(wire["id"])}
+        here = np.array([row[int(i)] for i in tension["id"]], dtype=np.int64)
+        nxt = np.array([row.get(int(i) + 1, -1) for i in tension["id"]], dtype=np.int64)
+        ok = nxt >= 0
+        xyz = np.column_stack([wire["x"], wire["y"], wire["z"]])
+        chord = xyz[nxt[ok]] - xyz[here[ok]]
+        pull = np.array(tension["tension"])[ok][:, None] * chord / np.linalg.norm(chord, axis=1)[:, None]
+        on_bead = np.zeros_like(xyz)
+        np.add.at(on_bead, here[ok], pull)
+        np.add.at(on_bead, nxt[ok], -pull)
+        bx, by = wire["x"] - axis[0], wire["y"] - axis[1]
+        rb = np.hypot(bx, by)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            bead_inward = np.where(rb > 0, -(on_bead[:, 0] * bx + on_bead[:, 1] * by) / rb, 0.0)
+        q_hoop = per_slab(wire["z"], bead_inward) / dz
+    pressure = (q_wire + q_walls) / perimeter
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(sigma_v > 0, pressure / sigma_v, np.nan)
+    return {"section": "square" if square is not None else "circle", "perimeter": perimeter, "area": area,
+            "z_edges": edges.tolist(), "q_wire": q_wire.tolist(), "q_walls": q_walls.tolist(),
+            "q_hoop": q_hoop.tolist(), "pressure": pressure.tolist(), "sigma_v": sigma_v.tolist(),
+            "K": ratio.tolist(), "F_wire": float((q_wire * dz).sum()), "F_walls": float((q_walls * dz).sum()),
+            "grains_inside": int(inside.sum())}
+
+
 # --- wire -------------------------------------------------------------------------------------
 
 def wire_tension(wire, energy, young, m_elo, l0):
@@ -451,6 +533,7 @@ def plots(result, out_base):
         written.append(stress_plot(plt, s, result["walls"], out_base + "_stress.png"))
     if result["transmission"]:
         written.append(transmission_plot(plt, result, out_base + "_transmission.png"))
+    written.append(confinement_plot(plt, result["confinement"], out_base + "_confinement.png"))
     if result["wire"] is not None and result["wire"]["segments"]:
         w = result["wire"]
         fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -463,6 +546,23 @@ def plots(result, out_base):
         ax.set_title(f"wire: {w['segments']} segments, mean T = {w['tension_mean']:.3g}")
         written.append(save(fig, out_base + "_wire.png"))
     return written
+
+
+def confinement_plot(plt, c, path):
+    z = 0.5 * (np.array(c["z_edges"][1:]) + np.array(c["z_edges"][:-1]))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(9, 4.5), sharey=True)
+    ax.plot(np.array(c["q_wire"]) / c["perimeter"], z, "o-", color="C0", label="wire (its contacts)")
+    ax.plot(np.array(c["q_hoop"]) / c["perimeter"], z, "x--", color="C0", label="wire (its tension's hoop force)")
+    ax.plot(np.array(c["q_walls"]) / c["perimeter"], z, "s-", color="C3", label="side walls")
+    ax.plot(c["sigma_v"], z, "^-", color="0.3", label="σ_v of the grains inside")
+    ax.axvline(0, color="0.6", lw=0.6)
+    ax.set_xlabel(f"pressure on the {c['section']} section's side, σ_v")
+    ax.set_ylabel("z")
+    ax.legend(fontsize=8)
+    bx.plot(c["K"], z, "o-", color="C2")
+    bx.set_xlabel("K = p / σ_v")
+    fig.suptitle("confinement per height slab")
+    return save(fig, path)
 
 
 def save(fig, path):
@@ -745,6 +845,8 @@ def analyse(args, files):
               "walls": wall_loads(rows), "R": radius, "R_from": radius_from, "axis": list(axis),
               "transmission": transmission(rows, grains, planes, radius, axis, r_edges, args.g),
               "wire": wire_tension(wire, args.energy, args.E_w, args.m_elo, args.l0) if wire is not None else None}
+    result["confinement"] = confinement(rows, grains, wire, result["wire"], axis, radius, args.section_square,
+                                        args.z_bins, args.density)
     return result, (gg, gw, grains, wire)
 
 
@@ -781,6 +883,13 @@ def report(result):
                      f"r < R/2 {p['inner_fraction']:.3f}; above: {p['grains_above']} grains, weight "
                      f"{p['weight_above']:.6g}, walls {p['walls_on_above']:.6g}, wire {p['wire_on_above']:.6g}; "
                      f"residual {p['residual']:.3g}")
+    c = result["confinement"]
+    zc = 0.5 * (np.array(c["z_edges"][1:]) + np.array(c["z_edges"][:-1]))
+    lines.append(f"confinement ({c['section']} section, perimeter {c['perimeter']:.4g}, area {c['area']:.4g}; "
+                 f"wire {c['F_wire']:.6g}, side walls {c['F_walls']:.6g} in all), per slab z: q_wire, q_hoop, "
+                 "q_walls, p, sigma_v, K: " + "; ".join(
+                     f"z {z:.3g}: {a:.4g}, {h:.4g}, {b:.4g}, {p:.4g}, {v:.4g}, {k:.3g}" for z, a, h, b, p, v, k in
+                     zip(zc, c["q_wire"], c["q_hoop"], c["q_walls"], c["pressure"], c["sigma_v"], c["K"])))
     w = result["wire"]
     if w is not None and w["segments"]:
         lines.append(f"wire: {w['segments']} segments, tension mean {w['tension_mean']:.4g}, min {w['tension_min']:.4g}, "
@@ -824,6 +933,8 @@ def main(argv=None):
     parser.add_argument("--R", type=float, help="the column's radius (default: the wire's mean radius)")
     parser.add_argument("--r-bins", type=int, default=4, help="bins of the distance from the axis (4)")
     parser.add_argument("--z-bins", type=int, default=5, help="bins of the height (5)")
+    parser.add_argument("--section", nargs="+", default=["circle"], metavar="SHAPE",
+                        help="the confining section: circle (radius R) or square D (side D)")
     parser.add_argument("--planes", type=int, default=5, help="planes between the lowest and highest centres (5)")
     parser.add_argument("--plane-z", type=float, nargs="+", help="the planes' heights")
     parser.add_argument("--E-w", dest="E_w", type=float, default=100.0, help="the wire's Young's modulus (100)")
@@ -847,6 +958,16 @@ def main(argv=None):
     for name in ("r_bins", "z_bins", "planes"):
         if getattr(args, name) < 1:
             parser.error(f"--{name.replace('_', '-')} must be >= 1, got {getattr(args, name)}")
+    args.section_square = None
+    if args.section[0] == "square" and len(args.section) == 2:
+        try:
+            args.section_square = float(args.section[1])
+        except ValueError:
+            parser.error(f"--section square D: D must be a number, got {args.section[1]}")
+        if not args.section_square > 0:
+            parser.error(f"--section square D: D must be > 0, got {args.section[1]}")
+    elif args.section != ["circle"]:
+        parser.error(f"--section must be circle or square D, got {' '.join(args.section)}")
     if args.size is not None and (args.size[0] < 16 or args.size[1] < 16):
         parser.error("--size: at least 16 x 16 pixels")
     files = find_files(args)

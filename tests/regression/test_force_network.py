@@ -285,6 +285,47 @@ class Synthetic(DeckTestCase):
         np.testing.assert_allclose(w["tension"], [0.1 * math.pi] * 5 + [0.2 * math.pi] * 2, rtol=1e-12)
         self.assertAlmostEqual(w["bead_energy_difference"], 1.0, delta=1e-9)
 
+    # The confinement per slab (z_bins 2: the slabs [0, 0.75] and [0.75, 1.5], the top the
+    # highest grain centre or wire contact, 1.5). Grain 1 (V = 1, σ_zz −2) at z 0.5, grain 2
+    # (V 2, σ_zz −4) at z 1.5, grain 3 outside both sections (σ_zz −100: left out of σ_v).
+    # The wire pushes grain 1 with (−3, 1, 0.2) at (2, 0, 0.5): 3 towards the axis; grain 2
+    # (listed as a: the force on it is minus the one listed) with (0, 2, 0) at (0, −2, 1.5):
+    # 2; an open row (status 0) counts nothing. A side wall pushes grain 1 with f_n 5; the
+    # floor's vertical row is no side wall. Three beads (0, −2), (2, 0), (0, 2) at z 0.5,
+    # two segments of length 2√2 at rest length 2: T = E_w π r_w² (√2 − 1); the middle bead
+    # is pulled by √2 T towards the axis, each end by T/√2: 2√2 T in the lower slab.
+    def test_confinement_per_slab(self):
+        folder = self.folder()
+        write_grains(folder, [(1, 1.5, 0.5, 0.0, 0.5, -2.0), (2, 3.0, 0.0, -1.0, 1.5, -4.0),
+                              (3, 1.5, 5.0, 0.0, 0.5, -100.0)])
+        write_contacts(folder, [
+            contact(2, 50, 1, (2.0, 0.0, 0.5), X, 3.0, force=[-3.0, 1.0, 0.2]),
+            contact(2, 2, 51, (0.0, -2.0, 1.5), Y, 2.0, force=[0.0, -2.0, 0.0]),
+            contact(2, 52, 1, (2.0, 0.0, 0.5), X, 9.0, force=[-9.0, 0.0, 0.0], status=0),
+            contact(4, -2, 1, (-2.0, 0.0, 0.5), X, 5.0), contact(4, -1, 3, (5.0, 0.0, 0.0), Z, 7.0)])
+        d = 2 * math.sqrt(2)
+        write_wire(folder, [(60, 0.0, -2.0, 0.5, 0.0, d), (61, 2.0, 0.0, 0.5, 0.0, d), (62, 0.0, 2.0, 0.5, 0.0, 0.0)])
+        tension = 100 * AREA * (math.sqrt(2) - 1)
+        for args, perimeter, area in ((["--R", "2"], 4 * math.pi, 4 * math.pi),
+                                      (["--R", "2", "--section", "square", "4"], 16.0, 16.0)):
+            c = analysed(folder, "--z-bins", "2", "--l0", "2", *args)["confinement"]
+            np.testing.assert_allclose(c["z_edges"], [0, 0.75, 1.5], rtol=1e-11)
+            np.testing.assert_allclose(c["q_wire"], [3 / 0.75, 2 / 0.75], rtol=1e-11)
+            np.testing.assert_allclose(c["q_walls"], [5 / 0.75, 0.0], rtol=1e-11, atol=1e-15)
+            np.testing.assert_allclose(c["q_hoop"], [d * tension / 0.75, 0.0], rtol=1e-11, atol=1e-15)
+            np.testing.assert_allclose(c["pressure"], [8 / 0.75 / perimeter, 2 / 0.75 / perimeter], rtol=1e-11)
+            np.testing.assert_allclose(c["sigma_v"], [2 / (area * 0.75), 8 / (area * 0.75)], rtol=1e-11)
+            np.testing.assert_allclose(c["K"], [8 / perimeter * area / 2, 2 / perimeter * area / 8], rtol=1e-11)
+            self.assertAlmostEqual(c["F_wire"], 5.0, delta=1e-13)
+            self.assertAlmostEqual(c["F_walls"], 5.0, delta=1e-13)
+            self.assertEqual(c["grains_inside"], 2)
+        status, text = script(folder, "--no-plots", "--no-picture", "--section", "square", "0")
+        self.assertEqual(status, 2)
+        self.assertIn("force_network.py: error: --section square D: D must be > 0, got 0", text)
+        status, text = script(folder, "--no-plots", "--no-picture", "--section", "disc")
+        self.assertEqual(status, 2)
+        self.assertIn("force_network.py: error: --section must be circle or square D, got disc", text)
+
     def test_bad_input(self):
         folder = self.folder()
         write_grains(folder, lone_grains(2))
