@@ -3,10 +3,12 @@ own key, slurmctld and slurmd with their own slurm.conf, all in a temporary fold
 here and stopped at the end whatever happens. A 4-task array (v_wall 0.2/0.4 × 2 seeds) of
 the tiny column runs to completion; --collect tabulates the same observables as the local
 runner gives for the same runs (same binary, same deck: the same digits); a second submit
-submits nothing; a failing run is listed with its ERROR line."""
+submits nothing; a failing run is listed with its ERROR line; 2-rank tasks started by
+mpirun and by srun (PMIx) give the local runner's observables."""
 
 import csv
 import glob
+import json
 import os
 import re
 import shutil
@@ -227,6 +229,40 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
         self.assertEqual(status, 0, text)
         self.assertIn("1 runs finished, 0 failed", text)
         with open(os.path.join(slurm_out, "v_wall=0.2", "seed=11", "log.liggghts")) as f:
+            grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", f.read())
+        self.assertIsNotNone(grid)
+        self.assertEqual(int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)), 2)
+        (s,), (l,) = self.rows(slurm_out), self.rows(local_out)
+        self.assertEqual({k: v for k, v in s.items() if k != "wall_s"}, {k: v for k, v in l.items() if k != "wall_s"})
+
+    def test_srun_launcher(self):
+        # --launcher srun --ranks 2: each task starts its 2 ranks with srun inside its
+        # allocation (PMIx, as SLURM_MPI_TYPE tells srun; clusters set it in slurm.conf's
+        # MpiDefault), not with mpirun: the same 2-rank grid and the same observables as the
+        # local runner's mpirun -np 2 run of the same deck and seed
+        work = os.path.join(self.tmp, "srun")
+        os.makedirs(work)
+        common = ["v_wall", "0.2", "--seeds", "12", "--liggghts", LIGGGHTS] + TINY
+        slurm_out, local_out = os.path.join(work, "slurm"), os.path.join(work, "local")
+        env = dict(self.env, SLURM_MPI_TYPE="pmix")
+        status, text = sweep(*common, "--out", slurm_out, "--scheduler", "slurm", "--ranks", "2", "--time", "5",
+                             "--launcher", "srun", env=env, cwd=work)
+        self.assertEqual(status, 0, text)
+        job = re.search(r"submitted job array (\d+)", text).group(1)
+        with open(glob.glob(os.path.join(slurm_out, "slurm", "array-*.sh"))[0]) as f:
+            self.assertIn("#SBATCH --ntasks=2", f.read())
+        with open(glob.glob(os.path.join(slurm_out, "slurm", "array-*.json"))[0]) as f:
+            self.assertEqual(json.load(f)["launcher"], "srun")
+        status, text = sweep(*common, "--out", local_out, "--jobs", "1", "--ranks", "2", cwd=work)
+        self.assertEqual(status, 0, text)
+        self.wait(self.queue_empty, 120, "the srun array to finish (squeue)")
+        # srun made a job step of the task (mpirun on one node starts its ranks itself: none)
+        with open(os.path.join(self.tmp, "slurmd.log")) as f:
+            self.assertIn(f"launch task StepId={job}.0 ", f.read())
+        status, text = sweep(*common, "--out", slurm_out, "--collect", cwd=work)
+        self.assertEqual(status, 0, text)
+        self.assertIn("1 runs finished, 0 failed", text)
+        with open(os.path.join(slurm_out, "v_wall=0.2", "seed=12", "log.liggghts")) as f:
             grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", f.read())
         self.assertIsNotNone(grid)
         self.assertEqual(int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)), 2)
