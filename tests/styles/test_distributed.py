@@ -4,8 +4,9 @@ tall stack carries its weight exactly on 1 to 4 ranks (the stick solve by conjug
 gradients over the ranks); one step of a pile from the same state finds the same contact
 points and velocities within the solver's tolerance on 1 to 4 ranks, as does one step of a
 short column with its wire; a run continued from
-a restart file repeats the straight run on 2 ranks to the bit; what it does not carry
-stops with an ERROR."""
+a restart file repeats the straight run on 2 ranks to the bit; a stack of two cubes
+sliding across the ranks' boundary stops where the discrete equations of motion say, to
+round-off, on 1 and 2 ranks; what it does not carry stops with an ERROR."""
 
 import numpy as np
 
@@ -254,6 +255,42 @@ dump            d all custom 3000 {dump} id x y z ix iy vx vy vz omegax omegay o
         self.assertGreater(wrapped, 5)
         for k in a:
             np.testing.assert_array_equal(b[k], a[k], err_msg=k)
+
+
+class SlidingStackAcrossRanks(DeckTestCase):
+    # Two unit cubes (m = 1), one on the other and offset by 0.1 along x, slide along x on a
+    # floor of friction 0.3 (the cubes' friction 0.6: the upper cube sticks), both launched
+    # at v0 = 1.5: the pair decelerates as one body at mu g = 0.3 and stops after 5 time
+    # units (neither cube tips: the normal forces move by mu h/2 = 0.15 towards the front,
+    # within the faces they press on). The step's implicit Euler (v_{n+1} = v_n - mu g dt,
+    # x_{n+1} = x_n + dt v_{n+1}) moves each cube by dt sum_{k=1}^{5000} (v0 - k mu g dt)
+    # = 3.74925 exactly, from x = -1.9 and -1.8: the cubes cross x = 0, the boundary of the
+    # 2 ranks' subdomains, in different steps while they touch, so for a while each rank
+    # owns one cube of the contact.
+    # Measured (2026-12-07): on 1 and 2 ranks the final x and the speeds on the exact values
+    # to round-off; held to 1e-12.
+    def test_sliding_stack_across_the_ranks(self):
+        made = grains_data("cube 1.0", [(-1.9, 0, 0.5, 1, 0, 0, 0), (-1.8, 0, 1.5, 1, 0, 0, 0)],
+                           box=(-4, 4, -2, 2, -1, 4))
+        self.assertRanCleanly(made)
+        distance = 1e-3 * sum(1.5 - k * 0.3e-3 for k in range(1, 5001))
+        for ranks in (1, 2):
+            r = run(full_precision(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.6 tolerance 1e-10 solve distributed &
+                wall 0 0 0 0 0 1 wall_friction 0.3
+velocity        all set 1.5 0 0
+timestep        1e-3
+dump            d all custom 5500 dump.{ranks} id x z vx vz
+run             5500
+""", processors="2 1 1" if ranks == 2 else "1 1 1"), "d"), workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            d = read_dump(made.path(f"dump.{ranks}"))
+            print(f"\nsliding stack on {ranks} rank(s): x {d['x'][0]:.15g} {d['x'][1]:.15g} (exact "
+                  f"{-1.9 + distance:.15g} {-1.8 + distance:.15g}), vx {d['vx'][0]:.1e} {d['vx'][1]:.1e}")
+            np.testing.assert_allclose(d["x"], [-1.9 + distance, -1.8 + distance], rtol=0, atol=1e-12)
+            np.testing.assert_allclose(d["z"], [0.5, 1.5], rtol=0, atol=1e-12)
+            np.testing.assert_allclose(d["vx"], [0.0, 0.0], rtol=0, atol=1e-12)
 
 
 class GrainWiderThanASubdomain(DeckTestCase):
