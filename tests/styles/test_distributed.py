@@ -1,7 +1,7 @@
 """fix nscd/polyhedra solve distributed: each rank steps the grain pairs it owns with its
 own and ghost grains. On one rank it is the replicated solve to the bit (Gauss-Seidel); a
 tall stack carries its weight exactly on 1 to 4 ranks (the stick solve by conjugate
-gradients over the ranks); one step of a pile from the same state finds the same contact
+gradients over the ranks); one step of a 500-grain pile from the same state finds the same contact
 points and velocities within the solver's tolerance on 1 to 4 ranks, as does one step of a
 short column with its wire; a run continued from
 a restart file repeats the straight run on 2 ranks to the bit; a stack of two cubes
@@ -32,9 +32,10 @@ read_data       grains.data
 """
 
 
-def random_pile(count, box, seed):
+def random_pile(count, box, seed, margin=0.0):
     """grains.data and grains.shapes of `count` random grains (create_grains) in the lower
-    half of `box` (xlo xhi ylo yhi zlo zhi), kept apart."""
+    half of `box` (xlo xhi ylo yhi zlo zhi), kept apart, `margin` from its sides (room to
+    spread on the floor without leaving the box)."""
     xlo, xhi, ylo, yhi, zlo, zhi = box
     return run(f"""
 units           lj
@@ -43,7 +44,7 @@ atom_modify     map array sort 0 0.0
 boundary        f f f
 region          box block {xlo} {xhi} {ylo} {yhi} {zlo} {zhi}
 create_box      1 box
-region          fill block {xlo} {xhi} {ylo} {yhi} {zlo + 0.5} {0.5 * (zlo + zhi)}
+region          fill block {xlo + margin} {xhi - margin} {ylo + margin} {yhi - margin} {zlo + 0.5} {0.5 * (zlo + zhi)}
 create_grains   1 {count} random fill seed {seed}
 write_data      grains.data
 grain_shapes    write grains.shapes
@@ -121,16 +122,16 @@ run             100
 
 
 class PileStep(DeckTestCase):
-    # 120 random grains dropped onto a frictional floor for 4000 steps (replicated), the
-    # state written to a restart file; from it, one NSCD step (tolerance 1e-10) distributed
-    # on 1, 2, 3 and 4 ranks and replicated on 1: the detection finds the same contact
-    # points (pairs and points to round-off: the same pairs' manifolds computed from the
-    # same poses), and the solve the same velocities within its tolerance. Measured: the
-    # same 281 points on every run; velocities within 1.1e-11 (2 ranks) to 5.1e-9 (3 ranks)
-    # of the largest speed 0.85 (2026-12-06). Held: the points' coordinates to 1e-12, the
-    # velocities to 5e-8 of that speed.
+    # 500 random grains dropped onto a frictional floor for 4000 steps (replicated; the
+    # highest still falling), the state written to a restart file; from it, one NSCD step
+    # (tolerance 1e-10) distributed on 1, 2, 3 and 4 ranks and replicated on 1: the
+    # detection finds the same contact points (pairs and points to round-off: the same
+    # pairs' manifolds computed from the same poses), and the solve the same velocities
+    # within its tolerance. Measured: the same 1581 points on every run; velocities within
+    # 1.2e-9 (2 ranks), 2.4e-8 (3) and 7.1e-8 (4) of the largest speed 4.0 (2026-12-07).
+    # Held: the points' coordinates to 1e-12, the velocities to 5e-8 of that speed.
     def test_one_step_on_one_to_four_ranks(self):
-        made = random_pile(120, (-6, 6, -6, 6, 0, 12), 23)
+        made = random_pile(500, (-12, 12, -12, 12, 0, 24), 23, margin=2)
         self.assertRanCleanly(made)
         r = run(deck("""
 fix             g all gravity 1.0 vector 0 0 -1
@@ -165,7 +166,8 @@ run             1
             runs[tag] = (read_dump(made.path(f"dump.{tag}")), rows)
         reference, reference_rows = runs["replicated1"]
         speed = max(np.max(np.abs(reference[c])) for c in ("vx", "vy", "vz"))
-        self.assertGreater(len(reference_rows), 200)  # a pile: grain-grain and floor points
+        self.assertEqual(len(reference["id"]), 500)
+        self.assertGreater(len(reference_rows), 1000)  # a pile: grain-grain and floor points
         for tag, (state, rows) in runs.items():
             velocities = max(np.max(np.abs(state[c] - reference[c])) for c in
                              ("vx", "vy", "vz", "omegax", "omegay", "omegaz"))
