@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -133,8 +134,8 @@ int AtomVecPolyhedron::add_shape(const wiregrain::ConvexShape &s, double body_to
   return index;
 }
 
-void AtomVecPolyhedron::replace_shapes(const wiregrain::ShapeLibrary &library) {
-  library_.reset(new wiregrain::ShapeLibrary(library));
+void AtomVecPolyhedron::replace_shapes(wiregrain::ShapeLibrary library) {
+  library_.reset(new wiregrain::ShapeLibrary(std::move(library)));
 }
 
 void AtomVecPolyhedron::assign_shape(int i, int s, double rho) {

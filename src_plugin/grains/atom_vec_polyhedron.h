@@ -53,7 +53,7 @@ class AtomVecPolyhedron : public PluginAtomVec, public wiregrain_lmp::GrainShape
   const wiregrain::ShapeLibrary &shapes() const { return *library_; }
   int add_shape(const wiregrain::ConvexShape &shape, double body_to_input[4], double centroid[3]);
   // Replace the library (grain_shapes read); grains already defined keep their indices.
-  void replace_shapes(const wiregrain::ShapeLibrary &library);
+  void replace_shapes(wiregrain::ShapeLibrary library);
   // Give grain i shape `shape` at `density`: mass, principal inertia, bounding radius.
   void assign_shape(int i, int shape, double density);
   // grains of the group (all ranks) that have no shape (made by create_atoms)
