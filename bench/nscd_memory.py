@@ -6,14 +6,15 @@ fewer cores: memory, not time, is measured).
 
     bench/nscd_memory.py [--liggghts build/liggghts] [--grains 10000] [--steps 50] [--ranks 1 2 4]
 
-The pile: --grains random Table 1 grains (create_grains) in a slab 2 a_max deep per 1000
-grains... placed apart in the lower half of a box wide enough for a packing fraction of
-about 0.1 of their bounding boxes, above a frictional floor; each run reads the same data
-file and takes --steps NSCD steps of 1e-3 (the grains falling, those placed closest
-already in contact). Per run: the peak resident memory of every rank (/usr/bin/time
-%M), the grains each rank owns and its ghosts (LIGGGHTS' Nlocal and Nghost), the contact
-points, and the memory of the largest rank against the one-rank run (ideal: 1/P plus the
-ghosts' share)."""
+The pile: --grains random Table 1 grains (create_grains, one shape each) placed apart in a
+slab 20 a_max high whose width gives their bounding boxes (2.2 x 1.8 x 1.4 a_max) a packing
+fraction of 0.1, above a frictional floor; each run reads the same data file and takes
+--steps NSCD steps of 1e-3 (the grains falling, those placed closest already in contact).
+Per run: the peak resident memory of every rank (/usr/bin/time %M), the grains each rank
+owns and its ghosts (LIGGGHTS' Nlocal and Nghost), the contact points, and the memory of
+the largest rank against the one-rank run (ideal: 1/P plus the ghosts' share). Two more
+runs on one rank split the memory: LIGGGHTS with an empty box (its own share), and the
+grains read without the fix (the shape library and the per-atom arrays)."""
 
 import argparse
 import math
@@ -37,6 +38,26 @@ region          fill block -{inner} {inner} -{inner} {inner} 0.5 {fill_top}
 create_grains   1 {grains} random fill seed 4242
 write_data      grains.data
 grain_shapes    write grains.shapes
+"""
+
+EMPTY = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+region          box block -1 1 -1 1 -1 1
+create_box      1 box
+run             0
+"""
+
+READ = """
+units           lj
+atom_style      polyhedron
+atom_modify     map array sort 0 0.0
+boundary        f f f
+grain_shapes    read grains.shapes
+read_data       grains.data
+run             0
 """
 
 STEP = """
@@ -95,6 +116,12 @@ def main():
     if made.returncode != 0:
         sys.exit(made.stdout[-3000:])
     print(f"{args.grains} grains in a slab {2 * inner:.1f} a_max wide and {fill_height:.0f} high ({work})")
+    for name, deck in (("an empty box", EMPTY), ("the grains read, no fix", READ)):
+        path = os.path.join(work, "split.in")
+        with open(path, "w") as f:
+            f.write(deck)
+        _, rss = launch(liggghts, 1, work, path, os.path.join(work, "split.log"))
+        print(f"one rank, {name}: peak RSS {rss[0]:.1f} MiB", flush=True)
     rows = []
     for solve in ("replicated", "distributed"):
         for ranks in args.ranks:
