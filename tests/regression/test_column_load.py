@@ -95,6 +95,12 @@ class Load(DeckTestCase):
             self.assertEqual(line.group(1), "strain_max")
             self.assertGreaterEqual(s["strain"][-1], STRAIN_MAX[wire])
             self.assertLess(s["strain"][-2], STRAIN_MAX[wire])
+            # the end's snapshot is written whether or not a t_net dump falls on it
+            end = int(s["step"][-1])
+            names = ["contacts", "grains"] + (["wire"] if wire else [])
+            print(f"wire {wire}: ends at step {end} (t_net every 10 steps)")
+            for name in names:
+                self.assertTrue(os.path.exists(self.loaded[wire].path(f"post/load_{name}_{end}.dump")), name)
 
     # The plate force of the grains is the sum over the contact rows of wall 2 (the plate),
     # a = −2, the force listed being the one the grain receives.
