@@ -50,17 +50,8 @@ create_box      1 box
 run             0
 """
 
-READ = """
-units           lj
-atom_style      polyhedron
-atom_modify     map array sort 0 0.0
-boundary        f f f
-grain_shapes    read grains.shapes
-read_data       grains.data
-run             0
-"""
-
-STEP = """
+# the grains read (the shape library and the per-atom arrays)
+GRAINS = """
 units           lj
 atom_style      polyhedron
 atom_modify     map array sort 0 0.0
@@ -68,7 +59,11 @@ boundary        f f f
 processors      * * 1
 grain_shapes    read grains.shapes
 read_data       grains.data
-fix             g all gravity 1.0 vector 0 0 -1
+"""
+
+READ = GRAINS + "run             0\n"
+
+STEP = GRAINS + """fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra solve {solve} wall 0 0 0 0 0 1
 timestep        1e-3
 thermo_style    custom step f_nscd[3]

@@ -225,10 +225,15 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
         status, text = sweep(*common, "--out", local_out, "--jobs", "1", "--ranks", "2", cwd=work)
         self.assertEqual(status, 0, text)
         self.wait(self.queue_empty, 120, "the 2-rank array to finish (squeue)")
+        self.assertSameTwoRankRun(common, work, slurm_out, local_out, 11)
+
+    def assertSameTwoRankRun(self, common, work, slurm_out, local_out, seed):
+        # collected, the array's one run has a 2-rank grid in its log and the observables of
+        # the local runner's run (its wall time aside)
         status, text = sweep(*common, "--out", slurm_out, "--collect", cwd=work)
         self.assertEqual(status, 0, text)
         self.assertIn("1 runs finished, 0 failed", text)
-        with open(os.path.join(slurm_out, "v_wall=0.2", "seed=11", "log.liggghts")) as f:
+        with open(os.path.join(slurm_out, "v_wall=0.2", f"seed={seed}", "log.liggghts")) as f:
             grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", f.read())
         self.assertIsNotNone(grid)
         self.assertEqual(int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)), 2)
@@ -259,15 +264,7 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
         # srun made a job step of the task (mpirun on one node starts its ranks itself: none)
         with open(os.path.join(self.tmp, "slurmd.log")) as f:
             self.assertIn(f"launch task StepId={job}.0 ", f.read())
-        status, text = sweep(*common, "--out", slurm_out, "--collect", cwd=work)
-        self.assertEqual(status, 0, text)
-        self.assertIn("1 runs finished, 0 failed", text)
-        with open(os.path.join(slurm_out, "v_wall=0.2", "seed=12", "log.liggghts")) as f:
-            grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", f.read())
-        self.assertIsNotNone(grid)
-        self.assertEqual(int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)), 2)
-        (s,), (l,) = self.rows(slurm_out), self.rows(local_out)
-        self.assertEqual({k: v for k, v in s.items() if k != "wall_s"}, {k: v for k, v in l.items() if k != "wall_s"})
+        self.assertSameTwoRankRun(common, work, slurm_out, local_out, 12)
 
 
 if __name__ == "__main__":
