@@ -5,7 +5,7 @@ strong and weak networks and their orientation, the vertical stress in the colum
 load's path to the floor, the wire's tension, and a picture of the network.
 
     postprocess/force_network.py RUN [--step STEP] [--out DIR] [--per-point]
-        [--bin-width 0.25] [--density 1.5] [--g 1] [--axis X Y] [--R R] [--r-bins 4]
+        [--bin-width 0.25] [--density 1.5] [--g 1] [--axis X Y] [--R R] [--r-bins 4] [--r-max RMAX]
         [--z-bins 5] [--section circle | --section square D] [--planes 5 | --plane-z Z [Z ...]]
         [--E-w 100] [--m-elo 1] [--l0 0.2]
         [--prefix load] [--contacts FILE] [--grains FILE] [--wire FILE] [--vtp FILE]
@@ -51,7 +51,7 @@ Output (printed, and in DIR/network_STEP.json; DIR defaults to the contacts file
    the vertical, in degrees.
 3. Stress: σ_zz of the grains (--stress; tension positive) binned by the horizontal
    distance r of the grain's centre from the axis (--axis, 0 0; --r-bins from 0 to the
-   largest r) and its height z (--z-bins from 0 to the highest centre): in each bin the
+   largest r, or to --r-max, beyond which grains count as outside) and its height z (--z-bins from 0 to the highest centre): in each bin the
    volume-weighted mean over its grains Σ V σ_zz / Σ V, V = mass/density (--density, 1.5,
    create_grains' default; the mean does not depend on it), and the bin's coarse-grained
    stress Σ V σ_zz / V_bin with V_bin = π (r_1² − r_0²)(z_1 − z_0) and its solid fraction
@@ -829,7 +829,8 @@ def analyse(args, files):
         radius = float(np.hypot(grains.x[:, 0] - axis[0], grains.x[:, 1] - axis[1]).max())
         radius_from = "the farthest grain centre"
     r_grains = np.hypot(grains.x[:, 0] - axis[0], grains.x[:, 1] - axis[1])
-    r_edges = np.linspace(0.0, max(float(r_grains.max()), radius) * (1 + 1e-12), args.r_bins + 1)
+    r_outer = args.r_max if args.r_max is not None else max(float(r_grains.max()), radius) * (1 + 1e-12)
+    r_edges = np.linspace(0.0, r_outer, args.r_bins + 1)
     z_edges = np.linspace(0.0, float(grains.x[:, 2].max()) * (1 + 1e-12), args.z_bins + 1)
     if args.plane_z:
         planes = list(args.plane_z)
@@ -932,6 +933,8 @@ def main(argv=None):
                         help="the column's vertical axis (0 0)")
     parser.add_argument("--R", type=float, help="the column's radius (default: the wire's mean radius)")
     parser.add_argument("--r-bins", type=int, default=4, help="bins of the distance from the axis (4)")
+    parser.add_argument("--r-max", type=float,
+                        help="the outer edge of the r bins (default: the farthest grain centre, or R if farther)")
     parser.add_argument("--z-bins", type=int, default=5, help="bins of the height (5)")
     parser.add_argument("--section", nargs="+", default=["circle"], metavar="SHAPE",
                         help="the confining section: circle (radius R) or square D (side D)")
@@ -952,6 +955,8 @@ def main(argv=None):
     parser.add_argument("--bar-radius", type=float, default=0.2, help="the tube radius of the largest force (0.2)")
     parser.add_argument("--grain-opacity", type=float, default=0.25, help="the grains' opacity in the picture (0.25)")
     args = parser.parse_args(argv)
+    if args.r_max is not None and not args.r_max > 0:
+        parser.error(f"--r-max must be > 0, got {args.r_max}")
     for name in ("bin_width", "density", "l0", "E_w", "r_w", "bar_radius"):
         if getattr(args, name) <= 0:
             parser.error(f"--{name.replace('_', '-')} must be > 0, got {getattr(args, name)}")

@@ -212,6 +212,11 @@ class Synthetic(DeckTestCase):
             np.testing.assert_allclose(s["along_r"]["mean"], [-10 / 4, -9 / 3], rtol=1e-14)
             np.testing.assert_allclose(s["along_r"]["coarse"], [-10 * v / (2 * math.pi), -9 * v / (6 * math.pi)],
                                        rtol=1e-11)
+        # --r-max 1.4: rings [0, 0.7] (A 0.5, B 0.3, E 0.1) and [0.7, 1.4] (D 1.2); C (1.5) outside
+        s = analysed(folder, "--R", "2", "--r-bins", "2", "--z-bins", "2", "--r-max", "1.4")["stress"]
+        np.testing.assert_allclose(s["r_edges"], [0, 0.7, 1.4], rtol=1e-14)
+        np.testing.assert_allclose(s["along_r"]["mean"], [-10 / 4, -4.0], rtol=1e-14)
+        self.assertEqual(s["outside"], 1)
 
     # A stack at rest (g = 1): grain 1 (mass 1) on the floor, grain 2 (mass 1) on it, grains
     # 3 (mass 1, on the axis) and 4 (mass 2, r = 1.5) on grain 2 under the plate, which
