@@ -71,3 +71,10 @@ X=$R/R_sweep_2026-12-07
 /usr/bin/python3 $P/plot_columns.py "$X/R_nowire/R=5/seed=4242" "$X/R_wire/R=5/seed=4242" \
     "$X/R_nowire/R=7/seed=4242" "$X/R_wire/R=7/seed=4242" -o docs/column/R_sweep_columns_2026-12-07.png \
     --legend "R = 5, no wire" "R = 5, wire" "R = 7, no wire" "R = 7, wire"
+# the tall column under the spring-driven plate, with and without wire (docs/results.md, "The
+# column under a plate"); the confinement and network figures need the runs' dumps: their
+# command.sh draws them
+/usr/bin/python3 $P/load_curve.py $R/column_load_tall_2026-12-07/wire_s* $R/column_load_tall_2026-12-07/no_wire_s* \
+    --plot docs/column/column_load_tall_2026-12-07.png
+/usr/bin/python3 $R/column_load_tall_2026-12-07/networks.py --plot $R/column_load_tall_2026-12-07/networks.csv \
+    docs/column/column_load_tall_confinement_2026-12-07.png   # and its _stress_r.png
