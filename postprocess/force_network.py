@@ -51,8 +51,8 @@ Output (printed, and in DIR/network_STEP.json; DIR defaults to the contacts file
    the vertical, in degrees.
 3. Stress: σ_zz of the grains (--stress; tension positive) binned by the horizontal
    distance r of the grain's centre from the axis (--axis, 0 0; --r-bins from 0 to the
-   largest r, or to --r-max, beyond which grains count as outside) and its height z (--z-bins from 0 to the highest centre): in each bin the
-   volume-weighted mean over its grains Σ V σ_zz / Σ V, V = mass/density (--density, 1.5,
+   largest r, or to --r-max, beyond which grains count as outside) and its height z
+   (--z-bins from 0 to the highest centre): in each bin the volume-weighted mean over its grains Σ V σ_zz / Σ V, V = mass/density (--density, 1.5,
    create_grains' default; the mean does not depend on it), and the bin's coarse-grained
    stress Σ V σ_zz / V_bin with V_bin = π (r_1² − r_0²)(z_1 − z_0) and its solid fraction
    Σ V / V_bin (these do); a 2-D map and the two 1-D profiles (network_STEP_stress.png,
@@ -81,7 +81,7 @@ Output (printed, and in DIR/network_STEP.json; DIR defaults to the contacts file
    wire–grain contact point, what holds the grains in sideways, as Janssen's silo: per
    slab the force normal to the confining surface that the wire (the rows of kind 2: its
    horizontal force on the grain along −e_r, e_r the unit vector from the axis to the
-   contact point) and the side walls (kind 4 rows whose normal is within 60° of the
+   contact point) and the side walls (kind 4 rows whose normal is within 30° of the
    horizontal: their f_n) put on the grains, per unit height (q = Σ f / Δz) and as a
    pressure p = q / perimeter; the vertical stress of the grains whose centres are in the
    slab and inside the section, σ_v = −Σ V σ_zz / (A Δz); and their ratio K = p / σ_v,
