@@ -56,10 +56,10 @@ Output (printed, and in DIR/network_STEP.json; DIR defaults to the contacts file
    grains Σ V σ_zz / Σ V, V = mass/density (--density, 1.5, create_grains' default; the
    mean does not depend on it), and the bin's coarse-grained stress Σ V σ_zz / V_bin with
    V_bin = π (r_1² − r_0²)(z_1 − z_0) and its solid fraction Σ V / V_bin (these do); a 2-D
-   map and the two 1-D profiles (network_STEP_stress.png, −σ_zz: compression up). The walls' loads from the grain–wall rows (kind 4): per wall
-   index, its force (the opposite of the grains'), its load Σ f_n and its side (floor: its
-   normal towards the grains points up; plate: down); the wire's on the walls (kind 1,
-   split by the normal's sign).
+   map and the two 1-D profiles (network_STEP_stress.png, −σ_zz: compression up). The
+   walls' loads from the grain–wall rows (kind 4): per wall index, its force (the opposite
+   of the grains'), its load Σ f_n and its side (floor: its normal towards the grains
+   points up; plate: down); the wire's on the walls (kind 1, split by the normal's sign).
    Where the load goes: through each horizontal plane z = h (--planes N evenly spaced
    between the lowest and highest grain centres, or --plane-z), the force T transmitted
    by the grain–grain contacts whose two grain centres are on either side (the upward
