@@ -562,6 +562,16 @@ class Column(DeckTestCase):
             worst = max(worst, np.abs(f - 1.0).max())
         self.assertLess(worst, 1e-9)  # measured 4.7e-11: the rotation's 11 digits
 
+    # Np = 26 in 3 layers: 8 per layer and 2 left over, on the last layer (8, 8, 10) or one
+    # more on each of the first two (9, 9, 8): the counts create_grains reports per layer
+    def test_layer_remainder(self):
+        for remainder, counts in (("last", [8, 8, 10]), ("spread", [9, 9, 8])):
+            r = run(COLUMN, variables=dict(TINY, wire=0, nlayers=3, Np=26, t_layer=0.3, t_wire=0.1, t_relax=1.3, t_end=1.4,
+                                           layer_remainder=remainder))
+            self.assertRanCleanly(r)
+            made = [int(n) for n in re.findall(r"^create_grains: (\d+) grains", r.output, re.M)]
+            self.assertEqual(made, counts, remainder)
+
     def test_default_wire_step_within_the_gear5_limit(self):
         # dt_SP 0 (the default): dt_NSCD / N with the smallest N that keeps dt_SP at most
         # half the Gear-5 limit that fix wire/elastic computes from the springs and prints:
@@ -650,6 +660,8 @@ class Column(DeckTestCase):
                                    ({"wire_scheme": "rk4"}, "in.column: wire_scheme must be auto, gear5 or verlet, got rk4"),
                                    ({"wire_layout": "zigzag"},
                                     "in.column: wire_layout must be loops, continuous, spiral or file, got zigzag"),
+                                   ({"layer_remainder": "first"},
+                                    "in.column: layer_remainder must be last or spread, got first"),
                                    ({"join_max": -1}, "in.column: join_max must be >= 0 (0: the box height), got -1"),
                                    ({"spiral_r0": -1}, "in.column: spiral_r0 must be >= 0 (0: R/4), got -1"),
                                    ({"spiral_pitch": 0}, "in.column: spiral_pitch must be > 0, got 0"),
