@@ -273,7 +273,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size();
+  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size() + 5;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -585,7 +585,10 @@ void FixNSCDPolyhedra::solve_step() {
   const std::vector<wiregrain::GrainState> grains = distributed_ ? rank_grains() : gather_grains();
   const size_t own_count = distributed_ ? (size_t)rank_grains_->owned() : grains.size();
   bigint grain_count = (bigint)own_count;
-  if (distributed_) MPI_Allreduce(MPI_IN_PLACE, &grain_count, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (distributed_) {
+    MPI_Allreduce(MPI_IN_PLACE, &grain_count, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    rank_grains_->count_reduction();
+  }
   check_lost_grains(grain_count);
   wiregrain::GrainStepProblem problem;
   try {
@@ -838,6 +841,7 @@ void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState>
     double counts[2] = {double(stats.projections), stats.max_overlap_before};
     MPI_Allreduce(MPI_IN_PLACE, &counts[0], 1, MPI_DOUBLE, MPI_SUM, world);
     MPI_Allreduce(MPI_IN_PLACE, &counts[1], 1, MPI_DOUBLE, MPI_MAX, world);
+    rank_grains_->count_reduction(2);
     stats.projections = (int)counts[0];
     stats.max_overlap_before = counts[1];
   }
@@ -856,6 +860,8 @@ void FixNSCDPolyhedra::project_overlaps(const std::vector<wiregrain::GrainState>
 void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   const wiregrain::GrainStepStats &stats = result.stats;
   stats_[0] = stats.sweeps;
+  solves_ += 1.0;
+  sweeps_ += stats.sweeps;
   stats_[1] = stats.residual;
   stats_[2] = stats.contact_points;
   stats_[3] = stats.max_overlap;
@@ -957,6 +963,16 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   // pairs skipped as still apart
   if (k == 22 + (int)wall_forces_.size()) return stick_solves_[2];
   if (k == 23 + (int)wall_forces_.size()) return core_->pairs ? double(core_->pairs->skipped()) : 0.0;
+  // last, the solves and sweeps since the fix was made, and this rank's traffic in
+  // `solve distributed` (rank_grains.h; 0 replicated)
+  const int counts = 24 + (int)wall_forces_.size() + core_->plates.output_size();
+  if (k == counts) return solves_;
+  if (k == counts + 1) return sweeps_;
+  if (k >= counts + 2) {
+    if (!rank_grains_) return 0.0;
+    const wiregrain_lmp::RankGrains::Traffic &t = rank_grains_->traffic();
+    return k == counts + 2 ? t.values_sent : k == counts + 3 ? t.rounds : t.reductions;
+  }
   if (k >= 24 + (int)wall_forces_.size()) return core_->plates.output(k - 24 - (int)wall_forces_.size());
   if (k >= 19 + (int)wall_forces_.size()) return clocks_[k - 19 - (int)wall_forces_.size()];
   if (k >= 15 + (int)wall_forces_.size()) return sleep_stats_[k - 15 - (int)wall_forces_.size()];

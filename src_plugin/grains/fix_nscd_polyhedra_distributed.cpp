@@ -118,6 +118,7 @@ std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
   }
   double bad[2] = {bad_tag, 0.0}, smallest[2];
   MPI_Allreduce(bad, smallest, 1, MPI_DOUBLE, MPI_MIN, world);
+  rank_grains_->count_reduction();
   if (std::isfinite(smallest[0])) {
     bad[1] = smallest[0] == bad_tag ? bad_what : 0.0;
     MPI_Allreduce(&bad[1], &smallest[1], 1, MPI_DOUBLE, MPI_MAX, world);

@@ -41,6 +41,7 @@ void RankGrains::copy_to_ghosts(std::vector<double> &per_atom, int width) {
   buffer_.swap(per_atom);
   width_ = width;
   lmp_->comm->forward_comm_fix(fix_);
+  traffic_.rounds += 1;
   buffer_.swap(per_atom);
 }
 
@@ -58,6 +59,7 @@ void RankGrains::sum_over_copies(std::vector<double> &values, int width) {
     std::copy(values.begin() + k * width, values.begin() + (k + 1) * width, buffer_.begin() + std::size_t(atoms_[k]) * width);
   lmp_->comm->reverse_comm_fix(fix_);
   lmp_->comm->forward_comm_fix(fix_);
+  traffic_.rounds += 2;
   for (std::size_t k = 0; k < atoms_.size(); k++)
     std::copy(buffer_.begin() + std::size_t(atoms_[k]) * width, buffer_.begin() + std::size_t(atoms_[k] + 1) * width,
               values.begin() + k * width);
@@ -66,16 +68,19 @@ void RankGrains::sum_over_copies(std::vector<double> &values, int width) {
 void RankGrains::sum_over_workers(double *values, int count) {
   std::vector<double> sums(count);
   MPI_Allreduce(values, sums.data(), count, MPI_DOUBLE, MPI_SUM, world_);
+  traffic_.reductions += 1;
   std::copy(sums.begin(), sums.end(), values);
 }
 
 double RankGrains::max_over_workers(double value) {
   double largest = value;
   MPI_Allreduce(&value, &largest, 1, MPI_DOUBLE, MPI_MAX, world_);
+  traffic_.reductions += 1;
   return largest;
 }
 
-int RankGrains::pack_comm(int n, const int *list, double *buf) const {
+int RankGrains::pack_comm(int n, const int *list, double *buf) {
+  traffic_.values_sent += double(n) * width_;
   int m = 0;
   for (int i = 0; i < n; i++)
     for (int k = 0; k < width_; k++) buf[m++] = buffer_[std::size_t(list[i]) * width_ + k];
@@ -88,7 +93,8 @@ void RankGrains::unpack_comm(int n, int first, const double *buf) {
     for (int k = 0; k < width_; k++) buffer_[std::size_t(i) * width_ + k] = buf[m++];
 }
 
-int RankGrains::pack_reverse_comm(int n, int first, double *buf) const {
+int RankGrains::pack_reverse_comm(int n, int first, double *buf) {
+  traffic_.values_sent += double(n) * width_;
   int m = 0;
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < width_; k++) buf[m++] = buffer_[std::size_t(i) * width_ + k];

@@ -45,10 +45,24 @@ class RankGrains : public wiregrain::WorkerExchange {
   double max_over_workers(double value) override;
 
   // the fix's communication callbacks
-  int pack_comm(int n, const int *list, double *buf) const;
+  int pack_comm(int n, const int *list, double *buf);
   void unpack_comm(int n, int first, const double *buf);
-  int pack_reverse_comm(int n, int first, double *buf) const;
+  int pack_reverse_comm(int n, int first, double *buf);
   void unpack_reverse_comm(int n, const int *list, const double *buf);
+
+  // This rank's traffic since the fix was made, for sizing runs on many ranks
+  // (docs/benchmarks.md, "A model for many ranks"): the values (doubles) it packed into
+  // LIGGGHTS' forward and reverse communication of the fix (periodic images of its own
+  // grains included), the communication rounds (one forward or reverse communication:
+  // a message to each neighbour subdomain) and the global reductions (MPI_Allreduce),
+  // those of the fix counted through count_reduction().
+  struct Traffic {
+    double values_sent = 0.0;
+    double rounds = 0.0;
+    double reductions = 0.0;
+  };
+  const Traffic &traffic() const { return traffic_; }
+  void count_reduction(int n = 1) { traffic_.reductions += n; }
 
  private:
   LAMMPS_NS::LAMMPS *lmp_;
@@ -58,6 +72,7 @@ class RankGrains : public wiregrain::WorkerExchange {
   int owned_ = 0;
   std::vector<double> buffer_;  // width_ values per atom (own and ghost)
   int width_ = 0;
+  Traffic traffic_;
 };
 
 }  // namespace wiregrain_lmp

@@ -6,7 +6,8 @@ points and velocities within the solver's tolerance on 1 to 4 ranks, as does one
 short column with its wire; a run continued from
 a restart file repeats the straight run on 2 ranks to the bit; a stack of two cubes
 sliding across the ranks' boundary stops where the discrete equations of motion say, to
-round-off, on 1 and 2 ranks; what it does not carry stops with an ERROR."""
+round-off, on 1 and 2 ranks; the solves, sweeps and traffic the fix counts add up; what it
+does not carry stops with an ERROR."""
 
 import numpy as np
 
@@ -119,6 +120,47 @@ run             100
             self.assertLess(interface, 1e-12)
             self.assertLess(top, 1e-10)
             self.assertEqual(t["nscd[6]"][-1], 0)
+
+
+class Counts(DeckTestCase):
+    # The counts the fix reports for sizing runs (docs/commands/fix_nscd_polyhedra.md,
+    # f_ID[25+3W+4P..29+3W+4P]) on the 50-cube stack, 20 steps, every step's sweeps
+    # printed: the solves are the steps run (one NSCD step per timestep here, the setup's
+    # solve included when it is made), the sweeps their sum over the steps; one rank sends
+    # no values (no neighbour), two ranks cut across the stack send some, with at least
+    # one communication round and one reduction per sweep (the sweeps exchange the
+    # boundary grains' velocities and test convergence on a global residual).
+    def test_solves_sweeps_and_traffic(self):
+        n = 50
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(n)], box=(-3, 3, -3, 3, -1, n + 2))
+        self.assertRanCleanly(made)
+        counts = {}
+        for ranks in (1, 2):
+            r = run(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.5 method gauss_seidel solve distributed wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[1] f_nscd[28] f_nscd[29] f_nscd[30] f_nscd[31] f_nscd[32]
+thermo_modify   format float %.17g
+thermo          1
+run             20
+""", processors="1 1 *"), workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            solves, sweeps = t["nscd[28]"], t["nscd[29]"]
+            # step 0 prints the setup's solve (if any); each later step adds one solve and its sweeps
+            np.testing.assert_array_equal(np.diff(solves), np.ones(20))
+            np.testing.assert_array_equal(np.diff(sweeps), t["nscd[1]"][1:])
+            self.assertGreater(sweeps[-1] - sweeps[0], 20)
+            counts[ranks] = (sweeps[-1], t["nscd[30]"][-1], t["nscd[31]"][-1], t["nscd[32]"][-1])
+            print(f"\n{ranks} rank(s): solves {solves[-1]:.0f}, sweeps {sweeps[-1]:.0f}, values sent "
+                  f"{counts[ranks][1]:.0f}, rounds {counts[ranks][2]:.0f}, reductions {counts[ranks][3]:.0f}")
+        sweeps, values, rounds, reductions = counts[1]
+        self.assertEqual(values, 0.0)
+        sweeps, values, rounds, reductions = counts[2]
+        self.assertGreater(values, 0.0)
+        self.assertGreaterEqual(rounds, sweeps)
+        self.assertGreaterEqual(reductions, sweeps)
 
 
 class PileStep(DeckTestCase):
