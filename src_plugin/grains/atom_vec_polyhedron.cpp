@@ -138,6 +138,13 @@ void AtomVecPolyhedron::replace_shapes(wiregrain::ShapeLibrary library) {
   library_.reset(new wiregrain::ShapeLibrary(std::move(library)));
 }
 
+void AtomVecPolyhedron::release_shapes_of_absent_grains() {
+  std::vector<char> present(library_->size(), 0);
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    if (shape[i] >= 0 && shape[i] < library_->size()) present[shape[i]] = 1;
+  library_->release_built_except(present);
+}
+
 void AtomVecPolyhedron::assign_shape(int i, int s, double rho) {
   const wiregrain::GrainShape &g = (*library_)[s];
   shape[i] = s;

@@ -11,8 +11,9 @@
    `mass`: the body that carries the mass and inertia, the swept spheropolyhedron
    (dilated, default) or the sharp polyhedron.
 
-   The shape library (wiregrain::ShapeLibrary) is held here, identical on every rank, and
-   written to restart files. Grains are made by create_grains (or read_data, given a
+   The shape library (wiregrain::ShapeLibrary) is held here, its records identical on every
+   rank, and written to restart files; a rank builds the shapes it uses (with `solve
+   distributed`, those of its own and ghost grains). Grains are made by create_grains (or read_data, given a
    library from a restart).
 
    Data file Atoms line: atom-ID atom-type shape density qw qi qj qk x y z
@@ -54,6 +55,11 @@ class AtomVecPolyhedron : public PluginAtomVec, public wiregrain_lmp::GrainShape
   int add_shape(const wiregrain::ConvexShape &shape, double body_to_input[4], double centroid[3]);
   // Replace the library (grain_shapes read); grains already defined keep their indices.
   void replace_shapes(wiregrain::ShapeLibrary library);
+  // Drop the built shapes (core/geometry/shape_library.h) of the grains this rank neither
+  // owns nor holds as ghosts; the records stay and a shape asked for again is built again.
+  // For a rank that works only on its own and ghost grains (fix nscd/polyhedra `solve
+  // distributed`), at a step where no posed shape of the library is held.
+  void release_shapes_of_absent_grains();
   // Give grain i shape `shape` at `density`: mass, principal inertia, bounding radius.
   void assign_shape(int i, int shape, double density);
   // grains of the group (all ranks) that have no shape (made by create_atoms)

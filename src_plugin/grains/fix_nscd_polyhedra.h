@@ -185,6 +185,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   std::unique_ptr<wiregrain_lmp::RankGrains> rank_grains_;  // solve distributed
   double largest_radius_ = 0.0;             // of the group's grains, at init
   double largest_activation_ = 0.0;         // of the steps so far (solve distributed)
+  bigint shapes_released_at_ = -1;          // the reneighbouring at which the absent grains' shapes were dropped (solve distributed)
   long projections_ = 0;                    // pair corrections since the fix was made
   double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
   double stick_solves_[3] = {0.0, 0.0, 0.0};  // method subspace: tried, kept, factorisations, since the fix was made

@@ -97,6 +97,14 @@ void FixNSCDPolyhedra::check_ghost_cutoff(double activation) {
 // stops every rank with an ERROR naming the grain of the smallest tag that has one.
 std::vector<wiregrain::GrainState> FixNSCDPolyhedra::rank_grains() {
   const double ftm2v = force->ftm2v;
+  // after each reneighbouring, the built shapes of the grains that left this rank's own and
+  // ghost grains are dropped (the library's records stay): the shapes built on a rank fall
+  // with its share of the grains. No posed shape is held here: fix wire/grain poses its
+  // grains again after each grain step.
+  if (neighbor->lastcall != shapes_released_at_) {
+    AtomVecPolyhedron::of(atom)->release_shapes_of_absent_grains();
+    shapes_released_at_ = neighbor->lastcall;
+  }
   rank_grains_->collect(groupbit);
   const std::vector<int> &atoms = rank_grains_->atoms();
   const int owned = rank_grains_->owned();

@@ -117,3 +117,46 @@ TEST(ShapeLibrary, SphereRoundTripAndSharpModelRefused) {
   }
   EXPECT_EQ(sharp.size(), 0);
 }
+
+// The built shapes are a cache over the records: deserialize() keeps none built, operator[]
+// builds the entry asked for, release_built_except() drops the others. A shape built again
+// has the record's vertices and mass properties to the bit, and a deserialized shape built
+// again is the first build to the bit (faces, normals, offsets), so a rank that drops and
+// rebuilds a grain's shape sees the same grain.
+TEST(ShapeLibrary, BuiltShapesAreReleasedAndRebuiltTheSame) {
+  ShapeLibrary made(MassModel::dilated);
+  for (int k = 0; k < 6; ++k) made.add(ConvexShape::random_ellipsoid(2000 + k, 20, 0.9, 0.8, 0.6, 0.1));
+  EXPECT_EQ(made.built_count(), 6);
+  const std::vector<Eigen::Vector3d> vertices = made[2].shape.vertices();
+  const double volume = made[2].volume, radius = made[2].bounding_radius;
+  const Eigen::Vector3d inertia = made[2].unit_inertia;
+  std::vector<char> needed(6, 0);
+  needed[4] = 1;
+  made.release_built_except(needed);
+  EXPECT_EQ(made.built_count(), 1);
+  const GrainShape& rebuilt = made[2];
+  EXPECT_EQ(made.built_count(), 2);
+  ASSERT_EQ(rebuilt.shape.vertices().size(), vertices.size());
+  for (std::size_t v = 0; v < vertices.size(); ++v) EXPECT_EQ(rebuilt.shape.vertices()[v], vertices[v]);
+  EXPECT_EQ(rebuilt.volume, volume);
+  EXPECT_EQ(rebuilt.unit_inertia, inertia);
+  EXPECT_EQ(rebuilt.bounding_radius, radius);
+
+  const ShapeLibrary read = ShapeLibrary::deserialize(made.serialize());
+  EXPECT_EQ(read.built_count(), 0);
+  std::vector<ConvexShape::Face> first = read[3].shape.faces();
+  const double first_volume = read[3].volume;
+  EXPECT_EQ(read.built_count(), 1);
+  ShapeLibrary again = ShapeLibrary::deserialize(made.serialize());
+  again.release_built_except({});
+  ASSERT_EQ(again[3].shape.faces().size(), first.size());
+  for (std::size_t f = 0; f < first.size(); ++f) {
+    EXPECT_EQ(again[3].shape.faces()[f].vertices, first[f].vertices);
+    EXPECT_EQ(again[3].shape.faces()[f].normal, first[f].normal);
+    EXPECT_EQ(again[3].shape.faces()[f].offset, first[f].offset);
+  }
+  EXPECT_EQ(again[3].volume, first_volume);
+  again.release_built_except({});
+  EXPECT_EQ(again.built_count(), 0);
+  EXPECT_EQ(again[3].shape.faces().size(), first.size());
+}

@@ -6,13 +6,35 @@
 
 namespace wiregrain {
 
-void ShapeLibrary::append_body_frame(const ConvexShape& body) {
-  GrainShape g{body};
+void ShapeLibrary::append_body_frame(ConvexShape body, bool keep) {
+  Entry e;
   const MassProperties m = body.mass_properties(1.0, model_);
-  g.volume = m.volume;
-  g.unit_inertia = m.inertia.diagonal();
-  g.bounding_radius = body.bounding_radius();
-  shapes_.push_back(std::move(g));
+  e.sweep_radius = body.sweep_radius();
+  e.vertices = body.vertices();
+  e.volume = m.volume;
+  e.unit_inertia = m.inertia.diagonal();
+  e.bounding_radius = body.bounding_radius();
+  if (keep) e.built = std::make_shared<const GrainShape>(GrainShape{std::move(body), e.volume, e.unit_inertia,
+                                                                    e.bounding_radius});
+  entries_.push_back(std::move(e));
+}
+
+const GrainShape& ShapeLibrary::build(int index) const {
+  const Entry& e = entries_[index];
+  e.built = std::make_shared<const GrainShape>(
+      GrainShape{ConvexShape::from_points(e.vertices, e.sweep_radius), e.volume, e.unit_inertia, e.bounding_radius});
+  return *e.built;
+}
+
+int ShapeLibrary::built_count() const {
+  int n = 0;
+  for (const Entry& e : entries_) n += e.built ? 1 : 0;
+  return n;
+}
+
+void ShapeLibrary::release_built_except(const std::vector<char>& needed) {
+  for (std::size_t s = 0; s < entries_.size(); ++s)
+    if (s >= needed.size() || !needed[s]) entries_[s].built.reset();
 }
 
 int ShapeLibrary::add(const ConvexShape& shape, Placement* placement) {
@@ -21,16 +43,16 @@ int ShapeLibrary::add(const ConvexShape& shape, Placement* placement) {
     placement->rotation = body.rotation;
     placement->centroid = body.centroid;
   }
-  append_body_frame(body.shape);
+  append_body_frame(body.shape, true);
   return size() - 1;
 }
 
 std::vector<double> ShapeLibrary::serialize() const {
-  std::vector<double> out{model_ == MassModel::dilated ? 1.0 : 0.0, double(shapes_.size())};
-  for (const GrainShape& g : shapes_) {
-    out.push_back(g.shape.sweep_radius());
-    out.push_back(double(g.shape.vertices().size()));
-    for (const Eigen::Vector3d& v : g.shape.vertices()) out.insert(out.end(), {v.x(), v.y(), v.z()});
+  std::vector<double> out{model_ == MassModel::dilated ? 1.0 : 0.0, double(entries_.size())};
+  for (const Entry& e : entries_) {
+    out.push_back(e.sweep_radius);
+    out.push_back(double(e.vertices.size()));
+    for (const Eigen::Vector3d& v : e.vertices) out.insert(out.end(), {v.x(), v.y(), v.z()});
   }
   return out;
 }
@@ -49,7 +71,7 @@ ShapeLibrary ShapeLibrary::deserialize(const std::vector<double>& data) {
     if ((n != 1 && n < 4) || k + 3 * std::size_t(n) > data.size()) fail();
     std::vector<Eigen::Vector3d> vertices;
     for (long v = 0; v < n; ++v, k += 3) vertices.emplace_back(data[k], data[k + 1], data[k + 2]);
-    library.append_body_frame(ConvexShape::from_points(vertices, sweep));
+    library.append_body_frame(ConvexShape::from_points(vertices, sweep), false);
   }
   return library;
 }
