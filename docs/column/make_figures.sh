@@ -66,12 +66,14 @@ S=$R/silo_2026-12-06
 # sliding along each layer (docs/results.md, "One continuous wire")
 /usr/bin/python3 $P/wire_along.py $R/wire_layouts_tall_2026-12-06/along.csv \
     --plot docs/column/wire_layouts_tall_along_2026-12-06.png
-# the paper's Fig. 12 at R = 5, 7 and 8, with and without wire: the final columns
+# the paper's Fig. 12 at R = 5, 6, 7 and 8, with and without wire: the final columns
 X=$R/R_sweep_2026-12-07
 /usr/bin/python3 $P/plot_columns.py "$X/R_nowire/R=5/seed=4242" "$X/R_wire/R=5/seed=4242" \
+    "$X/R_nowire/R=6/seed=4242" "$X/R_wire/R=6/seed=4242" \
     "$X/R_nowire/R=7/seed=4242" "$X/R_wire/R=7/seed=4242" "$X/R_nowire/R=8/seed=4242" "$X/R_wire/R=8/seed=4242" \
     -o docs/column/R_sweep_columns_2026-12-07.png \
-    --legend "R = 5, no wire" "R = 5, wire" "R = 7, no wire" "R = 7, wire" "R = 8, no wire" "R = 8, wire"
+    --legend "R = 5, no wire" "R = 5, wire" "R = 6, no wire" "R = 6, wire" "R = 7, no wire" "R = 7, wire" \
+    "R = 8, no wire" "R = 8, wire"
 # the tall column under the spring-driven plate, with and without wire (docs/results.md, "The
 # column under a plate"); the confinement and network figures need the runs' dumps: their
 # command.sh draws them

@@ -1,21 +1,23 @@
 #!/bin/sh
-# The paper's Fig. 12 at R = 7, 5 and 8 (docs/results.md, "The loop radius R at the paper's
-# layer count"): in.column at its defaults (7 layers, N_p = 915 (R/10)^2: 448, 229 and 586
-# grains), seed 4242, with the wire and without it (-var wire 0), and R = 6 and 9 (329 and
-# 741 grains) without it, the grains' tops dumped every 2 time units of the wall phase
+# The paper's Fig. 12 at R = 5 to 9 (docs/results.md, "The loop radius R at the paper's
+# layer count"): in.column at its defaults (7 layers, N_p = 915 (R/10)^2: 448, 229, 586 and
+# 329 grains), seed 4242, with the wire and without it (-var wire 0), and R = 9 (741 grains)
+# without it, the grains' tops dumped every 2 time units of the wall phase
 # (-var t_tops 2); one core per run, two side by side; R = 7 and 5 with the build and decks of commit
-# dab6008, R = 8, 6 and 9 with those of commit 96d69b8. R = 10 is the Table 1 pair of
+# dab6008, R = 8, 6 and 9 with those of commit 96d69b8 (R = 6 with the wire was stopped in its
+# wall phase and continued from its relaxed restart: the same command with -var resume 1 in
+# its folder). R = 10 is the Table 1 pair of
 # table1_readings_2026-12-06. Run from the repository root; kept here per run: column.obs,
 # final.json and the final VTK files.
 set -e
 D=docs/column/runs/R_sweep_2026-12-07
-postprocess/sweep.py R 7 5 8 --seeds 4242 --var t_tops 2 --out sweeps/R_wire
+postprocess/sweep.py R 7 5 8 6 --seeds 4242 --var t_tops 2 --out sweeps/R_wire
 postprocess/sweep.py R 7 5 8 6 9 --seeds 4242 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
-for R in 7 5 8; do
+for R in 7 5 8 6; do
   postprocess/column_readings.py sweeps/R_wire/R=$R/seed=4242 sweeps/R_nowire/R=$R/seed=4242 \
       --radius $R --label "wire R=$R" "no wire R=$R" --csv $D/readings_R$R.csv
 done
-for R in 6 9; do
+for R in 9; do
   postprocess/column_readings.py sweeps/R_nowire/R=$R/seed=4242 --radius $R --label "no wire R=$R" \
       --csv $D/readings_R$R.csv
 done
@@ -28,5 +30,5 @@ for arm in R_wire R_nowire; do
     [ $arm = R_nowire ] || cp sweeps/$s/post/wire_final* $D/$s/post/
   done
 done
-postprocess/sweep.py R 5 7 8 --seeds 4242 --summary-only --out $D/R_wire
+postprocess/sweep.py R 5 6 7 8 --seeds 4242 --summary-only --out $D/R_wire
 postprocess/sweep.py R 5 6 7 8 9 --seeds 4242 --summary-only --out $D/R_nowire
