@@ -13,8 +13,8 @@
 
    The shape library (wiregrain::ShapeLibrary) is held here, its records identical on every
    rank, and written to restart files; a rank builds the shapes it uses (with `solve
-   distributed`, those of its own and ghost grains). Grains are made by create_grains (or read_data, given a
-   library from a restart).
+   distributed`, those of its own and ghost grains). Grains are made by create_grains (or
+   read_data, given a library from a restart).
 
    Data file Atoms line: atom-ID atom-type shape density qw qi qj qk x y z
    Velocities line:      atom-ID vx vy vz wx wy wz */
