@@ -48,6 +48,19 @@ def mpirun(args, ranks, liggghts, workdir, variables, log):
     return elapsed, text, rss
 
 
+def relaxed_column(liggghts, relaxed, prep, prefix):
+    """A temporary folder holding column_relaxed.restart and column_deposited.txt: copied
+    from the folder `relaxed`, or made there by in.column with the variables `prep` on 2 ranks."""
+    work = tempfile.mkdtemp(prefix=prefix)
+    if relaxed:
+        for name in ("column_relaxed.restart", "column_deposited.txt"):
+            shutil.copy(os.path.join(relaxed, name), work)
+    else:
+        print(f"making the relaxed column in {work} ...", flush=True)
+        mpirun([], 2, liggghts, work, prep, os.path.join(work, "prep.log"))
+    return work
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--liggghts", default=os.path.join(ROOT, "build", "liggghts"))
@@ -58,13 +71,7 @@ def main():
     args = parser.parse_args()
     liggghts = os.path.abspath(args.liggghts)
     prep = PREP_WIRE if args.wire else PREP
-    work = tempfile.mkdtemp(prefix="nscd-distributed-")
-    if args.relaxed:
-        for name in ("column_relaxed.restart", "column_deposited.txt"):
-            shutil.copy(os.path.join(args.relaxed, name), work)
-    else:
-        print(f"making the relaxed column in {work} ...", flush=True)
-        mpirun([], 2, liggghts, work, prep, os.path.join(work, "prep.log"))
+    work = relaxed_column(liggghts, args.relaxed, prep, "nscd-distributed-")
     phase = dict(prep, resume=1, t_end=prep["t_relax"] + args.time)
     results = {}
     for round_ in range(args.repeat):

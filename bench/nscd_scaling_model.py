@@ -34,11 +34,10 @@ import os
 import re
 import shutil
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from nscd_distributed import PREP, ROOT, mpirun  # noqa: E402
+from nscd_distributed import PREP, ROOT, mpirun, relaxed_column  # noqa: E402
 from nscd_memory import stat  # noqa: E402
 
 # The Table 1 column as laid by in.column (R = 10, margin 1.5: the container 23 x 23 a_max;
@@ -69,9 +68,9 @@ class Model:
         self.latency, self.bandwidth = latency, bandwidth
         self.n = column["grains"] / (column["width"] ** 2 * column["height"])  # grains per unit volume
         self.t_c = one["nscd"] / one["solves"] / column["grains"]  # s per own grain and solve
-        # two ranks: the container cut once across x, each rank a block width/2 x width x height
-        a, b, c = column["width"] / 2, column["width"], column["height"]
-        # ghosts of a block with one cut face: n w b c (the shell only on the cut side)
+        # two ranks: the container cut once across x, each rank a block width/2 x width x
+        # height whose ghosts fill the shell on its cut face, n w b c
+        b, c = column["width"], column["height"]
         self.w = two["ghosts"] / (self.n * b * c)
         self.lam = (two["nscd"] / two["solves"] / self.t_c - two["owned"]) / two["ghosts"]
         self.per_round_ghost = two["values"] / (two["rounds"] * two["ghosts"])
@@ -125,13 +124,7 @@ def main():
     parser.add_argument("--bandwidth", type=float, default=5e9, help="bytes per s per rank (assumed)")
     args = parser.parse_args()
     liggghts = os.path.abspath(args.liggghts)
-    work = tempfile.mkdtemp(prefix="nscd-scaling-model-")
-    if args.relaxed:
-        for name in ("column_relaxed.restart", "column_deposited.txt"):
-            shutil.copy(os.path.join(args.relaxed, name), work)
-    else:
-        print(f"making the relaxed column in {work} ...", flush=True)
-        mpirun([], 2, liggghts, work, PREP, os.path.join(work, "prep.log"))
+    work = relaxed_column(liggghts, args.relaxed, PREP, "nscd-scaling-model-")
     phase = dict(PREP, resume=1, t_end=PREP["t_relax"] + args.time)
     runs = {}
     for ranks in (1, 2, 4):
