@@ -288,20 +288,32 @@ std::vector<PlacementObstacle> chain_segments(Domain *domain, const std::vector<
 }
 
 // The grid of everything the new grains must not overlap: the chain segments, then every
-// existing atom (a grain of the library, else a sphere of its radius).
+// existing atom a new grain can reach (a grain of the library, else a sphere of its
+// radius). A new grain's centre lies in [lo, hi] (the region's bounds), so an atom whose
+// centre is farther from them along a non-periodic axis than its radius (a grain's bounding
+// radius) plus the largest new bounding radius touches none and is left out: its shape is
+// not built, and a column laid layer by layer places each layer among the grains of the
+// layers next to it only.
 wiregrain::PlacementGrid obstacle_grid(LAMMPS *lmp, const wiregrain::ShapeLibrary &library,
-                                       const std::vector<int> &shape_of, bool polyhedra) {
+                                       const std::vector<int> &shape_of, bool polyhedra, const Eigen::Vector3d &lo,
+                                       const Eigen::Vector3d &hi) {
   Domain *domain = lmp->domain;
-  const std::vector<double> existing = gather_existing_atoms(lmp, polyhedra);
-  const int n_existing = static_cast<int>(existing.size()) / kExistingValues;
-  std::vector<PlacementObstacle> segments = chain_segments(domain, existing);
+  const std::vector<double> all = gather_existing_atoms(lmp, polyhedra);
+  std::vector<PlacementObstacle> segments = chain_segments(domain, all);
 
   double max_bound = 0.0;
   for (int shape : shape_of) max_bound = std::max(max_bound, library[shape].bounding_radius);
-  for (int e = 0; e < n_existing; e++) {
-    const int s = static_cast<int>(existing[kExistingValues * e + 7]);
-    max_bound = std::max(max_bound, s >= 0 ? library[s].bounding_radius : existing[kExistingValues * e + 8]);
+  const double new_bound = max_bound;
+  std::vector<double> existing;
+  for (std::size_t e = 0; e < all.size() / kExistingValues; e++) {
+    const double *v = &all[kExistingValues * e];
+    bool reach = true;
+    for (int d = 0; d < 3; d++)
+      if (!domain->periodicity[d] && (v[d] < lo[d] - v[8] - new_bound || v[d] > hi[d] + v[8] + new_bound)) reach = false;
+    if (reach) existing.insert(existing.end(), v, v + kExistingValues);
   }
+  const int n_existing = static_cast<int>(existing.size()) / kExistingValues;
+  for (int e = 0; e < n_existing; e++) max_bound = std::max(max_bound, existing[kExistingValues * e + 8]);
   for (const PlacementObstacle &b : segments) max_bound = std::max(max_bound, b.bound);
   wiregrain::PlacementGrid grid(
       library, Eigen::Vector3d(domain->boxlo[0], domain->boxlo[1], domain->boxlo[2]),
@@ -536,7 +548,7 @@ void CreateGrains::command(int narg, char **arg) {
   const wiregrain::GrainShapeDraw draw = draw_shapes(rng, s, poly, own_library, args);
   const wiregrain::ShapeLibrary &library = poly ? poly->shapes() : own_library;
 
-  wiregrain::PlacementGrid grid = obstacle_grid(lmp, library, draw.shape_of, poly != NULL);
+  wiregrain::PlacementGrid grid = obstacle_grid(lmp, library, draw.shape_of, poly != NULL, lo, hi);
   const wiregrain::GrainPlacement placed = place(grid, draw, s, sites, lo, hi, rng, args);
   check_in_box(domain, placed.position, args);
 

@@ -490,6 +490,28 @@ create_grains   1 40 random cont seed 22 write_shapes shapes.txt
         self.assertAlmostEqual(gap / new.min(), 1.0, delta=1e-9)
 
 
+    def test_avoids_existing_grains_beside_the_region(self):
+        # existing grains whose centres lie outside the new region but within reach of it
+        # (the layer at z = 1.5 below a region from z = 2) are obstacles: every new grain
+        # keeps apart from them and the command counts every new-old pair whose bounding
+        # spheres meet; a layer far above (z = 10) is out of reach and changes nothing.
+        res = self.insert("""
+region          low block -7 7 -4 4 0 2
+region          high block -7 7 -4 4 2 6
+region          top block -7 7 -4 4 9 11
+create_grains   1 25 layer top 10 seed 20 write_shapes far.txt
+create_grains   1 25 layer low 1.5 seed 21 write_shapes first.txt
+create_grains   1 60 random high seed 22 write_shapes shapes.txt
+""")
+        inside = lambda x, y, z: -7 <= x <= 7 and -4 <= y <= 4 and 2 <= z <= 6
+        second, _ = self.check_grains(res, 60, inside)
+        first, far = read_shapes(res.path("first.txt")), read_shapes(res.path("far.txt"))
+        g_all, g_old = gaps(far + first + second), gaps(far + first)
+        self.assertTrue(np.all(g_all > 0.0))
+        gap, pairs = reported(res.output)
+        self.assertEqual(pairs, len(g_all) - len(g_old))
+        self.assertGreater(len(gaps(first + second)) - len(gaps(first)) - len(gaps(second)), 0)  # in reach
+
     def test_avoids_wire(self):
         # atom_style hybrid: grains keep clear of the wire's segments (spherocylinders of
         # the bead radius between consecutive beads), not only of its beads
