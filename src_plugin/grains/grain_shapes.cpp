@@ -36,10 +36,10 @@ void GrainShapes::command(int narg, char **arg) {
       out << "wiregrain shapes " << library.size() << " mass "
           << (library.model() == wiregrain::MassModel::dilated ? "dilated" : "sharp") << "\n";
       out << std::setprecision(17);
-      for (int s = 0; s < library.size(); s++) {
-        const wiregrain::ConvexShape &shape = library[s].shape;
-        out << "shape " << s << " sweep " << shape.sweep_radius() << " vertices " << shape.vertices().size() << "\n";
-        for (const Eigen::Vector3d &v : shape.vertices()) out << v.x() << " " << v.y() << " " << v.z() << "\n";
+      for (int s = 0; s < library.size(); s++) {  // the records: no shape is built for this
+        const std::vector<Eigen::Vector3d> &vertices = library.vertices(s);
+        out << "shape " << s << " sweep " << library.sweep_radius(s) << " vertices " << vertices.size() << "\n";
+        for (const Eigen::Vector3d &v : vertices) out << v.x() << " " << v.y() << " " << v.z() << "\n";
       }
       ok = out.good() ? 1 : 0;
     }

@@ -134,6 +134,10 @@ TEST(ShapeLibrary, BuiltShapesAreReleasedAndRebuiltTheSame) {
   needed[4] = 1;
   made.release_built_except(needed);
   EXPECT_EQ(made.built_count(), 1);
+  ASSERT_EQ(made.vertices(2).size(), vertices.size());  // the record, read without building
+  EXPECT_EQ(made.vertices(2)[5], vertices[5]);
+  EXPECT_EQ(made.sweep_radius(2), 0.1);
+  EXPECT_EQ(made.built_count(), 1);
   const GrainShape& rebuilt = made[2];
   EXPECT_EQ(made.built_count(), 2);
   ASSERT_EQ(rebuilt.shape.vertices().size(), vertices.size());

@@ -53,6 +53,10 @@ class ShapeLibrary {
   }
   int size() const { return static_cast<int>(entries_.size()); }
   MassModel model() const { return model_; }
+  // entry `index`'s record, without building it: its body-frame vertices (those of its
+  // built shape) and sweep radius
+  const std::vector<Eigen::Vector3d>& vertices(int index) const { return entries_[index].vertices; }
+  double sweep_radius(int index) const { return entries_[index].sweep_radius; }
 
   // The built shapes: how many are held, and dropping those whose needed[index] is 0
   // (entries beyond needed's size are dropped too); their records stay, so operator[]
