@@ -85,6 +85,9 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
       stretch_warned_(false),
       summed_steps_(0),
       bead_force_(NULL),
+      grain_load_(NULL),
+      reverse_width_(3),
+      loads_by_owner_(false),
       output_(NULL),
       nmax_ghost_(0),
       stats_step_(-1),
@@ -140,7 +143,7 @@ FixWireGrain::FixWireGrain(LAMMPS *lmp, int narg, char **arg)
   peratom_flag = 1;
   size_peratom_cols = 6;
   peratom_freq = 1;
-  comm_reverse = 3;
+  comm_reverse = 6;  // bead forces (3) or grain loads (6): reverse_width_
   create_attribute = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
@@ -160,6 +163,7 @@ FixWireGrain::~FixWireGrain() {
   atom->delete_callback(id, 0);
   wiregrain_lmp::delete_companion_fix(lmp, history_id_);
   memory->destroy(bead_force_);
+  memory->destroy(grain_load_);
   memory->destroy(output_);
 }
 
@@ -258,6 +262,7 @@ void FixWireGrain::init() {
   }
   if (!nscd_ && !stock_grains_)
     fail("needs a fix nscd/polyhedra that integrates all grains of group '" + grain_group_ + "'");
+  loads_by_owner_ = stock_grains_ || nscd_->solves_distributed();
 
   const int ntypes = atom->ntypes;
   modulus_.assign((ntypes + 1) * (ntypes + 1), 0.0);
@@ -493,6 +498,8 @@ void FixWireGrain::evaluate(bool setup) {
     nmax_ghost_ = atom->nmax;
     memory->destroy(bead_force_);
     memory->create(bead_force_, nmax_ghost_, 3, "wire/grain:bead_force");
+    memory->destroy(grain_load_);
+    memory->create(grain_load_, nmax_ghost_, 6, "wire/grain:grain_load");
   }
   for (int i = 0; i < nall; i++) bead_force_[i][0] = bead_force_[i][1] = bead_force_[i][2] = 0.0;
   const wiregrain::HeldGrains &held = *core_->held;
@@ -600,28 +607,80 @@ void FixWireGrain::apply_bead_forces() {
   }
 }
 
-// The loads of all ranks on every rank (the same sums everywhere), added to the owned
-// grains' force and torque: this step's (setup) or the sums over the NSCD step's
-// sub-steps; the outputs show them averaged over `steps`.
+// The loads on the grains, added to the owned grains' force and torque: this step's
+// (setup) or the sums over the NSCD step's sub-steps; the outputs show them averaged over
+// `steps`. Grains distributed: each load is put on the rank's copy of its grain (owned or
+// ghost) and LIGGGHTS' reverse communication adds the ghosts' loads to their owners; a
+// load on a grain the rank no longer holds goes to every rank (an all-gather of those
+// loads alone, when a reduction finds any). Replicated: every rank takes every rank's
+// loads, added in rank order.
 void FixWireGrain::apply_grain_loads(const wiregrain::GrainLoadSums &loads, int steps) {
-  wiregrain::GrainLoadSums total;
-  total.add_flat(wiregrain_lmp::all_gather_records(world, loads.flatten()));
   steps = std::max(steps, 1);
-  for (double &s : average_force_) s = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & grain_groupbit_)
       for (int e = 0; e < 6; e++) output_[i][e] = 0.0;
-  for (const auto &entry : total.loads()) {
-    for (int e = 0; e < 3; e++) average_force_[e] += entry.second.force[e] / steps;
-    const int i = atom->map((int)entry.first);
-    if (i < 0 || i >= atom->nlocal) continue;
+  const int nlocal = atom->nlocal;
+  const auto add_to_owned = [&](int i, const double *load) {
     for (int e = 0; e < 3; e++) {
-      atom->f[i][e] += entry.second.force[e];
-      atom->torque[i][e] += entry.second.torque[e];
-      output_[i][e] = entry.second.force[e] / steps;
-      output_[i][3 + e] = entry.second.torque[e] / steps;
+      atom->f[i][e] += load[e];
+      atom->torque[i][e] += load[3 + e];
+      output_[i][e] = load[e] / steps;
+      output_[i][3 + e] = load[3 + e] / steps;
+    }
+  };
+  const auto flat_load = [](const wiregrain::GrainLoadSums::Load &load, double *out) {
+    for (int e = 0; e < 3; e++) {
+      out[e] = load.force[e];
+      out[3 + e] = load.torque[e];
+    }
+  };
+  double load[6];
+  if (!loads_by_owner_) {
+    wiregrain::GrainLoadSums total;
+    total.add_flat(wiregrain_lmp::all_gather_records(world, loads.flatten()));
+    for (double &s : average_force_) s = 0.0;
+    for (const auto &entry : total.loads()) {
+      for (int e = 0; e < 3; e++) average_force_[e] += entry.second.force[e] / steps;
+      const int i = atom->map((int)entry.first);
+      if (i < 0 || i >= nlocal) continue;
+      flat_load(entry.second, load);
+      add_to_owned(i, load);
+    }
+    return;
+  }
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++)
+    for (int e = 0; e < 6; e++) grain_load_[i][e] = 0.0;
+  wiregrain::GrainLoadSums absent;  // loads on grains this rank no longer holds
+  double sums[4] = {0.0, 0.0, 0.0, 0.0}, totals[4];  // Σ force / steps, absent loads
+  for (const auto &entry : loads.loads()) {
+    for (int e = 0; e < 3; e++) sums[e] += entry.second.force[e] / steps;
+    const int i = atom->map((int)entry.first);
+    if (i < 0) {
+      absent.add(entry.first, entry.second.force, entry.second.torque);
+      sums[3] += 1.0;
+      continue;
+    }
+    flat_load(entry.second, load);
+    for (int e = 0; e < 6; e++) grain_load_[i][e] += load[e];
+  }
+  MPI_Allreduce(sums, totals, 4, MPI_DOUBLE, MPI_SUM, world);
+  for (int e = 0; e < 3; e++) average_force_[e] = totals[e];
+  reverse_width_ = 6;
+  comm->reverse_comm_fix(this);
+  reverse_width_ = 3;
+  if (totals[3] > 0.0) {
+    wiregrain::GrainLoadSums gathered;
+    gathered.add_flat(wiregrain_lmp::all_gather_records(world, absent.flatten()));
+    for (const auto &entry : gathered.loads()) {
+      const int i = atom->map((int)entry.first);
+      if (i < 0 || i >= nlocal) continue;
+      flat_load(entry.second, load);
+      for (int e = 0; e < 6; e++) grain_load_[i][e] += load[e];
     }
   }
+  for (int i = 0; i < nlocal; i++)
+    if (atom->mask[i] & grain_groupbit_) add_to_owned(i, grain_load_[i]);
 }
 
 double FixWireGrain::compute_vector(int k) {
@@ -642,15 +701,17 @@ double FixWireGrain::compute_vector(int k) {
 
 int FixWireGrain::pack_reverse_comm(int n, int first, double *buf) {
   int m = 0;
+  double **values = reverse_width_ == 6 ? grain_load_ : bead_force_;
   for (int i = first; i < first + n; i++)
-    for (int e = 0; e < 3; e++) buf[m++] = bead_force_[i][e];
-  return comm_reverse;
+    for (int e = 0; e < reverse_width_; e++) buf[m++] = values[i][e];
+  return reverse_width_;
 }
 
 void FixWireGrain::unpack_reverse_comm(int n, int *list, double *buf) {
   int m = 0;
+  double **values = reverse_width_ == 6 ? grain_load_ : bead_force_;
   for (int k = 0; k < n; k++)
-    for (int e = 0; e < 3; e++) bead_force_[list[k]][e] += buf[m++];
+    for (int e = 0; e < reverse_width_; e++) values[list[k]][e] += buf[m++];
 }
 
 void FixWireGrain::grow_arrays(int nmax) {
@@ -700,6 +761,6 @@ void FixWireGrain::restart(char *buf) {
 }
 
 double FixWireGrain::memory_usage() {
-  return double(atom->nmax) * 6 * sizeof(double) + double(nmax_ghost_) * 3 * sizeof(double) +
+  return double(atom->nmax) * 6 * sizeof(double) + double(nmax_ghost_) * 9 * sizeof(double) +
          double(core_->contacts.size()) * sizeof(wiregrain::ContactRecord);
 }

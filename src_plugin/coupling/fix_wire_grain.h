@@ -29,8 +29,12 @@
    Ranks: each rank tests its own segments against its own and its ghost grains (the fix
    asks LIGGGHTS for the grains whose surface is within (1 + max_stretch) ℓ + 2 r_w + the
    skins of the subdomain); no grain record leaves its rank. The loads on the
-   grains its segments touch are exchanged among the ranks at the NSCD step's last
-   sub-step.
+   grains its segments touch go to the grains' owners at the NSCD step's last sub-step:
+   with the grains distributed (stock grains, or fix nscd/polyhedra's `solve
+   distributed`) by LIGGGHTS' reverse communication from the ghost copies (a load on a
+   grain that is no longer a ghost of the rank by then, after a reneighbouring within the
+   NSCD step, goes by an all-gather of those loads alone); with `solve replicated` every
+   rank takes all ranks' loads (an all-gather), so the sums are added in rank order.
 
    Stock LIGGGHTS spheres: a grain group without polyhedra is taken as granular spheres
    (atom_style sphere/granular in the hybrid, integrated by fix nve/sphere every step):
@@ -132,6 +136,9 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   bool stretch_warned_;          // the warning of a segment beyond max_stretch was given
   int summed_steps_;             // sub-steps in the load sums
   double **bead_force_;          // per atom (owned and ghost): this step's force from the grains
+  double **grain_load_;          // per atom (owned and ghost): the NSCD step's load summed on a grain, force and torque
+  int reverse_width_;            // values per atom of the reverse communication: 3 bead forces, 6 grain loads
+  bool loads_by_owner_;          // grains distributed: loads reach the owners by reverse communication
   double **output_;              // per-atom array (see above)
   std::vector<int> segment_contacts_;  // this step, per owned bead: grains touching its segment
   int nmax_ghost_;

@@ -150,6 +150,8 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   bool solves_at_end_of_step(bigint step) const;
   // changes whenever the grains have moved (or a run was set up): held poses are stale
   long pose_version() const { return pose_version_; }
+  // `solve distributed`: each rank holds its own grains and their ghosts only
+  bool solves_distributed() const { return distributed_; }
 
  private:
   // the core step's options, the walls (current positions, moved by velocity·h every

@@ -373,6 +373,15 @@ class WireLoadedStack(test_nscd.WireLoadedStack):
     SOLVE, RANKS = "solve distributed", 2
 
 
+class WireLoadedStackCutAcross(test_nscd.WireLoadedStack):
+    # The same with the subdomains cutting the stack and the loop through their axis
+    # (processors 2 1 1: the cubes, centred on x = 0, belong to the rank of x >= 0): the
+    # segments of x < 0 load the top cube as a ghost grain of their rank, and fix
+    # wire/grain's reverse communication brings those loads to its owner (without it the
+    # interfaces carry about half the wire: checked).
+    SOLVE, RANKS, PROCESSORS = "solve distributed", 2, "2 1 1"
+
+
 class Errors(DeckTestCase):
     def setUp(self):
         self.made = grains_data("cube 1.0", [(0.0, 0.0, 0.5, 1, 0, 0, 0), (0.0, 0.0, 1.5, 1, 0, 0, 0)],

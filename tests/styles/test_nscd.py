@@ -159,6 +159,7 @@ class WireLoadedStack(DeckTestCase):
     # beads' sum 2.4e-13 of m_w g; held to 3e-14 and 3e-12 (without the damping the wire
     # still moves after 10 time units and the interfaces are 9e-6 off).
     SOLVE, RANKS = "", 1  # (test_distributed.py: the same with solve distributed on 2 ranks)
+    PROCESSORS = "* * *"
 
     def test_the_stack_carries_the_wire(self):
         made = wire_scene([(0, 0, 1.1 + 2.2 * k, 1, 0, 0, 0) for k in range(3)], ["loop 0 0 6.72 0.6 2 0.25"],
@@ -181,7 +182,7 @@ thermo_modify   format float %.17g norm no
 thermo          2000
 dump            d all custom 20000 dump.s id type mass z f_nscd[3] f_wg[3]
 run             20000
-"""), "d"), workdir=made.workdir, np_ranks=self.RANKS)
+""", processors=self.PROCESSORS), "d"), workdir=made.workdir, np_ranks=self.RANKS)
         self.assertRanCleanly(r)
         t = r.thermo()
         d = read_dump(r.path("dump.s"))
