@@ -142,7 +142,8 @@ const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> FixNSCDPolyhedra::keywords_ 
     {"order", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        using Order = wiregrain::SweepOrder;
        fix.core_->options.solver.order = value_choice<Order>(
-           args, key, {{"forward", Order::forward}, {"alternating", Order::alternating}, {"random", Order::random}});
+           args, key,
+           {{"forward", Order::forward}, {"alternating", Order::alternating}, {"random", Order::random}, {"coloured", Order::coloured}});
      }},
     {"seed", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        fix.core_->options.solver.seed = (std::uint64_t)args.value_int_in_range(key, 1, LONG_MAX);
@@ -273,7 +274,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size() + 5;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size() + 6;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -862,6 +863,7 @@ void FixNSCDPolyhedra::record_stats(const wiregrain::GrainStepResult &result) {
   stats_[0] = stats.sweeps;
   solves_ += 1.0;
   sweeps_ += stats.sweeps;
+  colours_ += stats.colours;
   stats_[1] = stats.residual;
   stats_[2] = stats.contact_points;
   stats_[3] = stats.max_overlap;
@@ -968,6 +970,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   const int counts = 24 + (int)wall_forces_.size() + core_->plates.output_size();
   if (k == counts) return solves_;
   if (k == counts + 1) return sweeps_;
+  if (k == counts + 5) return colours_;
   if (k >= counts + 2) {
     if (!rank_grains_) return 0.0;
     const wiregrain_lmp::RankGrains::Traffic &t = rank_grains_->traffic();

@@ -192,6 +192,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double projected_depth_ = 0.0;            // deepest end-of-step overlap / pair size, last solve
   double stick_solves_[3] = {0.0, 0.0, 0.0};  // method subspace: tried, kept, factorisations, since the fix was made
   double timings_[2];                       // wall-clock seconds of the last solve: gather+detection, solve
+  double colours_ = 0.0;                    // order coloured: the contact graph's colours summed over the solves
   double solves_ = 0.0, sweeps_ = 0.0;      // solves and their Gauss–Seidel sweeps since the fix was made
   double clocks_[3] = {0.0, 0.0, 0.0};      // the same summed since the fix was made, and the scatter + overlap projection
   std::vector<double> wall_forces_;         // 3 per wall

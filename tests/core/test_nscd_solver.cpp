@@ -189,7 +189,7 @@ TEST(NscdBox, SlidingOverManySteps) {
 TEST(NscdStack, ColumnInterfaceLoads) {
   const double h = 1e-3, g = 9.81;
   for (int n : {1, 5, 20}) {
-    for (SweepOrder order : {SweepOrder::forward, SweepOrder::alternating, SweepOrder::random}) {
+    for (SweepOrder order : {SweepOrder::forward, SweepOrder::alternating, SweepOrder::random, SweepOrder::coloured}) {
       NscdStep step = cube_column(n, h, g, 0.5);
       SolverSettings options;
       options.tolerance = 1e-6;
@@ -206,7 +206,8 @@ TEST(NscdStack, ColumnInterfaceLoads) {
                   n,
                   order == SweepOrder::forward       ? "forward"
                   : order == SweepOrder::alternating ? "alternating"
-                                                     : "random",
+                  : order == SweepOrder::random      ? "random"
+                                                     : "coloured",
                   report.iterations, report.increment, report.siconos_error, worst, v_max);
     }
   }

@@ -401,6 +401,37 @@ run             500
         self.assertEqual(plain["nscd[13]"][-1], 0)
 
 
+class ColouredOrder(DeckTestCase):
+    # The 20-cube stack with `order coloured` (colour by colour of the contact graph): each
+    # inner cube has 8 contact points (4 below, 4 above), so no colouring has fewer than 8
+    # colours, and the greedy one from the top down has 8 (the first interface 0-3, the next
+    # 4-7, the next 0-3 again, ...; the floor's points touch one cube only): 8 colours per
+    # solve on every step (f_ID[30+3W+4P], summed over the solves). The stack is carried
+    # as with the forward order: the floor force 20 to 1e-10, the top cube still.
+    def test_stack_coloured(self):
+        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(20)])
+        self.assertRanCleanly(made)
+        r = run(deck("""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra order coloured wall 0 0 0 0 0 1
+timestep        1e-3
+variable        ztop equal bound(all,zmax)
+thermo_style    custom step f_nscd[9] f_nscd[6] v_ztop f_nscd[28] f_nscd[33]
+thermo_modify   format float %.15g
+thermo          1
+run             50
+"""), workdir=made.workdir)
+        self.assertRanCleanly(r)
+        t = r.thermo()
+        colours = np.diff(t["nscd[33]"]) / np.diff(t["nscd[28]"])
+        print(f"20-cube stack, order coloured: colours per solve {sorted(set(colours))}, floor force "
+              f"{-t['nscd[9]'][-1]:.12f} (20), top moved {np.max(np.abs(t['ztop'] - 19.5)):.1e}")
+        np.testing.assert_array_equal(colours, 8.0)
+        self.assertLess(np.max(np.abs(-t["nscd[9]"][1:] - 20.0)), 1e-10)
+        self.assertLess(np.max(np.abs(t["ztop"] - 19.5)), 1e-9)
+        self.assertEqual(t["nscd[6]"][-1], 0)
+
+
 class Corner(DeckTestCase):
     # A cube in the corner of a floor and a frictionless wall, pushed into it by a tilted
     # gravity. Frictionless floor: floor force m g cos α, wall force m g sin α exactly.
@@ -1079,7 +1110,7 @@ class BadInput(DeckTestCase):
         self.check("freeze -1", "fix nscd/polyhedra (id nscd): value of 'freeze' must be >= 0, got -1")
         self.check("freeze 5 convergence increment",
                    "fix nscd/polyhedra (id nscd): 'freeze' needs 'convergence natural_map' or 'convergence both'")
-        self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating or random")
+        self.check("order chaotic", "fix nscd/polyhedra (id nscd): value of 'order' must be forward, alternating, random or coloured")
         self.check("method newton", "fix nscd/polyhedra (id nscd): value of 'method' must be gauss_seidel or subspace, got 'newton'")
         self.check("subspace_regularization 1", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be in (0, 1), got 1 (")
         self.check("subspace_regularization 0", "fix nscd/polyhedra (id nscd): value of 'subspace_regularization' must be > 0, got 0")

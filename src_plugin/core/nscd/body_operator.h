@@ -41,6 +41,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/common/worker_exchange.h"
@@ -110,6 +111,15 @@ class BodyContactOperator final : public ContactOperator {
   const BlockSparseMatrix3& delassus_matrix() override;
 
   const Vector6d& body_velocity(int b) const { return bodies_[b].velocity; }
+  int body_count() const { return static_cast<int>(bodies_.size()); }
+  // the bodies of contact c that an impulse moves: their indices, −1 for a wall or a body
+  // of infinite mass and inertia (core/nscd/contact_colouring.h)
+  std::pair<int, int> moving_bodies(int c) const {
+    const auto moving = [this](int b) {
+      return b >= 0 && (bodies_[b].inverse_mass != 0.0 || !bodies_[b].inverse_inertia.isZero(0.0)) ? b : -1;
+    };
+    return {moving(links_[c].body_a), moving(links_[c].body_b)};
+  }
 
   // A distributed step (NscdStep::touching_copies non-empty): the exchange of the copies'
   // velocities after a sweep (mass splitting, core/nscd/nscd_step.h): every body takes

@@ -10,6 +10,7 @@
 
 #include "core/common/errors.h"
 #include "core/nscd/body_operator.h"
+#include "core/nscd/contact_colouring.h"
 #include "core/nscd/distributed_stick_solve.h"
 #include "core/nscd/input_checks.h"
 #include "core/nscd/subspace_correction.h"
@@ -104,6 +105,8 @@ class GaussSeidelSolve {
  private:
   void apply_warm_start(const std::vector<Eigen::Vector3d>& warm_start);
   void apply_couple_warm_start(const std::vector<Eigen::Vector2d>& couple_warm_start);
+  // order coloured: order_ colour by colour (contact_colouring.h)
+  void colour_order();
   // a sweep in this iteration's order; its Σ|Δr|² and the couples' Σ|Δm|²
   double sweep(int iteration, double& couple_increment_squared);
   // the stopping measure after a sweep (gauss_seidel.h, "Stopping")
@@ -166,6 +169,7 @@ GaussSeidelSolve::GaussSeidelSolve(ContactOperator& op, const SolverSettings& se
   result_.impulses.assign(n_, Eigen::Vector3d::Zero());
   result_.states.assign(n_, ContactState::open);
   for (int c = 0; c < n_; ++c) order_[c] = c;
+  if (settings.order == SweepOrder::coloured) colour_order();
   if (rolling_) result_.couples.assign(n_, Eigen::Vector2d::Zero());
   // (no stick solves with rolling resistance: they would leave the couples one update
   // behind, core/nscd/subspace_correction.h)
@@ -200,6 +204,16 @@ void GaussSeidelSolve::apply_couple_warm_start(const std::vector<Eigen::Vector2d
     result_.couples[c] = couple_warm_start[c];
     body_op_->add_couple(c, couple_warm_start[c]);
   }
+}
+
+void GaussSeidelSolve::colour_order() {
+  if (body_op_ == nullptr)
+    throw InvalidArgument("order", "order coloured needs the step's bodies (solve_nscd_step), not an assembled problem");
+  std::vector<std::pair<int, int>> bodies(n_);
+  for (int c = 0; c < n_; ++c) bodies[c] = body_op_->moving_bodies(c);
+  const ContactColouring colouring = colour_contacts(bodies, body_op_->body_count());
+  order_ = colouring.order;
+  result_.report.colours = colouring.colours;
 }
 
 double GaussSeidelSolve::sweep(int iteration, double& couple_increment_squared) {

@@ -51,6 +51,7 @@ struct NscdReport {
   int subspace_accepted = 0;           // of which halved the Siconos error and were kept
   int subspace_factorizations = 0;     // numerical LDLᵀ factorisations they made (distributed: CG iterations)
   long frozen_updates = 0;             // contact updates skipped (freeze)
+  int colours = 0;                     // order coloured: colours of the contact graph
 };
 
 // method subspace from one solve to the next (a time step to the next;

@@ -186,6 +186,7 @@ void report_solve(const GrainStepProblem& problem, const NscdStepResult& solved,
   stats.subspace_solves = report.subspace_solves;
   stats.subspace_accepted = report.subspace_accepted;
   stats.subspace_factorizations = report.subspace_factorizations;
+  stats.colours = report.colours;
   stats.frozen_points = static_cast<int>(problem.frozen.size());
   if (problem.exchange != nullptr) {  // over the workers
     double counts = stats.contact_points;

@@ -264,6 +264,7 @@ struct GrainStepStats {
   bool hit_iteration_cap = false;
   int subspace_solves = 0, subspace_accepted = 0;  // method subspace (core/nscd/subspace_correction.h)
   int subspace_factorizations = 0;                 // the LDLᵀ factorisations those made
+  int colours = 0;                                 // order coloured: colours of the contact graph
   int sleeping = 0;        // grains asleep after the step
   int woken = 0;           // grains woken in the step (at its start or end)
   int frozen_points = 0;   // contact points of sleeping pairs, not solved

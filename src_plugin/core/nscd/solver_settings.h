@@ -17,7 +17,9 @@ namespace wiregrain {
 enum class SweepOrder {
   forward,      // 0, 1, …, n−1 every sweep
   alternating,  // forward, then backward (n−1, …, 0), and so on (symmetric Gauss–Seidel)
-  random        // a new random permutation every sweep (seeded, reproducible)
+  random,       // a new random permutation every sweep (seeded, reproducible)
+  coloured      // colour by colour of a greedy colouring of the contact graph, each colour in
+                // the forward order (core/nscd/contact_colouring.h; bodies only)
 };
 
 // The stopping measures (core/nscd/gauss_seidel.h, "Stopping").
