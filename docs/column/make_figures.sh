@@ -74,6 +74,13 @@ X=$R/R_sweep_2026-12-07
     -o docs/column/R_sweep_columns_2026-12-07.png \
     --legend "R = 5, no wire" "R = 5, wire" "R = 6, no wire" "R = 6, wire" "R = 7, no wire" "R = 7, wire" \
     "R = 8, no wire" "R = 8, wire"
+# the Table 1 grains as an R = 7 column in 10 layers, with the wire (mu_w 0.5 and 0.1) and
+# without: four readings of its height, and the final columns
+/usr/bin/python3 $P/column_readings.py $R/R7_10layers_2026-12-07/readings.csv \
+    --plot docs/column/R7_10layers_readings_2026-12-07.png
+Y=$R/R7_10layers_2026-12-07
+/usr/bin/python3 $P/plot_columns.py "$Y/nowire" "$Y/wire" -o docs/column/R7_10layers_columns_2026-12-07.png \
+    --legend "R = 7, 10 layers, no wire" "R = 7, 10 layers, wire (mu_w 0.5)"
 # the tall column under the spring-driven plate, with and without wire (docs/results.md, "The
 # column under a plate"); the confinement and network figures need the runs' dumps: their
 # command.sh draws them

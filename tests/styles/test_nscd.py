@@ -35,6 +35,14 @@ read_data       grains.data
 """
 
 
+def cube_stack(case, n):
+    """grains.data and grains.shapes (grains_data) of n unit cubes stacked on the floor z = 0,
+    made in a folder the caller's deck then runs in (made.workdir)."""
+    made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(n)])
+    case.assertRanCleanly(made)
+    return made
+
+
 class Stack(DeckTestCase):
     # N unit cubes (m = 1) stacked on a floor, the fix's default solver (method subspace,
     # tolerance 1e-4): interface k from the top carries k m g, the floor N m g, no grain
@@ -45,8 +53,7 @@ class Stack(DeckTestCase):
     # N m g, overlaps 0: the stick solve of the resting contacts is exact. Held to 1e-13
     # and 5e-15 N m g; a solve that stopped at its tolerance would be ~1e-4 off.
     def check(self, n, steps):
-        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(n)])
-        self.assertRanCleanly(made)
+        made = cube_stack(self, n)
         r = run(full_precision(deck(f"""
 fix             g all gravity {G} vector 0 0 -1
 fix             nscd all nscd/polyhedra friction 0.5 wall 0 0 0 0 0 1
@@ -366,8 +373,7 @@ class TallStack(DeckTestCase):
     # force is 20 to 1e-10 on every printed step and the top cube moves less than 1e-9;
     # method gauss_seidel hits the sweep cap on nearly every step (the comparison is printed).
     def stack(self, solver):
-        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(20)])
-        self.assertRanCleanly(made)
+        made = cube_stack(self, 20)
         r = run(deck(f"""
 fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra {solver} wall 0 0 0 0 0 1
@@ -409,8 +415,7 @@ class ColouredOrder(DeckTestCase):
     # solve on every step (f_ID[30+3W+4P], summed over the solves). The stack is carried
     # as with the forward order: the floor force 20 to 1e-10, the top cube still.
     def test_stack_coloured(self):
-        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(20)])
-        self.assertRanCleanly(made)
+        made = cube_stack(self, 20)
         r = run(deck("""
 fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra order coloured wall 0 0 0 0 0 1
@@ -829,8 +834,7 @@ class IterationCap(DeckTestCase):
     # 1e-15: every step hits it; the first 10 are named in warnings, all are counted in
     # f_ID[6].
     def test_cap_warnings(self):
-        made = grains_data("cube 1.0", [(0, 0, 0.5 + k, 1, 0, 0, 0) for k in range(5)])
-        self.assertRanCleanly(made)
+        made = cube_stack(self, 5)
         r = run(deck("""
 fix             g all gravity 1.0 vector 0 0 -1
 fix             nscd all nscd/polyhedra tolerance 1e-15 max_iterations 1 warm_start no wall 0 0 0 0 0 1
