@@ -13,6 +13,8 @@ set -e
 D=docs/column/runs/R_sweep_2026-12-07
 postprocess/sweep.py R 7 5 8 6 --seeds 4242 --var t_tops 2 --out sweeps/R_wire
 postprocess/sweep.py R 7 5 8 6 9 --seeds 4242 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
+# a second seed of R = 7 without wire (the build and decks of commit 309c1c9)
+postprocess/sweep.py R 7 --seeds 1001 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
 for R in 7 5 8 6; do
   postprocess/column_readings.py sweeps/R_wire/R=$R/seed=4242 sweeps/R_nowire/R=$R/seed=4242 \
       --radius $R --label "wire R=$R" "no wire R=$R" --csv $D/readings_R$R.csv
@@ -22,8 +24,8 @@ for R in 9; do
       --csv $D/readings_R$R.csv
 done
 for arm in R_wire R_nowire; do
-  for R in 7 5 8 6 9; do
-    s=$arm/R=$R/seed=4242; [ -f sweeps/$s/final.json ] || continue
+  for run in R=7/seed=4242 R=5/seed=4242 R=8/seed=4242 R=6/seed=4242 R=9/seed=4242 R=7/seed=1001; do
+    s=$arm/$run; [ -f sweeps/$s/final.json ] || continue
     mkdir -p $D/$s/post
     cp sweeps/$s/column.obs sweeps/$s/final.json $D/$s/
     cp sweeps/$s/post/grains_final* $D/$s/post/
@@ -31,4 +33,4 @@ for arm in R_wire R_nowire; do
   done
 done
 postprocess/sweep.py R 5 6 7 8 --seeds 4242 --summary-only --out $D/R_wire
-postprocess/sweep.py R 5 6 7 8 9 --seeds 4242 --summary-only --out $D/R_nowire
+postprocess/sweep.py R 5 6 7 8 9 --seeds 4242 1001 --summary-only --out $D/R_nowire
