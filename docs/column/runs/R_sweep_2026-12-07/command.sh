@@ -13,7 +13,8 @@ set -e
 D=docs/column/runs/R_sweep_2026-12-07
 postprocess/sweep.py R 7 5 8 6 --seeds 4242 --var t_tops 2 --out sweeps/R_wire
 postprocess/sweep.py R 7 5 8 6 9 --seeds 4242 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
-# a second seed of R = 7 without wire (the build and decks of commit 309c1c9)
+# a second seed of R = 7 with and without wire (the build and decks of commit 309c1c9)
+postprocess/sweep.py R 7 --seeds 1001 --var t_tops 2 --out sweeps/R_wire
 postprocess/sweep.py R 7 --seeds 1001 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
 for R in 7 5 8 6; do
   postprocess/column_readings.py sweeps/R_wire/R=$R/seed=4242 sweeps/R_nowire/R=$R/seed=4242 \
@@ -32,5 +33,5 @@ for arm in R_wire R_nowire; do
     [ $arm = R_nowire ] || cp sweeps/$s/post/wire_final* $D/$s/post/
   done
 done
-postprocess/sweep.py R 5 6 7 8 --seeds 4242 --summary-only --out $D/R_wire
+postprocess/sweep.py R 5 6 7 8 --seeds 4242 1001 --summary-only --out $D/R_wire
 postprocess/sweep.py R 5 6 7 8 9 --seeds 4242 1001 --summary-only --out $D/R_nowire
