@@ -22,17 +22,17 @@ unit volume; P ranks cut it into px x py x pz blocks a x b x c; a rank owns n a 
 and holds as ghosts those within a shell of width w on its cut sides,
 n ((a + 2w)(b + 2w)(c + 2w) - a b c) for an inner block (the slowest rank sets the pace;
 a dimension cut in two adds w, not 2w).
-Per NSCD solve it computes for t_c (owned + lambda ghosts) seconds, and communicates
-rounds(P) x (2 d latency) (LIGGGHTS sends each round to the neighbours of the d cut
-dimensions one after the other, both ways) + values(P) x 8 bytes / bandwidth +
-reductions(P) x 2 latency x log2 P. t_c is the one-rank time per grain; w the shell width
-that gives the two-rank run its ghosts; lambda the cost of a ghost against an own grain that
-gives the two-rank run its time; values(P) = rounds(P) x (values per round and ghost, from
-two ranks) x ghosts. The compute, rounds, values and reductions are per sweep (t_c per own
-grain and sweep, the others as one rank makes them per sweep), and the sweeps per solve
-grow with the ghosts per own grain, s(P) = s_1 (1 + kappa ghosts / own), kappa fitted to
-the 2 and 4 ranks' sweeps (Gauss-Seidel within a rank, Jacobi across: the more of a rank's
-grains touch ghosts, the more Jacobi-like the sweep).
+Per NSCD solve of s(P) sweeps it computes for t_c s(P) (owned + lambda ghosts) seconds,
+and communicates rounds(P) x (2 d latency) (LIGGGHTS sends each round to the neighbours of
+the d cut dimensions one after the other, both ways) + values(P) x 8 bytes / bandwidth +
+reductions(P) x 2 latency x log2 P. t_c is the one-rank time per own grain and sweep; w the
+shell width that gives the two-rank run its ghosts; lambda the cost of a ghost against an
+own grain that gives the two-rank run its time at its sweeps (held at 0 where the fit falls
+below); rounds(P) and reductions(P) are one rank's per sweep times s(P), values(P) =
+rounds(P) x (values per round and ghost, from two ranks) x ghosts. The sweeps per solve grow
+with the ghosts per own grain, s(P) = s_1 (1 + kappa ghosts / own), kappa fitted to the 2
+and 4 ranks' sweeps (Gauss-Seidel within a rank, Jacobi across: the more of a rank's grains
+touch ghosts, the more Jacobi-like the sweep).
 
 Two sweeps are modelled: (a) the one `solve distributed` makes, Gauss-Seidel within a rank
 and Jacobi across (mass splitting: one exchange per sweep, the sweeps growing with P as
