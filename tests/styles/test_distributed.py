@@ -6,7 +6,8 @@ points and velocities within the solver's tolerance on 1 to 4 ranks, as does one
 short column with its wire; a run continued from
 a restart file repeats the straight run on 2 ranks to the bit; a stack of two cubes
 sliding across the ranks' boundary stops where the discrete equations of motion say, to
-round-off, on 1 and 2 ranks; the solves, sweeps and traffic the fix counts add up; what it
+round-off, on 1 and 2 ranks; a wire loop cut by two subdomains hands its loads on a ghost
+grain to the grain's owner; the solves, sweeps and traffic the fix counts add up; what it
 does not carry stops with an ERROR."""
 
 import numpy as np
