@@ -9,11 +9,16 @@ conjugate-gradient iterations, they made), the peak resident memory of each rank
 column's height at the end, and the speed-ups side by side.
 
     bench/nscd_distributed.py [--liggghts build/liggghts] [--wire] [--relaxed DIR] [--time 5] [--repeat 2]
+        [--var NAME VALUE ...] [--ranks 1 2]
 
 Without --relaxed the restart is made first (in.column with each layer, and with --wire
 each wire layer, deposited for 1.5 time units and relaxed for 1 more: a few minutes on 2
 ranks) in a temporary folder; --relaxed DIR reuses the column_relaxed.restart and
-column_deposited.txt of a folder made with the same --wire."""
+column_deposited.txt of a folder made with the same --wire. When DIR is the folder of a
+whole in.column run (it holds column_walls.txt: H0 and the time the walls started), the
+window starts at that time and the run's own deck variables are to be given again with
+--var (e.g. -var R 7 -var nlayers 10 ... for a column not at the defaults); --var is passed
+to every run."""
 
 import argparse
 import os
@@ -68,15 +73,25 @@ def main():
     parser.add_argument("--relaxed", help="a folder with column_relaxed.restart and column_deposited.txt")
     parser.add_argument("--time", type=float, default=5.0, help="time units of the wall phase timed")
     parser.add_argument("--repeat", type=int, default=2)
+    parser.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
+                        help="a deck variable for every run (repeatable)")
+    parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2], help="the rank counts timed (1 and 2)")
     args = parser.parse_args()
     liggghts = os.path.abspath(args.liggghts)
     prep = PREP_WIRE if args.wire else PREP
     work = relaxed_column(liggghts, args.relaxed, prep, "nscd-distributed-")
-    phase = dict(prep, resume=1, t_end=prep["t_relax"] + args.time)
+    walls_record = os.path.join(args.relaxed, "column_walls.txt") if args.relaxed else ""
+    if walls_record and os.path.exists(walls_record):
+        # a whole run's relaxed column: its walls started at the record's second number
+        t_start = float(open(walls_record).read().split()[1])
+        phase = dict(wire=1 if args.wire else 0, resume=1, t_relax=t_start, t_end=t_start + args.time)
+    else:
+        phase = dict(prep, resume=1, t_end=prep["t_relax"] + args.time)
+    phase.update(dict(args.var))
     results = {}
     for round_ in range(args.repeat):
         for solve in ("replicated", "distributed"):
-            for ranks in (1, 2):
+            for ranks in args.ranks:
                 run_dir = os.path.join(work, f"{solve}-{ranks}-{round_}")
                 os.makedirs(run_dir)
                 for name in ("column_relaxed.restart", "column_deposited.txt"):
@@ -95,19 +110,23 @@ def main():
                       f"H_n {entry[-1][5]:.6f}, stick solves tried {stick.group(1)}, kept {stick.group(2)}, "
                       f"{'CG iterations' if solve == 'distributed' else 'factorisations'} {stick.group(3)}", flush=True)
     best = {key: min(values) for key, values in results.items()}
-    print(f"\nTable 1 column {'with' if args.wire else 'without'} wire, wall phase {args.time} time units from the relaxed restart, best of "
-          f"{args.repeat}:")
+    given = "".join(f" -var {name} {value}" for name, value in args.var)
+    print(f"\nin.column{given} {'with' if args.wire else 'without'} wire, wall phase {args.time} time units from the "
+          f"relaxed restart, best of {args.repeat}:")
     print(f"{'':24s} {'wall s':>8s} {'detect s':>9s} {'solve s':>8s} {'NSCD s':>8s} {'RSS MiB':>8s}")
     for (solve, ranks), b in sorted(best.items()):
         print(f"{solve + ' ' + str(ranks) + ' rank(s)':24s} {b[0]:8.1f} {b[1]:9.2f} {b[2]:8.2f} {b[1] + b[2]:8.2f} "
               f"{b[4]:8.1f}")
     for solve in ("replicated", "distributed"):
+        if (solve, 1) not in best or (solve, 2) not in best:
+            continue
         one, two = best[(solve, 1)], best[(solve, 2)]
         print(f"{solve}: 2 ranks against 1: wall {one[0] / two[0]:.2f}x, NSCD (detection + solve) "
               f"{(one[1] + one[2]) / (two[1] + two[2]):.2f}x")
-    rep, dist = best[("replicated", 2)], best[("distributed", 2)]
-    print(f"2 ranks, distributed against replicated: wall {rep[0] / dist[0]:.2f}x, NSCD "
-          f"{(rep[1] + rep[2]) / (dist[1] + dist[2]):.2f}x")
+    for ranks in args.ranks:
+        rep, dist = best[("replicated", ranks)], best[("distributed", ranks)]
+        print(f"{ranks} rank(s), distributed against replicated: wall {rep[0] / dist[0]:.2f}x, NSCD "
+              f"{(rep[1] + rep[2]) / (dist[1] + dist[2]):.2f}x")
     print(f"(runs in {work})")
 
 

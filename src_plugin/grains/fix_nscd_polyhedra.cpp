@@ -189,7 +189,9 @@ const wiregrain_lmp::KeywordTable<FixNSCDPolyhedra> FixNSCDPolyhedra::keywords_ 
        fix.share_detection_ = value_choice<bool>(args, key, {{"shared", true}, {"replicated", false}});
      }},
     {"solve", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
-       fix.distributed_ = value_choice<bool>(args, key, {{"replicated", false}, {"distributed", true}});
+       using Choice = FixNSCDPolyhedra::SolveChoice;
+       fix.solve_choice_ = value_choice<Choice>(
+           args, key, {{"auto", Choice::automatic}, {"replicated", Choice::replicated}, {"distributed", Choice::distributed}});
      }},
     {"manifold", [](Args &args, FixNSCDPolyhedra &fix, const std::string &key) {
        fix.core_->options.near_vertices = value_choice<bool>(args, key, {{"near_vertices", true}, {"closest", false}});
@@ -264,6 +266,11 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   if (core_->options.solver.freeze > 0 && core_->options.solver.measure == wiregrain::ConvergenceMeasure::increment)
     args.fail("'freeze' needs 'convergence natural_map' or 'convergence both' (the increment does not see frozen contacts)");
   if (core_->pair_skin > 0.0) core_->pairs.reset(new wiregrain::GrainPairCache(core_->pair_skin));
+  // solve auto: distributed where it gathers nothing and is faster (more than one rank;
+  // docs/benchmarks.md, "Grains over ranks"), replicated on one rank and where the
+  // keywords need it
+  distributed_ = solve_choice_ == SolveChoice::distributed ||
+                 (solve_choice_ == SolveChoice::automatic && comm->nprocs > 1 && distributed_refusal().empty());
   if (distributed_) {
     check_distributed_keywords();
     rank_grains_.reset(new wiregrain_lmp::RankGrains(lmp, this));
@@ -274,7 +281,7 @@ FixNSCDPolyhedra::FixNSCDPolyhedra(LAMMPS *lmp, int narg, char **arg)
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size() + 6;
+  size_vector = 6 + 3 * (int)core_->walls.size() + 18 + core_->plates.output_size() + 7;
   wall_forces_.assign(3 * core_->walls.size(), 0.0);
   peratom_flag = 1;
   size_peratom_cols = 6;
@@ -971,6 +978,7 @@ double FixNSCDPolyhedra::compute_vector(int k) {
   if (k == counts) return solves_;
   if (k == counts + 1) return sweeps_;
   if (k == counts + 5) return colours_;
+  if (k == counts + 6) return distributed_ ? 1.0 : 0.0;  // the solve mode taken (solve auto)
   if (k >= counts + 2) {
     if (!rank_grains_) return 0.0;
     const wiregrain_lmp::RankGrains::Traffic &t = rank_grains_->traffic();

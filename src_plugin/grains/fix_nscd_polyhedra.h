@@ -41,12 +41,15 @@
    v_sleep (|v| + |ω| R) for t_sleep are held and drop out of detection and solve among
    themselves until something moves them (core/nscd/grain_step.h, "Sleeping").
 
-   MPI, solve replicated (the default): every rank gathers all grains of the group, solves
-   the same contact problem in the same order and keeps its own grains' results, so 1 and
-   N ranks give the same state to the last bit; the cost of the solve does not shrink with
-   more ranks. The contact detection is shared (detection shared, the default): each rank
-   computes the contact points of a block of the candidate pairs and the blocks are
-   all-gathered, the same points to the bit; detection replicated: every rank computes all.
+   MPI, solve auto (the default): distributed on more than one rank, replicated on one rank
+   and with the keywords distributed does not carry (sleep, rolling_friction, plate,
+   write_problems, warm_geometry yes, a triclinic box). solve replicated: every rank
+   gathers all grains of the group, solves the same contact problem in the same order and
+   keeps its own grains' results, so 1 and N ranks give the same state to the last bit;
+   the cost of the solve does not shrink with more ranks. The contact detection is shared
+   (detection shared, the default): each rank computes the contact points of a block of
+   the candidate pairs and the blocks are all-gathered, the same points to the bit;
+   detection replicated: every rank computes all.
    solve distributed (fix_nscd_polyhedra_distributed.cpp, grains/rank_grains.h): each rank
    steps the pairs of its own grains with LIGGGHTS' ghost grains, nothing gathered
    (core/nscd/grain_step.h, GrainPartition); the answer agrees with the replicated one
@@ -183,7 +186,11 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double project_tolerance_;                // keyword project (0: off)
   int project_passes_;
   bool share_detection_ = true;             // keyword detection shared|replicated
-  bool distributed_ = false;                // keyword solve replicated|distributed
+  // keyword solve: auto (distributed on more than one rank when the keywords allow it,
+  // else replicated), replicated or distributed; distributed_ the mode taken
+  enum class SolveChoice { automatic, replicated, distributed };
+  SolveChoice solve_choice_ = SolveChoice::automatic;
+  bool distributed_ = false;
   std::unique_ptr<wiregrain_lmp::RankGrains> rank_grains_;  // solve distributed
   double largest_radius_ = 0.0;             // of the group's grains, at init
   double largest_activation_ = 0.0;         // of the steps so far (solve distributed)
@@ -220,6 +227,7 @@ class FixNSCDPolyhedra : public Fix, public wiregrain_lmp::ContactPublisher {
   double needed_ghost_cutoff(double activation) const;
   void check_ghost_cutoff(double activation);
   void check_distributed_keywords();
+  std::string distributed_refusal() const;  // what solve distributed does not take here ("": none)
   std::vector<double> all_ranks_impulses();
   void scatter_results(const std::vector<wiregrain::GrainState> &, const wiregrain::GrainStepResult &,
                        size_t grain_count);

@@ -39,18 +39,28 @@ constexpr double kGhostActivationOfRadius = 0.25;
 
 }  // namespace
 
-// The options distributed steps do not carry (checked when the fix is defined and at
-// each run start: fix_modify may turn sleeping on).
+// The options distributed steps do not carry, as the end of a sentence "... does not
+// <what>" ("" when the fix's keywords and box allow solve distributed).
+std::string FixNSCDPolyhedra::distributed_refusal() const {
+  if (core_->options.sleep.on()) return "take sleeping grains (keyword 'sleep'): use 'solve replicated'";
+  if (core_->options.rolling_friction > 0.0) return "take 'rolling_friction': use 'solve replicated'";
+  if (problem_every_ > 0) return "write the whole problem ('write_problems'): use 'solve replicated'";
+  if (core_->options.warm_geometry)
+    return "take 'warm_geometry yes' (its GJK simplices are not in the restart file): use 'solve replicated'";
+  if (domain->triclinic) return "take a triclinic box: use 'solve replicated'";
+  if (!core_->plates.empty()) return "take a 'plate' (the plate would be a body of every rank): use 'solve replicated'";
+  return "";
+}
+
+// Checked when the fix is defined and at each run start (fix_modify may turn sleeping on,
+// also after solve auto chose distributed).
 void FixNSCDPolyhedra::check_distributed_keywords() {
-  const auto refuse = [this](const std::string &what) {
-    wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, "'solve distributed' does not " + what);
-  };
-  if (core_->options.sleep.on()) refuse("take sleeping grains (keyword 'sleep'): use 'solve replicated'");
-  if (core_->options.rolling_friction > 0.0) refuse("take 'rolling_friction': use 'solve replicated'");
-  if (problem_every_ > 0) refuse("write the whole problem ('write_problems'): use 'solve replicated'");
-  if (core_->options.warm_geometry) refuse("take 'warm_geometry yes' (its GJK simplices are not in the restart file)");
-  if (domain->triclinic) refuse("take a triclinic box");
-  if (!core_->plates.empty()) refuse("take a 'plate' (the plate would be a body of every rank): use 'solve replicated'");
+  const std::string refusal = distributed_refusal();
+  if (refusal.empty()) return;
+  const std::string mode = solve_choice_ == SolveChoice::automatic
+                               ? "'solve auto' (distributed on " + std::to_string(comm->nprocs) + " ranks)"
+                               : "'solve distributed'";
+  wiregrain_lmp::style_error(error, "fix", "nscd/polyhedra", id, mode + " does not " + refusal);
 }
 
 // The ghost cutoff that holds every partner within `activation` of a rank's own grains

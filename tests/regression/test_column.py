@@ -202,7 +202,9 @@ class Column(DeckTestCase):
             self.assertRegex(out, re.escape(part) + r"\s+[0-9.]+\s+[0-9.]+\s+[0-9.]+")
 
     def test_two_ranks(self):
-        two = run(COLUMN, variables=TINY, np_ranks=2)
+        # solve replicated (the deck's default, solve auto, is distributed on 2 ranks: within
+        # the solver's tolerance, tests/styles/test_distributed.py)
+        two = run(COLUMN, variables=dict(TINY, solve="replicated"), np_ranks=2)
         self.assertRanCleanly(two)
         a, b = final_observables(self.straight), final_observables(two)
         print(f"\n1 rank {a}\n2 ranks {b}")
@@ -286,6 +288,41 @@ class Column(DeckTestCase):
         for name in ("H_n", "phi_p", "z_wpc"):
             self.assertEqual(a[name], c[name], name)
         self.assertAlmostEqual(a["U_s/L"] / c["U_s/L"], 1.0, delta=1e-12)
+
+    def test_continue_the_deposition_after_a_layer(self):
+        # layer_restart 1: column_layer_K.restart after each layer K (its time and the top of
+        # the column in column_layer_K.txt, K in column_layer.txt); -var resume 4
+        # resume_layer 1 deposits layer 2 again from the first layer's restart and goes on:
+        # the straight run's final observables (the wire's energy to round-off, its lists
+        # built anew: measured 1e-12 relative; the mean centre height H_c_n, summed over the
+        # grains in the order the restart left them, 8e-14); without resume_layer, the last layer
+        # written (2: the deposition is done, the relaxation follows). Writing the restarts
+        # leaves the run as it was, to the last digit.
+        straight = run(COLUMN, variables=dict(TINY, layer_restart=1))
+        self.assertRanCleanly(straight)
+        with open(straight.path("column_layer.txt")) as f:
+            self.assertEqual(f.read().split(), ["2"])
+        with open(straight.path("column_layer_1.txt")) as f:
+            self.assertEqual(float(f.read().split()[0]), 1.0)  # t_layer + t_wire
+        a = final_observables(straight)
+        self.assertEqual(a, final_observables(self.straight))
+        for resume_layer, layers in ((1, [2]), (0, [])):
+            resumed = run(COLUMN, variables=dict(TINY, resume=4, resume_layer=resume_layer), workdir=straight.workdir)
+            self.assertRanCleanly(resumed)
+            self.assertEqual([int(k) for k in re.findall(r"^in\.column layer (\d+): grains", resumed.output, re.M)], layers)
+            b = final_observables(resumed)
+            print(f"\nstraight {a}\nresume 4 after layer {resume_layer or 2} {b}")
+            for name in ("H_n", "phi_p", "z_wpc"):
+                self.assertEqual(a[name], b[name], name)
+            self.assertAlmostEqual(b["U_s/L"] / a["U_s/L"], 1.0, delta=1e-10)
+            self.assertAlmostEqual(b["H_c_n"] / a["H_c_n"], 1.0, delta=1e-12)
+        for variables, message in (
+                (dict(resume_layer=3), "in.column: resume 4: layer 3 is not one of the nlayers 2 layers"),
+                (dict(resume_layer=1, dt_SP="2e-3"),
+                 "in.column: resume 4: column_layer_1.restart is at step 1000, but layer 1 ended at t = 1 "
+                 "(column_layer_1.txt), step 500 with dt_SP 2e-3: resume with the dt_SP it was written with")):
+            refused = run(COLUMN, variables=dict(TINY, resume=4, **variables), workdir=straight.workdir)
+            self.assertStopsWith(refused, message)
 
     def test_without_wire(self):
         # the same grains and procedure without the wire: no wire energy, no contacts;
@@ -621,7 +658,8 @@ class Column(DeckTestCase):
                                    ({"t_end": 300}, "in.column: t_end (300) must be > t_relax (300)"),
                                    ({"wire": 2}, "in.column: wire must be 0 or 1, got 2"),
                                    ({"timing": 2}, "in.column: timing must be 0 or 1, got 2"),
-                                   ({"resume": 4}, "in.column: resume must be 0, 1, 2 or 3, got 4"),
+                                   ({"resume": 5}, "in.column: resume must be 0, 1, 2, 3 or 4, got 5"),
+                                   ({"layer_restart": 2}, "in.column: layer_restart must be 0 or 1, got 2"),
                                    ({"t_restart": -1}, "in.column: t_restart must be >= 0 (0: none), got -1"),
                                    ({"margin": 0}, "in.column: margin must be > 0 (the loop inside the walls), got 0"),
                                    ({"R": 1, "margin": 3}, "in.column: margin (3) puts the side walls outside the box (half-width 4)"),

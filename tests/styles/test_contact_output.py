@@ -84,11 +84,12 @@ class BoxStack(DeckTestCase):
         body = HEAD + f"""grain_shapes    read grains.shapes
 read_data       grains.data
 fix             g all gravity {G} vector 0 0 -1
-fix             nscd all nscd/polyhedra wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra solve replicated wall 0 0 0 0 0 1
 timestep        1e-3
 {OUTPUT.format(every=200)}
 run             200
 """
+        # solve replicated: 2 ranks hold the state of 1 to the bit
         cls.one = run(body, workdir=made.workdir)
         cls.two = run(body.replace("rows.dump", "rows2.dump").replace("grains.dump", "grains2.dump"), np_ranks=2,
                       workdir=made.workdir)
@@ -177,11 +178,18 @@ run             1500
     @classmethod
     def setUpClass(cls):
         cls.one = run(cls.DECK)
-        # the box cut in two at x = 0: grains in contact across the cut sit on different ranks
-        cls.two = run(cls.DECK, np_ranks=2)
+        # the box cut in two at x = 0: grains in contact across the cut sit on different
+        # ranks; solve replicated (the state of one rank to the bit) and the default, solve
+        # distributed there (each rank's contacts, ghost grains' rows by their owners)
+        replicated = cls.DECK.replace("nscd/polyhedra wall 0 0 0 0 0 1 &", "nscd/polyhedra solve replicated wall 0 0 0 0 0 1 &")
+        cls.two = run(replicated, np_ranks=2)
+        cls.distributed = run(cls.DECK, np_ranks=2)
 
     def test_volume_sum_is_the_boundary_term(self):
-        r = self.one
+        for r in (self.one, self.distributed):
+            self.check_volume_sum(r)
+
+    def check_volume_sum(self, r):
         self.assertRanCleanly(r)
         rows, grains = rows_of(r), read_dump(r.path("grains.dump"))
         force, _, moment = per_grain_sums(rows, grains)

@@ -383,6 +383,28 @@ class WireLoadedStackCutAcross(test_nscd.WireLoadedStack):
     SOLVE, RANKS, PROCESSORS = "solve distributed", 2, "2 1 1"
 
 
+class SolveAuto(DeckTestCase):
+    # The default, solve auto: distributed on more than one rank, replicated on one and where
+    # the keywords need it (sleep), as f_ID[31+3W+4P] reports (1: distributed; one wall:
+    # f_nscd[34]); replicated and distributed taken as given.
+    def test_the_mode_taken(self):
+        made = grains_data("cube 1.0", [(0.0, 0.0, 0.5, 1, 0, 0, 0), (0.0, 0.0, 1.5, 1, 0, 0, 0)],
+                           box=(-3, 3, -3, 3, -1, 10))
+        self.assertRanCleanly(made)
+        for keywords, ranks, distributed in (("", 1, 0), ("", 2, 1), ("sleep 0.01 0.5", 2, 0),
+                                             ("solve auto", 3, 1), ("solve replicated", 2, 0),
+                                             ("solve distributed", 1, 1)):
+            r = run(deck(f"""
+fix             g all gravity 1.0 vector 0 0 -1
+fix             nscd all nscd/polyhedra friction 0.5 {keywords} wall 0 0 0 0 0 1
+timestep        1e-3
+thermo_style    custom step f_nscd[34]
+run             2
+"""), workdir=made.workdir, np_ranks=ranks)
+            self.assertRanCleanly(r)
+            self.assertEqual(r.thermo()["nscd[34]"][-1], distributed, f"'{keywords}' on {ranks} rank(s)")
+
+
 class Errors(DeckTestCase):
     def setUp(self):
         self.made = grains_data("cube 1.0", [(0.0, 0.0, 0.5, 1, 0, 0, 0), (0.0, 0.0, 1.5, 1, 0, 0, 0)],
@@ -401,12 +423,15 @@ class Errors(DeckTestCase):
                    "'solve distributed' does not take 'rolling_friction': use 'solve replicated'")
         self.stops("solve distributed warm_geometry yes",
                    "'solve distributed' does not take 'warm_geometry yes' (its GJK simplices are not in the restart "
-                   "file)")
+                   "file): use 'solve replicated'")
         self.stops("solve distributed write_problems 1 p*.txt",
                    "'solve distributed' does not write the whole problem ('write_problems'): use 'solve replicated'")
         self.stops("solve distributed", "'solve distributed' does not take sleeping grains (keyword 'sleep'): use "
                    "'solve replicated'", extra="fix_modify      nscd sleep 0.01 0.5\n")
-        self.stops("solve parallel", "value of 'solve' must be replicated or distributed, got 'parallel'")
+        self.stops("solve parallel", "value of 'solve' must be auto, replicated or distributed, got 'parallel'")
+        # solve auto (the default) chose distributed on 2 ranks; sleeping turned on after
+        self.stops("friction 0.5", "'solve auto' (distributed on 2 ranks) does not take sleeping grains (keyword "
+                   "'sleep'): use 'solve replicated'", extra="fix_modify      nscd sleep 0.01 0.5\n")
 
     def test_ghosts_too_short_for_the_activation_distance(self):
         # a cube launched at 500 against the other: the activation distance 4 h v = 2 asks

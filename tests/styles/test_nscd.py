@@ -688,7 +688,9 @@ grain_shapes write grains.shapes
 
 
 class RanksAndRestart(DeckTestCase):
-    # A small heap of random grains: 1 and 2 ranks give the same state, a restart (with the
+    # A small heap of random grains, solve replicated: 1 and 2 ranks give the same state (the
+    # default on 2 ranks, solve distributed, agrees within the solver's tolerance:
+    # test_distributed.py), a restart (with the
     # warm-start impulses and the stick-solve backoff) reproduces the straight run. The
     # restart comes at t = 1.2, when the heap has settled and its stick solves are being
     # skipped: without the backoff in the restart file the runs differed by 2.9e-11. With
@@ -697,7 +699,7 @@ class RanksAndRestart(DeckTestCase):
     # the runs with warm_geometry differed by 8.0e-12 (1.8e-10 with rolling_friction).
     BODY = """
 fix             g all gravity 1.0 vector 0 0 -1
-fix             nscd all nscd/polyhedra tolerance 1e-6 EXTRA wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
+fix             nscd all nscd/polyhedra tolerance 1e-6 solve replicated EXTRA wall 0 0 0 0 0 1 wall -4 0 0 1 0 0 wall_friction 0 wall 4 0 0 -1 0 0 wall_friction 0 wall 0 -4 0 0 1 0 wall_friction 0 wall 0 4 0 0 -1 0 wall_friction 0
 timestep        1e-3
 dump            d all custom 100 dump.h id x y z vx vy vz omegax omegay omegaz
 """
@@ -745,7 +747,7 @@ class PairReuse(DeckTestCase):
     # among them, visited in the same order, and a kept pair is skipped only while its gap
     # minus how far its grains moved stays beyond the activation distance, so a pour into
     # a box follows the trajectory of a search every step (skin 0) to the last bit, with 1
-    # or 2 ranks (warm_geometry no, the default: with yes the cached pairs' GJK starts from
+    # or 2 ranks (solve replicated; warm_geometry no, the default: with yes the cached pairs' GJK starts from
     # their last simplex, the same to GJK's tolerance, not to the bit; RanksAndRestart)
     def test_pour_follows_the_full_search_to_the_bit(self):
         made = heap_of_30()

@@ -196,13 +196,14 @@ grain_shapes    write grains.shapes
 class PeriodicPile(DeckTestCase):
     # 30 grains fall onto a frictional floor in a box periodic along x and y, launched
     # sideways (vx = 0.8, vy = 0.5) so that grains cross the faces and wrap: 1 and 2 ranks
-    # (the subdomains split x) give the same state to the bit, and a run continued from a
+    # (the subdomains split x; solve replicated, the distributed solve on this pile:
+    # test_distributed.py) give the same state to the bit, and a run continued from a
     # restart file written in the middle (step 1500) that of the straight run to the bit.
     # (Every position fix nscd/polyhedra writes is wrapped at once, so the grains wrap at
     # the same steps whatever the ranks and restarts; measured differences: 0.)
     BODY = """
 fix             g all gravity 1.0 vector 0 0 -1
-fix             nscd all nscd/polyhedra tolerance 1e-6 wall 0 0 0 0 0 1
+fix             nscd all nscd/polyhedra tolerance 1e-6 solve replicated wall 0 0 0 0 0 1
 timestep        1e-3
 thermo_style    custom step f_nscd[3] f_nscd[9]
 thermo          100

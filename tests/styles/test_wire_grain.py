@@ -292,11 +292,14 @@ def three_cube_scene(height=0.62):
                  box=(-3, 3, -3, 3, -0.5, 3))
 
 
+# solve replicated: the 2-rank runs below give one rank's state to the bit (the wire's
+# ghost grains are the same in either solve; the distributed solve with the wire on 2
+# ranks: test_distributed.py)
 COUPLED = """
 fix             g all gravity {g} vector 0 0 -1
 fix             elastic wire wire/elastic
 fix             integr wire nve/gear
-fix             nscd grains nscd/polyhedra every {every} tolerance 1e-8 wall 0 0 0 0 0 1
+fix             nscd grains nscd/polyhedra every {every} tolerance 1e-8 solve replicated wall 0 0 0 0 0 1
 fix             wg wire wire/grain grains {contact}
 timestep        1e-3
 """
