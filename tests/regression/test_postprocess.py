@@ -231,6 +231,71 @@ class ColumnReadings(DeckTestCase):
                       "(in.column -var t_tops T)", text)
 
 
+def write_column_dump(path, step, atoms):
+    """A dump custom file of `id type x y z` (in.column's post/column_*.dump columns):
+    atoms = [(id, type, x, y, z)]."""
+    with open(path, "w") as f:
+        f.write(f"ITEM: TIMESTEP\n{step}\nITEM: NUMBER OF ATOMS\n{len(atoms)}\n"
+                "ITEM: BOX BOUNDS ff ff ff\n-20 20\n-20 20\n0 20\nITEM: ATOMS id type x y z\n")
+        for atom in atoms:
+            f.write("%d %d %.12g %.12g %.12g\n" % atom)
+
+
+class WireHold(DeckTestCase):
+    """postprocess/wire_hold.py on written dumps: two wire chains (consecutive IDs) of 60 beads
+    each on circles about the axis, at z = 1 and 2, radius 5 in the relaxed column and 5.5 in
+    the final one, with l_w 1/1.1 of the relaxed chord 2 r sin(pi/60): stretch 0.1 relaxed and
+    0.1 + 1.1 x 0.1 = 0.21 final on every segment (the pair across the two chains' ends, about
+    1.13 apart, beyond 2 l_w, is no segment); four grains at r = 2 (inside) whose centres sink from 1 to 0.9 and
+    four at r = 7 (outside) from 1 to 0.5: H_c ratios 0.9, 0.5 and 0.7, 4 of 8 outside. The
+    same grains without the wire need --radius."""
+
+    def test_two_rings(self):
+        chord = 2 * 5.0 * math.sin(math.pi / 60)
+        segment = chord / 1.1
+
+        def atoms(radius, inside_z, outside_z, wire=True):
+            out = []
+            for k in range(4):
+                a = 0.5 * math.pi * k
+                out.append((1 + k, 1, 2 * math.cos(a), 2 * math.sin(a), inside_z))
+                out.append((5 + k, 1, 7 * math.cos(a + 0.3), 7 * math.sin(a + 0.3), outside_z))
+            if wire:
+                for chain, z in enumerate((1.0, 2.0)):
+                    for j in range(60):
+                        a = 2 * math.pi * j / 60
+                        out.append((9 + 60 * chain + j, 2, radius * math.cos(a), radius * math.sin(a), z))
+            return out
+
+        with tempfile.TemporaryDirectory() as work:
+            for name, wire in (("wire", True), ("bare", False)):
+                os.makedirs(os.path.join(work, name, "post"))
+                write_column_dump(os.path.join(work, name, "post", "column_relaxed_100.dump"), 100,
+                                  atoms(5.0, 1.0, 1.0, wire))
+                write_column_dump(os.path.join(work, name, "post", "column_final_900.dump"), 900,
+                                  atoms(5.5, 0.9, 0.5, wire))
+            status, text = script("wire_hold.py", "wire", "--segment", repr(segment), "--csv", "hold.csv", cwd=work)
+            self.assertEqual(status, 0, text)
+            print(text)
+            with open(os.path.join(work, "hold.csv")) as f:
+                row = {k: v for k, v in next(csv.DictReader(f)).items()}
+            refused, message = script("wire_hold.py", "bare", cwd=work)
+            bare, bare_text = script("wire_hold.py", "bare", "--radius", "5", "--csv", "bare.csv", cwd=work)
+            self.assertEqual(bare, 0, bare_text)
+            with open(os.path.join(work, "bare.csv")) as f:
+                bare_row = next(csv.DictReader(f))
+        expected = {"loops_radius_relaxed": 5.0, "loops_radius_final": 5.5, "stretch_mean_relaxed": 0.1,
+                    "stretch_mean_final": 0.21, "stretch_q99_relaxed": 0.1, "stretch_q99_final": 0.21,
+                    "grains": 8, "grains_outside": 4, "Hc_n_inside": 0.9, "Hc_n_outside": 0.5, "Hc_n": 0.7}
+        for key, value in expected.items():
+            self.assertAlmostEqual(float(row[key]), value, delta=1e-9, msg=key)
+        self.assertNotEqual(refused, 0)
+        self.assertIn("wire_hold.py: bare: the relaxed column has no wire: give --radius", message)
+        for key in ("grains", "grains_outside", "Hc_n_inside", "Hc_n_outside", "Hc_n"):
+            self.assertAlmostEqual(float(bare_row[key]), expected[key], delta=1e-9, msg=key)
+        self.assertEqual(bare_row["loops_radius_relaxed"], "nan")
+
+
 class EarlyEnd(DeckTestCase):
     """postprocess/early_end.py reads a run made with ke_stop far below any kinetic energy
     and says when each phase would have ended with a given ke_stop; the deck run with that
