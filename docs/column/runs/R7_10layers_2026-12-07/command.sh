@@ -18,6 +18,9 @@ postprocess/sweep.py mu_w 0.1 --seeds 4242 --var R 7 $V --out sweeps/R7_10layers
 postprocess/column_readings.py sweeps/R7_10layers_wire/R=7/seed=4242 sweeps/R7_10layers_mu_w/mu_w=0.1/seed=4242 \
     sweeps/R7_10layers_nowire/R=7/seed=4242 --radius 7 --label "wire" "wire mu_w 0.1" "no wire" \
     --csv $D/readings.csv
+# what the wire holds: the grains inside and outside R = 7 (docs/results.md)
+postprocess/wire_hold.py sweeps/R7_10layers_wire/R=7/seed=4242 sweeps/R7_10layers_nowire/R=7/seed=4242 \
+    --radius 7 --label "wire" "no wire" --csv $D/hold.csv
 for arm in wire:R7_10layers_wire/R=7 mu_w_0.1:R7_10layers_mu_w/mu_w=0.1 nowire:R7_10layers_nowire/R=7; do
   name=${arm%%:*}; s=sweeps/${arm#*:}/seed=4242
   mkdir -p $D/$name
