@@ -13,7 +13,12 @@ run as `liggghts -in DECK -var PARAM VALUE -var seed S -var root REPOSITORY [--v
 with `mpirun -np NP` when NP > 1. A run is finished when its directory holds final.json
 (written here once the deck printed its "in.column final: ..." line and exited cleanly):
 finished runs are not repeated, so an interrupted sweep continues where it stopped, and a
-failed run is tried again. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
+failed run (error.txt: its ERROR line) is tried again from the start. A run that was
+interrupted (killed, out of time: no final.json and no error.txt) continues from its latest
+restart file, as in.column's `resume` does: the wall phase's column_walls.restart (resume 3,
+written with --var t_restart T), else the relaxed column (resume 1), the deposit (resume 2)
+or the last layer's restart (resume 4, written with --var layer_restart 1); its earlier logs
+are kept as log.liggghts.1, .2, ... and its wall time is the parts' sum. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
 
 --scheduler slurm submits the runs not yet finished as one Slurm job array (sbatch), each
 task one (value, seed) run in its folder with --ranks MPI ranks (mpirun inside the task's
@@ -30,6 +35,7 @@ docs/results.md, "Observables". Uses only Python's standard library."""
 import argparse
 import concurrent.futures
 import csv
+import glob
 import json
 import os
 import re
@@ -77,8 +83,36 @@ def command(args, value, seed):
     return cmd
 
 
+# in.column's restart files, the newest first: the file, the text file the deck reads with it,
+# and the deck's `resume` that continues from them
+RESTARTS = (("column_walls.restart", "column_walls.txt", 3), ("column_relaxed.restart", "column_deposited.txt", 1),
+            ("column_deposited.restart", "column_deposited.txt", 2), (None, "column_layer.txt", 4))
+ELAPSED = "elapsed_s.txt"  # the wall time of the parts run so far
+
+
+def resume_point(where):
+    """The `resume` that continues an interrupted run in `where` from its latest restart
+    file (0: none, start over); a run that stopped with an ERROR (error.txt) starts over."""
+    if os.path.exists(os.path.join(where, "error.txt")):
+        return 0
+    for restart, record, resume in RESTARTS:
+        if os.path.exists(os.path.join(where, record)) and (restart is None or os.path.exists(os.path.join(where, restart))):
+            return resume
+    return 0
+
+
+def start_over(where):
+    """Removes what a run left that would make the next call resume it."""
+    names = [record for _, record, _ in RESTARTS] + [restart for restart, _, _ in RESTARTS if restart] + [ELAPSED]
+    names += [os.path.basename(p) for p in glob.glob(os.path.join(where, "column_layer_*"))]
+    for name in set(names):
+        if os.path.exists(os.path.join(where, name)):
+            os.remove(os.path.join(where, name))
+
+
 def run_one(args, value, seed):
-    """Runs one (value, seed) unless finished; returns its row or an error text."""
+    """Runs one (value, seed) unless finished, continuing an interrupted run from its latest
+    restart; returns its row or an error text."""
     where = run_directory(args.out, args.param, value, seed)
     done = os.path.join(where, "final.json")
     if os.path.exists(done):
@@ -86,12 +120,32 @@ def run_one(args, value, seed):
             return json.load(f), None
     os.makedirs(os.path.join(where, "post"), exist_ok=True)
     cmd = command(args, value, seed)
+    resume = resume_point(where)
+    elapsed = 0.0
+    if resume:
+        cmd += ["-var", "resume", str(resume)]
+        part = 1
+        while os.path.exists(os.path.join(where, f"log.liggghts.{part}")):
+            part += 1
+        for name in ("log.liggghts", "stdout.txt"):
+            if os.path.exists(os.path.join(where, name)):
+                os.replace(os.path.join(where, name), os.path.join(where, f"{name}.{part}"))
+        if os.path.exists(os.path.join(where, ELAPSED)):
+            with open(os.path.join(where, ELAPSED)) as f:
+                elapsed = float(f.read().split()[0])
+        print(f"{args.param}={value} seed={seed}: continues with resume {resume}", flush=True)
+    else:
+        start_over(where)
     with open(os.path.join(where, "command.txt"), "w") as f:
         f.write(" ".join(cmd) + "\n")
     start = time.time()
-    with open(os.path.join(where, "stdout.txt"), "w") as out:
-        status = subprocess.call(cmd, cwd=where, stdout=out, stderr=subprocess.STDOUT)
-    wall = time.time() - start
+    try:
+        with open(os.path.join(where, "stdout.txt"), "w") as out:
+            status = subprocess.call(cmd, cwd=where, stdout=out, stderr=subprocess.STDOUT)
+    finally:
+        wall = elapsed + time.time() - start
+        with open(os.path.join(where, ELAPSED), "w") as f:
+            f.write(f"{wall:.1f}\n")
     texts = []  # the log, and the screen output (error->one writes its ERROR only there)
     for name in ("log.liggghts", "stdout.txt"):
         path = os.path.join(where, name)

@@ -8,6 +8,7 @@ import json
 import math
 import os
 import re
+import shutil
 import struct
 import subprocess
 import tempfile
@@ -74,6 +75,43 @@ class Sweep(DeckTestCase):
             self.assertEqual(status, 1)
             self.assertIn("in.column: v_wall must be > 0, got -1", text)
             self.assertFalse(os.path.exists(os.path.join(out, "v_wall=-1", "seed=5", "final.json")))
+
+    def test_an_interrupted_run_continues_from_its_latest_restart(self):
+        # a run of two layers with layer restarts, then its folder as an interruption after
+        # the first layer would leave it (no final.json, no error.txt; the restart files of
+        # layer 1 and column_layer.txt naming it): the second call continues it with
+        # resume 4 and ends with the straight run's H_n, φ_p and H_c_n (in.column's resume 4
+        # repeats the straight run: tests/regression/test_column.py), its first log kept
+        variables = ["--var", "layer_restart", "1", "--var", "R", "3", "--var", "nlayers", "2", "--var", "Np", "24",
+                     "--var", "t_layer", "0.5", "--var", "t_relax", "2.5", "--var", "t_end", "3", "--var", "t_obs", "0.1"]
+        straight = os.path.join(self.work, "straight")
+        args = ["v_wall", "0.2", "--seeds", "11", "--liggghts", LIGGGHTS] + variables
+        status, text = script("sweep.py", *args, "--out", straight, cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        done = os.path.join(straight, "v_wall=0.2", "seed=11")
+        cut = os.path.join(self.work, "cut")
+        where = os.path.join(cut, "v_wall=0.2", "seed=11")
+        shutil.copytree(done, where)
+        for name in os.listdir(where):
+            if name.startswith(("column_walls", "column_relaxed", "column_deposited", "column_layer_2", "final")) or \
+                    name.startswith("column.") or name == "column_layer.txt":
+                os.remove(os.path.join(where, name))
+        with open(os.path.join(where, "column_layer.txt"), "w") as f:
+            f.write("1\n")
+        status, text = script("sweep.py", *args, "--out", cut, cwd=self.work)
+        self.assertEqual(status, 0, text[-2000:])
+        self.assertIn("v_wall=0.2 seed=11: continues with resume 4", text)
+        self.assertTrue(os.path.exists(os.path.join(where, "log.liggghts.1")))
+        with open(os.path.join(where, "log.liggghts")) as f:
+            log = f.read()
+        self.assertNotIn("in.column layer 1:", log)
+        self.assertIn("in.column layer 2: grains", log)
+        with open(os.path.join(done, "final.json")) as f:
+            a = json.load(f)
+        with open(os.path.join(where, "final.json")) as f:
+            b = json.load(f)
+        for name in ("H_n", "phi_p", "H_c_n"):
+            self.assertAlmostEqual(b[name], a[name], delta=1e-12 * abs(a[name]), msg=name)
 
     def test_plots(self):
         status, text = script("plot_sweep.py", os.path.join(self.out, "summary.csv"), "-o", "sweep.png", "--table",
