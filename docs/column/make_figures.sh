@@ -66,14 +66,18 @@ S=$R/silo_2026-12-06
 # sliding along each layer (docs/results.md, "One continuous wire")
 /usr/bin/python3 $P/wire_along.py $R/wire_layouts_tall_2026-12-06/along.csv \
     --plot docs/column/wire_layouts_tall_along_2026-12-06.png
-# the paper's Fig. 12 at R = 5, 6, 7 and 8, with and without wire: the final columns
+# the paper's Fig. 12 at R = 5 to 9, with and without wire: the final columns, and the
+# observables against R
 X=$R/R_sweep_2026-12-07
 /usr/bin/python3 $P/plot_columns.py "$X/R_nowire/R=5/seed=4242" "$X/R_wire/R=5/seed=4242" \
     "$X/R_nowire/R=6/seed=4242" "$X/R_wire/R=6/seed=4242" \
     "$X/R_nowire/R=7/seed=4242" "$X/R_wire/R=7/seed=4242" "$X/R_nowire/R=8/seed=4242" "$X/R_wire/R=8/seed=4242" \
+    "$X/R_nowire/R=9/seed=4242" "$X/R_wire/R=9/seed=4242" \
     -o docs/column/R_sweep_columns_2026-12-07.png \
     --legend "R = 5, no wire" "R = 5, wire" "R = 6, no wire" "R = 6, wire" "R = 7, no wire" "R = 7, wire" \
-    "R = 8, no wire" "R = 8, wire"
+    "R = 8, no wire" "R = 8, wire" "R = 9, no wire" "R = 9, wire"
+/usr/bin/python3 $P/plot_sweep.py "$X/R_wire/summary.csv" "$X/R_nowire/summary.csv" --label R \
+    --legend "wire" "no wire" -o docs/column/R_sweep_observables_2026-12-07.png
 # the Table 1 grains as an R = 7 column in 10 layers, with the wire (mu_w 0.5 and 0.1) and
 # without: four readings of its height, and the final columns
 /usr/bin/python3 $P/column_readings.py $R/R7_10layers_2026-12-07/readings.csv \
