@@ -7,8 +7,9 @@ short column with its wire; a run continued from
 a restart file repeats the straight run on 2 ranks to the bit; a stack of two cubes
 sliding across the ranks' boundary stops where the discrete equations of motion say, to
 round-off, on 1 and 2 ranks; a wire loop cut by two subdomains hands its loads on a ghost
-grain to the grain's owner; the solves, sweeps and traffic the fix counts add up; what it
-does not carry stops with an ERROR."""
+grain to the grain's owner; the solves, sweeps and traffic the fix counts add up; the
+default, solve auto, takes it on more than one rank and not on one or with sleeping grains;
+what it does not carry stops with an ERROR."""
 
 import numpy as np
 
