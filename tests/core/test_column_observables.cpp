@@ -1,7 +1,9 @@
 // Column observables (core/column/observables.h) against values worked out by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "core/column/observables.h"
 #include "core/common/errors.h"
@@ -35,6 +37,43 @@ TEST(ColumnObservables, QuantileInterpolatesBetweenOrderStatistics) {
   // 102 values, position 0.98 · 101 = 98.98 between 98 and 99
   v.push_back(1e6);
   EXPECT_NEAR(quantile(v, 0.98), 98.98, 1e-12);
+}
+
+// quantile_of_parts against quantile() of all the values at once: the values spread
+// over three "workers" (one of them empty), count_at_most summing the three counts
+TEST(ColumnObservables, QuantileOfPartsEqualsTheQuantileOfAllValuesToTheBit) {
+  std::mt19937_64 random(20261207);
+  std::uniform_real_distribution<double> height(-2.0, 9.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 1 + trial * 7;
+    std::vector<double> all;
+    for (int k = 0; k < n; ++k) all.push_back(trial % 4 == 0 ? std::round(height(random)) : height(random));
+    if (trial % 5 == 1) all.push_back(0.0), all.push_back(-0.0), all.push_back(all.front());  // ties and zeros
+    std::vector<std::vector<double>> parts(3);
+    for (std::size_t k = 0; k < all.size(); ++k) parts[k % 3 == 2 ? 0 : k % 3 + (trial % 2)].push_back(all[k]);
+    long rounds = 0;
+    const auto count_at_most = [&](double x) {
+      ++rounds;
+      long count = 0;
+      for (const auto& part : parts)
+        for (double v : part) count += v <= x ? 1 : 0;
+      return count;
+    };
+    const double lowest = *std::min_element(all.begin(), all.end());
+    const double highest = *std::max_element(all.begin(), all.end());
+    for (double q : {0.0, 0.02, 0.5, 0.75, 0.98, 0.985, 1.0}) {
+      rounds = 0;
+      const double expected = quantile(all, q);
+      const double got = quantile_of_parts(long(all.size()), lowest, highest, q, count_at_most);
+      EXPECT_EQ(got, expected) << "trial " << trial << " q " << q;  // to the bit (±0 compare equal)
+      EXPECT_LE(rounds, 128);
+    }
+  }
+  const auto none = [](double) { return 0L; };
+  EXPECT_THROW(quantile_of_parts(0, 0.0, 1.0, 0.5, none), InvalidArgument);
+  EXPECT_THROW(quantile_of_parts(3, 0.0, 1.0, 1.5, none), InvalidArgument);
+  EXPECT_THROW(quantile_of_parts(3, 2.0, 1.0, 0.5, none), InvalidArgument);
+  EXPECT_THROW(quantile_of_parts(3, 0.0, HUGE_VAL, 0.5, none), InvalidArgument);
 }
 
 TEST(ColumnObservables, RetentionCountsCentresInsideTheWireCylinder) {

@@ -15,25 +15,29 @@ IDENTITY = (1.0, 0.0, 0.0, 0.0)
 class Height(DeckTestCase):
     def test_quantiles_of_the_grain_tops(self):
         # five upright cubes (edge 1, sweep 0.1) with centres at z = 1..5 and one turned by
-        # 45° about x at z = 7, whose top is an edge √½ above its centre
+        # 45° about x at z = 7, whose top is an edge √½ above its centre; on 1 rank and on 3
+        # (one x slab each: the tops are never gathered, each rank counts its own)
         turned = (math.cos(math.pi / 8), math.sin(math.pi / 8), 0.0, 0.0)
         poses = [(2.0 * k - 5.0, 0.0, 1.0 + k) + IDENTITY for k in range(5)] + [(5.0, 3.0, 7.0) + turned]
-        made = scene(poses, [], shape="cube 1", box=(-6, 6, -6, 6, -1, 9))
         tops = [1.0 + k + 0.5 + 0.1 for k in range(5)] + [7.0 + math.sqrt(0.5) + 0.1]
-        r = run(deck("""
+        for ranks in (1, 3):
+            made = scene(poses, [], shape="cube 1", box=(-6, 6, -6, 6, -1, 9))
+            r = run(deck("""
 compute         top grains column/height quantile 1
 compute         q75 grains column/height quantile 0.75
 compute         h grains column/height
-thermo_style    custom step c_top c_q75 c_h
+compute         low grains column/height quantile 0.1
+thermo_style    custom step c_top c_q75 c_h c_low
 thermo_modify   format float %.15g
 run             0
-"""), workdir=made.workdir)
-        self.assertRanCleanly(r)
-        t = r.thermo()
-        for column, q in (("top", 1.0), ("q75", 0.75), ("h", 0.98)):
-            expected = np.quantile(tops, q)  # linear interpolation between order statistics
-            self.assertAlmostEqual(t[column][0], expected, delta=1e-12, msg=column)
-        print(f"\ncolumn height: max {t['top'][0]:.12g}, q = 0.75 {t['q75'][0]:.12g}, default q = 0.98 {t['h'][0]:.12g}")
+""", processors="* 1 1"), np_ranks=ranks, workdir=made.workdir)
+            self.assertRanCleanly(r)
+            t = r.thermo()
+            for column, q in (("top", 1.0), ("q75", 0.75), ("h", 0.98), ("low", 0.1)):
+                expected = np.quantile(tops, q)  # linear interpolation between order statistics
+                self.assertAlmostEqual(t[column][0], expected, delta=1e-12, msg=f"{column} on {ranks} ranks")
+            print(f"\ncolumn height on {ranks} rank(s): max {t['top'][0]:.12g}, q = 0.75 {t['q75'][0]:.12g}, "
+                  f"default q = 0.98 {t['h'][0]:.12g}, q = 0.1 {t['low'][0]:.12g}")
 
 
 class StockSpheres(DeckTestCase):

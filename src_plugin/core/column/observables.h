@@ -13,6 +13,7 @@
 //     beads from that axis (paper Sec. 3).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,6 +28,18 @@ double grain_top(const PosedShape& grain);
 // The q-quantile (q in [0, 1]) of `values` (type 7, see above). InvalidArgument:
 // empty values ("values"), q outside [0, 1] or NaN ("quantile").
 double quantile(std::vector<double> values, double q);
+
+// The same q-quantile of values spread over workers, none holding them all (the MPI ranks,
+// each with the grains it owns): each order statistic is found by bisection over the
+// doubles' order (their bit patterns as ordered integers), each round asking
+// count_at_most(x), the number of values ≤ x over all workers (a collective call: one
+// reduction), so that at most 64 rounds find it exactly; two order statistics per quantile.
+// The result equals quantile() of all the values together, to the bit (a quantile that
+// falls on a zero may come out as −0). n: the number of values over all workers, lowest
+// and highest: their extremes; the values must be finite. InvalidArgument: n < 1 ("n"),
+// q outside [0, 1] or NaN ("quantile"), lowest > highest or not finite ("lowest").
+double quantile_of_parts(long n, double lowest, double highest, double q,
+                         const std::function<long(double)>& count_at_most);
 
 // Mean horizontal distance of `points` from the vertical axis through (axis.x, axis.y).
 // InvalidArgument("points") when empty.
