@@ -250,14 +250,44 @@ wiregrain::GrainShapeDraw draw_shapes(std::mt19937_64 &rng, const GrainSettings 
   return draw;
 }
 
-// The atoms already in the box, gathered on every rank, kExistingValues per atom: x,
-// quaternion, shape (−1: none), radius, tag, next bead (0: none).
+// The atoms already in the box that a grain placed with its centre in [lo, hi] can reach,
+// gathered on every rank, kExistingValues per atom: x, quaternion, shape (−1: none),
+// radius, tag, next bead (0: none). An atom is left out when its centre lies farther from
+// [lo, hi] along a non-periodic axis than its radius (a grain's bounding radius) plus
+// new_bound (the largest bounding radius of the new grains) plus, for a bead of a chain,
+// the longest segment over all ranks: every segment a new grain can touch then has both
+// its beads gathered. (A bead whose next bead is neither owned nor a ghost here, or a
+// system without an atom map, makes the longest segment unknown: then every bead is
+// gathered.) Collective.
 constexpr int kExistingValues = 11;
-std::vector<double> gather_existing_atoms(LAMMPS *lmp, bool polyhedra) {
+std::vector<double> gather_atoms_within_reach(LAMMPS *lmp, bool polyhedra, const Eigen::Vector3d &lo,
+                                              const Eigen::Vector3d &hi, double new_bound) {
   Atom *atom = lmp->atom;
+  Domain *domain = lmp->domain;
   const wiregrain_lmp::BeadChainLinks *chains = wiregrain_lmp::atom_style_part<const wiregrain_lmp::BeadChainLinks>(atom);
+  const auto in_chain = [&](int i) { return chains && (chains->next_bead_tag(i) > 0 || chains->previous_bead_tag(i) > 0); };
+  double longest = 0.0;
+  for (int i = 0; chains && i < atom->nlocal; i++) {
+    const int next = chains->next_bead_tag(i);
+    if (next <= 0) continue;
+    const int j = atom->map_style ? atom->map(next) : -1;
+    if (j < 0) {
+      longest = HUGE_VAL;
+      break;
+    }
+    double d[3] = {atom->x[j][0] - atom->x[i][0], atom->x[j][1] - atom->x[i][1], atom->x[j][2] - atom->x[i][2]};
+    domain->minimum_image(d);
+    longest = std::max(longest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  }
+  double longest_all = longest;
+  MPI_Allreduce(&longest, &longest_all, 1, MPI_DOUBLE, MPI_MAX, lmp->world);
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; i++) {
+    const double margin = atom->radius[i] + new_bound + (in_chain(i) ? longest_all : 0.0);
+    bool reach = true;
+    for (int d = 0; d < 3; d++)
+      if (!domain->periodicity[d] && (atom->x[i][d] < lo[d] - margin || atom->x[i][d] > hi[d] + margin)) reach = false;
+    if (!reach) continue;
     for (int d = 0; d < 3; d++) mine.push_back(atom->x[i][d]);
     for (int d = 0; d < 4; d++) mine.push_back(polyhedra ? atom->quaternion[i][d] : double(d == 0));
     mine.push_back(polyhedra ? atom->shapetype[i] : -1);
@@ -289,21 +319,22 @@ std::vector<PlacementObstacle> chain_segments(Domain *domain, const std::vector<
 
 // The grid of everything the new grains must not overlap: the chain segments, then every
 // existing atom a new grain can reach (a grain of the library, else a sphere of its
-// radius). A new grain's centre lies in [lo, hi] (the region's bounds), so an atom whose
-// centre is farther from them along a non-periodic axis than its radius (a grain's bounding
-// radius) plus the largest new bounding radius touches none and is left out: its shape is
-// not built, and a column laid layer by layer places each layer among the grains of the
-// layers next to it only.
+// radius). A new grain's centre lies in [lo, hi] (the region's bounds, or those of a
+// layer's sites), so an atom whose centre is farther from them along a non-periodic axis
+// than its radius (a grain's bounding radius) plus the largest new bounding radius touches
+// none and is left out, neither gathered (gathered: how many were) nor built: a column
+// laid layer by layer places each layer among the grains of the layers next to it only.
 wiregrain::PlacementGrid obstacle_grid(LAMMPS *lmp, const wiregrain::ShapeLibrary &library,
                                        const std::vector<int> &shape_of, bool polyhedra, const Eigen::Vector3d &lo,
-                                       const Eigen::Vector3d &hi) {
+                                       const Eigen::Vector3d &hi, long &gathered) {
   Domain *domain = lmp->domain;
-  const std::vector<double> all = gather_existing_atoms(lmp, polyhedra);
-  std::vector<PlacementObstacle> segments = chain_segments(domain, all);
-
   double max_bound = 0.0;
   for (int shape : shape_of) max_bound = std::max(max_bound, library[shape].bounding_radius);
   const double new_bound = max_bound;
+  const std::vector<double> all = gather_atoms_within_reach(lmp, polyhedra, lo, hi, new_bound);
+  gathered = static_cast<long>(all.size() / kExistingValues);
+  std::vector<PlacementObstacle> segments = chain_segments(domain, all);
+
   std::vector<double> existing;
   for (std::size_t e = 0; e < all.size() / kExistingValues; e++) {
     const double *v = &all[kExistingValues * e];
@@ -499,7 +530,7 @@ void write_shapes(LAMMPS *lmp, const GrainSettings &s, const wiregrain::ShapeLib
 
 // What was made, on screen and in the log (rank 0).
 void report(LAMMPS *lmp, const GrainSettings &s, size_t n_sites, const wiregrain::GrainPlacement &placed, int maxtag,
-            int library_before, int library_size) {
+            int library_before, int library_size, long gathered, bigint existing) {
   const bool spheres = s.bodies == GrainBodies::spheres, superquadrics = s.bodies == GrainBodies::superquadrics;
   const int n = s.n;
   char line[512];
@@ -519,6 +550,11 @@ void report(LAMMPS *lmp, const GrainSettings &s, size_t n_sites, const wiregrain
   else
     snprintf(line, sizeof line, "create_grains: no close pairs (bounding spheres apart), %ld attempts\n", placed.tries);
   msg += line;
+  if (existing > 0) {
+    snprintf(line, sizeof line, "create_grains: %ld of the %lld atoms already in the box within reach of the region\n",
+             gathered, static_cast<long long>(existing));
+    msg += line;
+  }
   if (lmp->screen) fputs(msg.c_str(), lmp->screen);
   if (lmp->logfile) fputs(msg.c_str(), lmp->logfile);
 }
@@ -548,7 +584,19 @@ void CreateGrains::command(int narg, char **arg) {
   const wiregrain::GrainShapeDraw draw = draw_shapes(rng, s, poly, own_library, args);
   const wiregrain::ShapeLibrary &library = poly ? poly->shapes() : own_library;
 
-  wiregrain::PlacementGrid grid = obstacle_grid(lmp, library, draw.shape_of, poly != NULL, lo, hi);
+  // the box of the centres to come: the region's, or a layer's sites
+  Eigen::Vector3d reach_lo = lo, reach_hi = hi;
+  if (s.layer && !sites.empty()) {
+    reach_lo = reach_hi = sites.front();
+    for (const Eigen::Vector3d &site : sites) {
+      reach_lo = reach_lo.cwiseMin(site);
+      reach_hi = reach_hi.cwiseMax(site);
+    }
+  }
+  const bigint existing = atom->natoms;
+  long gathered = 0;
+  wiregrain::PlacementGrid grid =
+      obstacle_grid(lmp, library, draw.shape_of, poly != NULL, reach_lo, reach_hi, gathered);
   const wiregrain::GrainPlacement placed = place(grid, draw, s, sites, lo, hi, rng, args);
   check_in_box(domain, placed.position, args);
 
@@ -561,5 +609,5 @@ void CreateGrains::command(int narg, char **arg) {
     args.fail(std::to_string(s.n - created) + " of " + std::to_string(s.n) +
               " grains were not created by any rank (outside every subdomain)");
   if (!s.shapes_file.empty()) write_shapes(lmp, s, library, draw.shape_of, placed, maxtag, args);
-  if (comm->me == 0) report(lmp, s, sites.size(), placed, maxtag, library_before, library.size());
+  if (comm->me == 0) report(lmp, s, sites.size(), placed, maxtag, library_before, library.size(), gathered, existing);
 }

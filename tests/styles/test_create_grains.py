@@ -511,6 +511,21 @@ create_grains   1 60 random high seed 22 write_shapes shapes.txt
         gap, pairs = reported(res.output)
         self.assertEqual(pairs, len(g_all) - len(g_old))
         self.assertGreater(len(gaps(first + second)) - len(gaps(first)) - len(gaps(second)), 0)  # in reach
+        # only the atoms within reach are gathered from the ranks: a centre within its
+        # bounding radius plus the largest new one of the region's box, counted here from
+        # the written grains (the second command: none of the far layer; the third: the
+        # layer below, not the far one)
+        counts = [(int(a), int(b)) for a, b in re.findall(
+            r"^create_grains: (\d+) of the (\d+) atoms already in the box within reach of the region", res.output, re.M)]
+
+        def within_reach(old, new, lo, hi):
+            reach = max(g.bounding_radius() for g in new)
+            return sum(all(lo[d] - g.bounding_radius() - reach <= g.x[d] <= hi[d] + g.bounding_radius() + reach
+                           for d in range(3)) for g in old)
+
+        self.assertEqual(counts, [(within_reach(far, first, (-7, -4, 0), (7, 4, 2)), 25),
+                                  (within_reach(far + first, second, (-7, -4, 2), (7, 4, 6)), 50)])
+        self.assertEqual([n for n, _ in counts], [0, 25])
 
     def test_avoids_wire(self):
         # atom_style hybrid: grains keep clear of the wire's segments (spherocylinders of
