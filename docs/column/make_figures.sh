@@ -62,7 +62,7 @@ S=$R/silo_2026-12-06
 # the Table 1 column with and without wire: four readings of its height through the wall phase
 /usr/bin/python3 $P/column_readings.py $R/table1_readings_2026-12-06/readings.csv \
     --plot docs/column/table1_readings_2026-12-06.png
-# the Table 1 column at mu_w 0.1 and 0.5 and without wire: four readings of its height
+# the Table 1 column at mu_w 0.1, 0.5 and 0.6 and without wire: four readings of its height
 /usr/bin/python3 $P/column_readings.py $R/table1_mu_w_2026-12-07/readings.csv \
     --plot docs/column/table1_mu_w_readings_2026-12-07.png
 # the tall column's wire laid as separate loops and as one continuous wire: tension and

@@ -4,15 +4,18 @@
 # the tops dumped every 2 time units of the wall phase (-var t_tops 2), one core (the build
 # and decks of commit 9b3459a, 104 min beside two other runs); mu_w = 0.5 and the column
 # without wire are the pair of table1_readings_2026-12-06 (the build of commit 54600ba).
-# mu_w = 0.3 and 0.6 (the same command) were started with the build of commit 4c76a88 and
-# restart files (-var t_restart 25 -var layer_restart 1): the same command again continues
-# them. Run from the repository root; kept here: column.obs, final.json, the final VTK files,
-# the four readings (readings.csv, with the mu_w = 0.5 and no-wire rows) and what the wire
-# held (hold.csv).
+# mu_w = 0.6, 0.3, 0.2 and 0.4 were started with the build and decks of commit 4c76a88 and
+# restart files (-var t_restart 25 -var layer_restart 1); 0.6 finished (83 min of its own
+# wall clock on one core beside two to four other runs); the same commands again continue
+# the others. Run from the repository root; kept here per finished value: column.obs,
+# final.json, the final VTK files, the four readings (readings.csv, with the mu_w = 0.5 and
+# no-wire rows) and what the wire held (hold.csv).
 set -e
 D=docs/column/runs/table1_mu_w_2026-12-07
 postprocess/sweep.py mu_w 0.1 --seeds 4242 --var t_tops 2 --var t_restart 25 --out sweeps/table1_mu_w
 postprocess/sweep.py mu_w 0.6 0.3 --seeds 4242 --var t_tops 2 --var t_restart 25 --var layer_restart 1 \
+    --out sweeps/table1_mu_w
+postprocess/sweep.py mu_w 0.2 0.4 --seeds 4242 --var t_tops 2 --var t_restart 25 --var layer_restart 1 \
     --out sweeps/table1_mu_w
 s=sweeps/table1_mu_w/mu_w=0.1/seed=4242
 postprocess/column_readings.py $s --radius 10 --label "wire mu_w 0.1" --csv mu_w_0.1_readings.csv
@@ -22,3 +25,11 @@ postprocess/wire_hold.py $s --radius 10 --label "wire mu_w 0.1" --csv $D/hold.cs
 mkdir -p $D/mu_w_0.1/post
 cp $s/column.obs $s/final.json $D/mu_w_0.1/
 cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_0.1/post/
+s=sweeps/table1_mu_w/mu_w=0.6/seed=4242
+postprocess/column_readings.py $s --radius 10 --label "wire mu_w 0.6" --csv mu_w_0.6_readings.csv
+postprocess/column_readings.py $D/readings.csv mu_w_0.6_readings.csv --csv $D/readings.csv
+postprocess/wire_hold.py $s --radius 10 --label "wire mu_w 0.6" --csv hold_0.6.csv
+tail -n +2 hold_0.6.csv >> $D/hold.csv
+mkdir -p $D/mu_w_0.6/post
+cp $s/column.obs $s/final.json $D/mu_w_0.6/
+cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_0.6/post/
