@@ -16,6 +16,11 @@ postprocess/sweep.py R 7 5 8 6 9 --seeds 4242 --var t_tops 2 --var wire 0 --out 
 # a second seed of R = 7 with and without wire (the build and decks of commit 309c1c9)
 postprocess/sweep.py R 7 --seeds 1001 --var t_tops 2 --out sweeps/R_wire
 postprocess/sweep.py R 7 --seeds 1001 --var t_tops 2 --var wire 0 --out sweeps/R_nowire
+# a second seed of R = 9 with and without wire (the build and decks of commit 4c76a88, with
+# restarts; the same commands again continue an interrupted run)
+postprocess/sweep.py R 9 --seeds 1001 --var t_tops 2 --var t_restart 25 --var layer_restart 1 --out sweeps/R_wire
+postprocess/sweep.py R 9 --seeds 1001 --var t_tops 2 --var t_restart 25 --var layer_restart 1 --var wire 0 \
+    --out sweeps/R_nowire
 for R in 7 5 8 6; do
   postprocess/column_readings.py sweeps/R_wire/R=$R/seed=4242 sweeps/R_nowire/R=$R/seed=4242 \
       --radius $R --label "wire R=$R" "no wire R=$R" --csv $D/readings_R$R.csv
@@ -25,8 +30,12 @@ for R in 9; do
       --radius $R --label "wire R=$R" "no wire R=$R" --csv $D/readings_R$R.csv
 done
 postprocess/wire_hold.py sweeps/R_wire/R=9/seed=4242 --radius 9 --label "wire R=9" --csv $D/hold_R9.csv
+postprocess/column_readings.py sweeps/R_wire/R=9/seed=1001 sweeps/R_nowire/R=9/seed=1001 --radius 9 \
+    --label "wire R=9 seed=1001" "no wire R=9 seed=1001" --csv $D/readings_R9_seed1001.csv
+postprocess/wire_hold.py sweeps/R_wire/R=9/seed=1001 --radius 9 --label "wire R=9 seed=1001" --csv hold_R9_1001.csv
+tail -n +2 hold_R9_1001.csv >> $D/hold_R9.csv
 for arm in R_wire R_nowire; do
-  for run in R=7/seed=4242 R=5/seed=4242 R=8/seed=4242 R=6/seed=4242 R=9/seed=4242 R=7/seed=1001; do
+  for run in R=7/seed=4242 R=5/seed=4242 R=8/seed=4242 R=6/seed=4242 R=9/seed=4242 R=7/seed=1001 R=9/seed=1001; do
     s=$arm/$run; [ -f sweeps/$s/final.json ] || continue
     mkdir -p $D/$s/post
     cp sweeps/$s/column.obs sweeps/$s/final.json $D/$s/
