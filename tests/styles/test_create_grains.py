@@ -512,9 +512,10 @@ create_grains   1 60 random high seed 22 write_shapes shapes.txt
         self.assertEqual(pairs, len(g_all) - len(g_old))
         self.assertGreater(len(gaps(first + second)) - len(gaps(first)) - len(gaps(second)), 0)  # in reach
         # only the atoms within reach are gathered from the ranks: a centre within its
-        # bounding radius plus the largest new one of the region's box, counted here from
-        # the written grains (the second command: none of the far layer; the third: the
-        # layer below, not the far one)
+        # bounding radius plus the largest new one of the box of the new centres, counted
+        # here from the written grains with the region's box (the second command, a layer,
+        # takes the box of its sites, inside the region's: the far layer is out of reach of
+        # both, none; the third: the layer below, not the far one)
         counts = [(int(a), int(b)) for a, b in re.findall(
             r"^create_grains: (\d+) of the (\d+) atoms already in the box within reach of the region", res.output, re.M)]
 
