@@ -25,19 +25,13 @@ postprocess/wire_hold.py $s --radius 10 --label "wire mu_w 0.1" --csv $D/hold.cs
 mkdir -p $D/mu_w_0.1/post
 cp $s/column.obs $s/final.json $D/mu_w_0.1/
 cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_0.1/post/
-s=sweeps/table1_mu_w/mu_w=0.6/seed=4242
-postprocess/column_readings.py $s --radius 10 --label "wire mu_w 0.6" --csv mu_w_0.6_readings.csv
-postprocess/column_readings.py $D/readings.csv mu_w_0.6_readings.csv --csv $D/readings.csv
-postprocess/wire_hold.py $s --radius 10 --label "wire mu_w 0.6" --csv hold_0.6.csv
-tail -n +2 hold_0.6.csv >> $D/hold.csv
-mkdir -p $D/mu_w_0.6/post
-cp $s/column.obs $s/final.json $D/mu_w_0.6/
-cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_0.6/post/
-s=sweeps/table1_mu_w/mu_w=0.3/seed=4242
-postprocess/column_readings.py $s --radius 10 --label "wire mu_w 0.3" --csv mu_w_0.3_readings.csv
-postprocess/column_readings.py $D/readings.csv mu_w_0.3_readings.csv --csv $D/readings.csv
-postprocess/wire_hold.py $s --radius 10 --label "wire mu_w 0.3" --csv hold_0.3.csv
-tail -n +2 hold_0.3.csv >> $D/hold.csv
-mkdir -p $D/mu_w_0.3/post
-cp $s/column.obs $s/final.json $D/mu_w_0.3/
-cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_0.3/post/
+for v in 0.6 0.3; do
+  s=sweeps/table1_mu_w/mu_w=$v/seed=4242
+  postprocess/column_readings.py $s --radius 10 --label "wire mu_w $v" --csv mu_w_${v}_readings.csv
+  postprocess/column_readings.py $D/readings.csv mu_w_${v}_readings.csv --csv $D/readings.csv
+  postprocess/wire_hold.py $s --radius 10 --label "wire mu_w $v" --csv hold_$v.csv
+  tail -n +2 hold_$v.csv >> $D/hold.csv
+  mkdir -p $D/mu_w_$v/post
+  cp $s/column.obs $s/final.json $D/mu_w_$v/
+  cp $s/post/grains_final* $s/post/wire_final* $D/mu_w_$v/post/
+done
