@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 #include <Eigen/Core>
@@ -369,12 +368,20 @@ void FixWireGrain::check_time_step() {
 // periodic image is found by HeldGrains' minimum image from any copy). No grain record
 // leaves its rank.
 void FixWireGrain::hold_grains() {
-  std::vector<wiregrain::HeldGrain> grains;
-  std::unordered_set<long> taken;
+  // each grain once (a ghost may be a periodic image of an owned grain): its first copy in
+  // LIGGGHTS' order, the grains in tag order
   const int nall = atom->nlocal + atom->nghost;
+  held_copies_.clear();
+  for (int i = 0; i < nall; i++)
+    if (is_grain(i)) held_copies_.push_back(i);
+  std::stable_sort(held_copies_.begin(), held_copies_.end(), [&](int a, int b) { return atom->tag[a] < atom->tag[b]; });
+  held_copies_.erase(std::unique(held_copies_.begin(), held_copies_.end(),
+                                 [&](int a, int b) { return atom->tag[a] == atom->tag[b]; }),
+                     held_copies_.end());
+  std::vector<wiregrain::HeldGrain> grains;
+  grains.reserve(held_copies_.size());
   const bool superquadric = stock_grains_ && atom->superquadric_flag;
-  for (int i = 0; i < nall; i++) {
-    if (!is_grain(i) || !taken.insert(atom->tag[i]).second) continue;
+  for (int i : held_copies_) {
     wiregrain::HeldGrain g;
     g.tag = atom->tag[i];
     g.material = atom->type[i];

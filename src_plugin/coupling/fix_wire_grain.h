@@ -141,6 +141,7 @@ class FixWireGrain : public Fix, public wiregrain_lmp::ContactPublisher {
   bool loads_by_owner_;          // grains distributed: loads reach the owners by reverse communication
   double **output_;              // per-atom array (see above)
   std::vector<int> segment_contacts_;  // this step, per owned bead: grains touching its segment
+  std::vector<int> held_copies_;       // hold_grains' scratch: the local index of each held grain's copy
   int nmax_ghost_;
   double local_stats_[5];        // contacts, overlap, overlap / r_w, evaluations, sliding contacts
   double global_stats_[8];

@@ -157,7 +157,9 @@ TEST(ContactPenetration, RandomOverlapsMatchMinkowskiHull) {
     const PosedShape a(sa, pa.x, pa.q), b(sb, pb.x, pb.q);
     double depth, second;
     Vector3d normal;
-    if (!penetration_from_minkowski_hull(a.vertices(), b.vertices(), depth, normal, second))
+    const std::vector<Vector3d> va(a.vertices().begin(), a.vertices().end());
+    const std::vector<Vector3d> vb(b.vertices().begin(), b.vertices().end());
+    if (!penetration_from_minkowski_hull(va, vb, depth, normal, second))
       continue;
     ++checked;
     const CoreDistance cd = core_distance(a, b);

@@ -254,6 +254,17 @@ TEST_F(PairCache, ASphereNeedsAFinitePositiveRadius) {
   }
 }
 
+TEST_F(PairCache, AGrainHeldTwiceIsAnError) {
+  grains.push_back(grains[5]);  // a periodic image gathered as a second grain
+  try {
+    hold();
+    FAIL() << "accepted grain " << grains[5].tag << " twice";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.argument()), "grains");
+    EXPECT_EQ(std::string(e.what()), "grain " + std::to_string(grains[5].tag) + " is held twice (one copy per tag)");
+  }
+}
+
 TEST(PairCacheArguments, SkinMustBePositiveAndFinite) {
   for (double bad : {0.0, -0.1, std::nan(""), double(INFINITY)}) {
     try {

@@ -21,6 +21,9 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
     for (std::size_t k : order) by_tag.push_back(std::move(grains_[k]));
     grains_ = std::move(by_tag);
   }
+  for (std::size_t k = 1; k < grains_.size(); ++k)
+    if (grains_[k].tag == grains_[k - 1].tag)
+      throw InvalidArgument("grains", "grain " + std::to_string(grains_[k].tag) + " is held twice (one copy per tag)");
   if (!(segment_reach > 0.0) || !std::isfinite(segment_reach))
     throw InvalidArgument("segment_reach", "segment_reach must be finite and > 0, got " + format_number(segment_reach));
   double largest = 0.0;
@@ -47,7 +50,6 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
                                                                   : library[g.shape].bounding_radius;
     bounding_radius_.push_back(bounding);
     largest = std::max(largest, bounding);
-    index_of_tag_[g.tag] = static_cast<int>(k);
   }
   const double cell = largest + segment_reach;
   box.validate();
@@ -64,8 +66,10 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
 }
 
 int HeldGrains::index_of(long tag) const {
-  const auto it = index_of_tag_.find(tag);
-  return it == index_of_tag_.end() ? -1 : it->second;
+  // the grains are in tag order
+  const auto it = std::lower_bound(grains_.begin(), grains_.end(), tag,
+                                   [](const HeldGrain& g, long t) { return g.tag < t; });
+  return it != grains_.end() && it->tag == tag ? static_cast<int>(it - grains_.begin()) : -1;
 }
 
 bool HeldGrains::candidate_order(const Candidate& a, const Candidate& b) {

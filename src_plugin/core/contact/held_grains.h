@@ -58,8 +58,9 @@ class HeldGrains {
   // segment_reach: the largest ℓ/2 + r_w of a segment that will be queried (> 0).
   // Throws InvalidArgument: a grain's shape not in the library ("shape"), a sphere whose
   // radius is not finite and > 0 ("sphere_radius"), a superquadric with bad half-axes or
-  // blockiness ("half_axes", "blockiness"), a non-finite pose or motion ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box
-  // shorter than twice the interaction distance ("box").
+  // blockiness ("half_axes", "blockiness"), a non-finite pose or motion or a tag given
+  // twice ("grains"), segment_reach ≤ 0 ("segment_reach"), a periodic box shorter than
+  // twice the interaction distance ("box").
   // box: the simulation box the grains live in (core/geometry/periodic_box.h).
   HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& library, const PeriodicBox& box,
              double segment_reach);
@@ -121,7 +122,6 @@ class HeldGrains {
   const ShapeLibrary* library_;
   mutable std::vector<std::optional<PosedShape>> posed_;
   std::vector<double> bounding_radius_;
-  std::unordered_map<long, int> index_of_tag_;
   double segment_reach_;
   PeriodicBox box_;
   BroadPhaseGrid grid_;

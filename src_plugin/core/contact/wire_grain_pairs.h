@@ -87,7 +87,7 @@ class WireGrainPairCache {
       const double moved_segment = segment_motion(held.box(), entry, x0, x1);
       const Eigen::Vector3d middle = 0.5 * (x0 + x1);
       for (Pair& p : entry.pairs) {
-        const int k = held.index_of(p.tag);
+        const int k = p.grain;
         if (p.gap > moved_segment + grain_moved_[k] + p.grain_moved && held.grain(k).shape != HeldGrain::kSuperquadric) {
           ++skipped_;
           continue;
@@ -108,7 +108,7 @@ class WireGrainPairCache {
     held.for_each_candidate(x0, x1, wire_radius, skin_, [&](int k, const Eigen::Vector3d& shift) {
       GjkSimplex simplex;
       const double gap = evaluate(k, shift, skin_, warm_geometry_ ? &simplex : nullptr);
-      if (gap < skin_) entry.pairs.push_back({held.grain(k).tag, gap, grain_moved_[k], simplex});
+      if (gap < skin_) entry.pairs.push_back({k, gap, grain_moved_[k], simplex});
     });
   }
 
@@ -120,7 +120,9 @@ class WireGrainPairCache {
 
  private:
   struct Pair {
-    long tag;
+    // the grain's index in HeldGrains: the same grain through the entry's epoch, whose held
+    // sets have the same tags (hold() resets when one differs) in the same (tag) order
+    int grain;
     double gap;          // exact, at the entry's build
     double grain_moved;  // D_k at the entry's build
     GjkSimplex simplex;  // of its last evaluation

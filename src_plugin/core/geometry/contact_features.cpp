@@ -123,10 +123,9 @@ Vector3d feature_point_on_line(const PosedShape& P, const ContactFeature& f, con
   }
 }
 
-std::vector<Vector2d> face_polygon(const PosedShape& P, int face, const ContactFrame& frame) {
+PlanePolygon face_polygon(const PosedShape& P, int face, const ContactFrame& frame) {
   const auto& loop = P.shape().faces()[face].vertices;
-  std::vector<Vector2d> poly;
-  poly.reserve(loop.size());
+  PlanePolygon poly;
   for (int i : loop) poly.push_back(frame.project(P.vertices()[i]));
   if (P.face_normal(face).dot(frame.n) < 0.0) std::reverse(poly.begin(), poly.end());
   return poly;

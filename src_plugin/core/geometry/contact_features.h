@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/geometry/contact_frame.h"
+#include "core/geometry/polygon_clipping.h"
 #include "core/geometry/posed_shape.h"
 
 namespace wiregrain {
@@ -47,6 +48,6 @@ Eigen::Vector3d feature_point_on_line(const PosedShape& P, const ContactFeature&
 
 // 2D polygon of a face, counter-clockwise about n (the face's loop is counter-clockwise
 // about its outward normal; reversed when that points against n).
-std::vector<Eigen::Vector2d> face_polygon(const PosedShape& P, int face, const ContactFrame& frame);
+PlanePolygon face_polygon(const PosedShape& P, int face, const ContactFrame& frame);
 
 }  // namespace wiregrain

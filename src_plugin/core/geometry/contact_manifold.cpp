@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/container/small_vector.hpp>
+
 #include "core/common/errors.h"
 #include "core/geometry/contact_frame.h"
 #include "core/geometry/polygon_clipping.h"
@@ -26,6 +28,10 @@ struct CorePair {
   Vector3d a, b;
   Vector2d in_plane;  // position in the contact plane (for the polygon reduction)
 };
+// a manifold's few points and pairs, inline (no heap allocation per contact)
+using CorePairs = boost::container::small_vector<CorePair, 16>;
+using CorePoints = boost::container::small_vector<Vector3d, 16>;
+using NearContactPoints = boost::container::small_vector<ContactPoint, 16>;
 
 ContactPoint make_point(const Vector3d& core_a, const Vector3d& core_b, const Vector3d& n,
                         double r_a, double r_b) {
@@ -40,13 +46,12 @@ ContactPoint make_point(const Vector3d& core_a, const Vector3d& core_b, const Ve
 
 // Multi-point manifolds from the two features; empty when the features give no
 // polygon/segment (a vertex is involved, crossing edges, or degenerate clipping).
-std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& fa,
-                                    const PosedShape& B, const ContactFeature& fb,
-                                    const ContactFrame& frame, double sin_tol, double tol) {
-  std::vector<CorePair> out;
+CorePairs feature_pairs(const PosedShape& A, const ContactFeature& fa, const PosedShape& B,
+                        const ContactFeature& fb, const ContactFrame& frame, double sin_tol, double tol) {
+  CorePairs out;
   const Vector3d& n = frame.n;
   if (fa.kind == FeatureKind::face && fb.kind == FeatureKind::face) {
-    std::vector<Vector2d> poly =
+    PlanePolygon poly =
         clip_polygon(face_polygon(A, fa.index, frame), face_polygon(B, fb.index, frame), tol);
     poly = convex_hull_2d(poly, tol);
     const Vector3d Na = A.face_normal(fa.index);
@@ -73,7 +78,7 @@ std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& f
                       lo, hi))
       return out;
     const double length = (frame.project(e1) - frame.project(e0)).norm();
-    std::vector<double> params = {lo, hi};
+    PolygonValues params = {lo, hi};
     if ((hi - lo) * length <= tol) params = {0.5 * (lo + hi)};
     for (double s : params) {
       const Vector3d on_edge = e0 + s * (e1 - e0);
@@ -101,7 +106,7 @@ std::vector<CorePair> feature_pairs(const PosedShape& A, const ContactFeature& f
     const double lo = std::max(std::min(alpha0, alpha1), std::min(beta0, beta1));
     const double hi = std::min(std::max(alpha0, alpha1), std::max(beta0, beta1));
     if (hi < lo - tol) return out;
-    std::vector<double> at = {lo, hi};
+    PolygonValues at = {lo, hi};
     if (hi - lo <= tol) at = {0.5 * (lo + hi)};
     for (double sigma : at) {
       const double sa = std::clamp((sigma - alpha0) / (alpha1 - alpha0), 0.0, 1.0);
@@ -167,7 +172,7 @@ CorePair single_pair(const PosedShape& A, const ContactFeature& fa, const PosedS
 constexpr double kNearVertexSlab = 0.1;
 
 // At most max_points of them (0: all), the smallest gaps first.
-void keep_deepest(std::vector<ContactPoint>& points, int max_points) {
+void keep_deepest(NearContactPoints& points, int max_points) {
   if (max_points <= 0 || static_cast<int>(points.size()) <= max_points) return;
   std::stable_sort(points.begin(), points.end(),
                    [](const ContactPoint& x, const ContactPoint& y) { return x.gap < y.gap; });
@@ -177,10 +182,11 @@ void keep_deepest(std::vector<ContactPoint>& points, int max_points) {
 struct NearPoint {
   Vector3d a, b, normal;
 };
+using NearPoints = boost::container::small_vector<NearPoint, 16>;
 
 void add_near_vertices(const PosedShape& P, const PosedShape& Q, bool p_is_a, const Vector3d& n,
                        double core_distance, double reach, double size, double tol,
-                       const std::vector<Vector3d>& taken, std::vector<NearPoint>& out) {
+                       const CorePoints& taken, NearPoints& out) {
   const double support = support_value(P, n);
   const double depth_limit = reach - core_distance;
   const auto is_taken = [&](const Vector3d& v) {
@@ -261,7 +267,7 @@ ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
   m.feature_b = select_feature(b, -n, cos_tol, sin_tol, tol);
 
   const ContactFrame frame(cd.point_a, n);
-  std::vector<CorePair> pairs = feature_pairs(a, m.feature_a, b, m.feature_b, frame, sin_tol, tol);
+  CorePairs pairs = feature_pairs(a, m.feature_a, b, m.feature_b, frame, sin_tol, tol);
   if (pairs.empty()) {
     if (cd.method == DistanceMethod::gjk || cd.method == DistanceMethod::gjk_sat)
       pairs.push_back({cd.point_a, cd.point_b, frame.project(cd.point_a)});
@@ -269,31 +275,32 @@ ContactManifold contact_manifold(const PosedShape& a, const PosedShape& b,
       pairs.push_back(single_pair(a, m.feature_a, b, m.feature_b, frame, cd.distance));
   }
 
-  std::vector<Vector2d> in_plane;
-  std::vector<double> gaps;
+  PlanePolygon in_plane;
+  PolygonValues gaps;
   for (const auto& p : pairs) {
     in_plane.push_back(p.in_plane);
     gaps.push_back(n.dot(p.b - p.a));
   }
-  for (int i : reduce_polygon(in_plane, gaps, options.max_points))
-    m.points.push_back(make_point(pairs[i].a, pairs[i].b, n, r_a, r_b));
+  const PolygonIndices kept = reduce_polygon(in_plane, gaps, options.max_points);
 
+  NearContactPoints near_points;
   if (options.near_vertices) {
-    std::vector<Vector3d> taken_a, taken_b;
+    CorePoints taken_a, taken_b;
     for (const auto& p : pairs) {
       taken_a.push_back(p.a);
       taken_b.push_back(p.b);
     }
-    std::vector<NearPoint> near;
+    NearPoints near;
     const double near_reach =
         std::min(activation_distance, kNearVertexSlab * (a.core_radius() + b.core_radius())) + r_a + r_b;
     add_near_vertices(a, b, true, n, cd.distance, near_reach, size, tol, taken_a, near);
     add_near_vertices(b, a, false, -n, cd.distance, near_reach, size, tol, taken_b, near);
-    std::vector<ContactPoint> points;
-    for (const NearPoint& p : near) points.push_back(make_point(p.a, p.b, p.normal, r_a, r_b));
-    keep_deepest(points, options.max_points);
-    m.points.insert(m.points.end(), points.begin(), points.end());
+    for (const NearPoint& p : near) near_points.push_back(make_point(p.a, p.b, p.normal, r_a, r_b));
+    keep_deepest(near_points, options.max_points);
   }
+  m.points.reserve(kept.size() + near_points.size());  // one allocation
+  for (int i : kept) m.points.push_back(make_point(pairs[i].a, pairs[i].b, n, r_a, r_b));
+  m.points.insert(m.points.end(), near_points.begin(), near_points.end());
   return m;
 }
 
@@ -323,11 +330,13 @@ ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
   const double size = grain.core_radius();
   m.feature_b = select_feature(grain, -n, std::cos(options.angle_tolerance),
                                std::sin(options.angle_tolerance), kMergeTolerance * size);
-  std::vector<int> vertices;
+  PolygonIndices vertices;
   switch (m.feature_b.kind) {
-    case FeatureKind::face:
-      vertices = grain.shape().faces()[m.feature_b.index].vertices;
+    case FeatureKind::face: {
+      const auto& loop = grain.shape().faces()[m.feature_b.index].vertices;
+      vertices.assign(loop.begin(), loop.end());
       break;
+    }
     case FeatureKind::edge: {
       const auto& e = grain.shape().edges()[m.feature_b.index];
       vertices = {e[0], e[1]};
@@ -338,28 +347,30 @@ ContactManifold plane_contact(const Plane& wall, const PosedShape& grain,
       vertices = {m.feature_b.index};
   }
   const ContactFrame frame(wall.point, n);
-  std::vector<Vector2d> in_plane;
-  std::vector<double> gaps;
+  PlanePolygon in_plane;
+  PolygonValues gaps;
   for (int v : vertices) {
     in_plane.push_back(frame.project(grain.vertices()[v]));
     gaps.push_back(n.dot(grain.vertices()[v] - wall.point));
   }
-  for (int i : reduce_polygon(in_plane, gaps, options.max_points)) {
-    const Vector3d& v = grain.vertices()[vertices[i]];
-    m.points.push_back(make_point(v - gaps[i] * n, v, n, 0.0, r));
-  }
+  const PolygonIndices kept = reduce_polygon(in_plane, gaps, options.max_points);
+  NearContactPoints near_points;
   if (options.near_vertices) {
     const double near_reach = std::min(activation_distance, kNearVertexSlab * grain.core_radius());
-    std::vector<ContactPoint> points;
     for (int i = 0; i < static_cast<int>(grain.vertices().size()); ++i) {
       const Vector3d& v = grain.vertices()[i];
       const double core_gap = n.dot(v - wall.point);
       if (core_gap - r < near_reach && std::find(vertices.begin(), vertices.end(), i) == vertices.end())
-        points.push_back(make_point(v - core_gap * n, v, n, 0.0, r));
+        near_points.push_back(make_point(v - core_gap * n, v, n, 0.0, r));
     }
-    keep_deepest(points, options.max_points);
-    m.points.insert(m.points.end(), points.begin(), points.end());
+    keep_deepest(near_points, options.max_points);
   }
+  m.points.reserve(kept.size() + near_points.size());  // one allocation
+  for (int i : kept) {
+    const Vector3d& v = grain.vertices()[vertices[i]];
+    m.points.push_back(make_point(v - gaps[i] * n, v, n, 0.0, r));
+  }
+  m.points.insert(m.points.end(), near_points.begin(), near_points.end());
   return m;
 }
 

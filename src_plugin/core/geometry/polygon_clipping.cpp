@@ -11,9 +11,8 @@ namespace wiregrain {
 
 using Eigen::Vector2d;
 
-std::vector<Vector2d> clip_polygon(const std::vector<Vector2d>& subject,
-                                   const std::vector<Vector2d>& clip, double tol) {
-  std::vector<Vector2d> out = subject;
+PlanePolygon clip_polygon(const PlanePolygon& subject, const PlanePolygon& clip, double tol) {
+  PlanePolygon out = subject;
   const std::size_t m = clip.size();
   for (std::size_t k = 0; k < m && !out.empty(); ++k) {
     const Vector2d& c0 = clip[k];
@@ -21,7 +20,7 @@ std::vector<Vector2d> clip_polygon(const std::vector<Vector2d>& subject,
     const double length = edge.norm();
     if (!(length > 0.0)) continue;
     const auto side = [&](const Vector2d& p) { return cross2(edge, p - c0) / length; };
-    std::vector<Vector2d> in = std::move(out);
+    const PlanePolygon in = out;
     out.clear();
     const std::size_t q = in.size();
     for (std::size_t i = 0; i < q; ++i) {
@@ -39,8 +38,7 @@ std::vector<Vector2d> clip_polygon(const std::vector<Vector2d>& subject,
   return out;
 }
 
-bool clip_segment(const Vector2d& p0, const Vector2d& p1, const std::vector<Vector2d>& poly,
-                  double tol, double& lo, double& hi) {
+bool clip_segment(const Vector2d& p0, const Vector2d& p1, const PlanePolygon& poly, double tol, double& lo, double& hi) {
   lo = 0.0;
   hi = 1.0;
   const std::size_t m = poly.size();
@@ -61,7 +59,7 @@ bool clip_segment(const Vector2d& p0, const Vector2d& p1, const std::vector<Vect
   return lo <= hi;
 }
 
-std::vector<Vector2d> convex_hull_2d(std::vector<Vector2d> points, double tol) {
+PlanePolygon convex_hull_2d(PlanePolygon points, double tol) {
   std::sort(points.begin(), points.end(), [](const Vector2d& a, const Vector2d& b) {
     return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
   });
@@ -72,7 +70,8 @@ std::vector<Vector2d> convex_hull_2d(std::vector<Vector2d> points, double tol) {
     const double length = (c - a).norm();
     return length <= tol || cross2(b - a, c - a) <= tol * length;
   };
-  std::vector<Vector2d> hull(2 * points.size());
+  // both chains, room for twice the points
+  boost::container::small_vector<Vector2d, 32> hull(2 * points.size());
   std::size_t k = 0;
   for (const auto& p : points) {  // lower chain
     while (k >= 2 && not_corner(hull[k - 2], hull[k - 1], p)) --k;
@@ -89,12 +88,11 @@ std::vector<Vector2d> convex_hull_2d(std::vector<Vector2d> points, double tol) {
   // a chain that came back on itself: merge coincident ends
   while (hull.size() > 1 && (hull.back() - hull.front()).norm() <= tol) hull.pop_back();
   if (hull.size() == 2 && (hull[1] - hull[0]).norm() <= tol) hull.pop_back();
-  return hull;
+  return PlanePolygon(hull.begin(), hull.end());
 }
 
-std::vector<int> reduce_polygon(const std::vector<Vector2d>& poly,
-                                const std::vector<double>& gaps, int max_points) {
-  std::vector<int> kept(poly.size());
+PolygonIndices reduce_polygon(const PlanePolygon& poly, const PolygonValues& gaps, int max_points) {
+  PolygonIndices kept(poly.size());
   for (std::size_t i = 0; i < poly.size(); ++i) kept[i] = static_cast<int>(i);
   if (max_points <= 0 || static_cast<int>(poly.size()) <= max_points) return kept;
   const int deepest =

@@ -8,7 +8,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
-#include <vector>
+#include <boost/container/small_vector.hpp>
 
 #include "core/geometry/convex_shape.h"
 
@@ -20,6 +20,10 @@ namespace wiregrain {
 // per time step can be used in all its pair queries).
 class PosedShape {
  public:
+  // The world-frame vertices, inline up to 24 (the paper's grains have 20): posing a grain
+  // allocates nothing.
+  using Vertices = boost::container::small_vector<Eigen::Vector3d, 24>;
+
   // orientation: body -> world, any non-zero finite quaternion (normalised here).
   // Non-finite position: InvalidArgument("position"); zero or non-finite orientation:
   // InvalidArgument("orientation").
@@ -39,7 +43,7 @@ class PosedShape {
   // world-frame core: vertex i, unit outward normal and plane offset of face f
   // (normal · x = offset on the face). The faces are turned when asked for: most pairs
   // need those at one vertex only (posing them all was half of the posing time).
-  const std::vector<Eigen::Vector3d>& vertices() const { return vertices_; }
+  const Vertices& vertices() const { return vertices_; }
   Eigen::Vector3d face_normal(int f) const { return rotation_ * shape_->faces()[f].normal; }
   double face_offset(int f) const { return shape_->faces()[f].offset + face_normal(f).dot(position_); }
 
@@ -55,7 +59,7 @@ class PosedShape {
   Eigen::Quaterniond orientation_;
   Eigen::Matrix3d rotation_;
   double core_radius_ = 0.0;
-  std::vector<Eigen::Vector3d> vertices_;
+  Vertices vertices_;
 };
 
 // h(n) = max over the core's world vertices of n·x (the support function; n any vector).

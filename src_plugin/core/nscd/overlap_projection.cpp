@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <cstdint>
-#include <unordered_map>
 #include <optional>
 #include <utility>
 
@@ -39,31 +38,39 @@ struct PairGap {
 // 2. the pairs of the step's points, once each, in the order of their first point
 std::vector<ProjectedPair> projected_pairs(const std::vector<GrainState>& grains, const ShapeLibrary& library,
                                            const GrainStepProblem& problem) {
-  std::vector<ProjectedPair> pairs;
-  // (a or −(wall + 1), b) as one key
-  std::unordered_map<std::uint64_t, std::size_t> index_of;
-  index_of.reserve(problem.points.size());
-  for (const GrainContactPoint& p : problem.points) {
-    const NscdContact& c = p.constraint;
-    const int wall = c.body_a >= 0 ? -1 : static_cast<int>(-p.pair.first - 1);
-    const int first = c.body_a >= 0 ? c.body_a : -(wall + 1);
-    const std::uint64_t key = (std::uint64_t(std::uint32_t(first)) << 32) | std::uint32_t(c.body_b);
-    const auto [it, added] = index_of.insert({key, pairs.size()});
-    if (added) {
-      ProjectedPair pair;
-      pair.a = c.body_a;
-      pair.b = c.body_b;
-      pair.wall = wall;
-      pair.size = library[grains[c.body_b].shape].bounding_radius;
-      if (c.body_a >= 0) pair.size = std::min(pair.size, library[grains[c.body_a].shape].bounding_radius);
-      pairs.push_back(pair);
-    }
-    ProjectedPair& pair = pairs[it->second];
-    if (c.gap < pair.deepest && std::abs(p.frame.col(0).norm() - 1.0) < 1e-9) {  // a unit normal
-      pair.deepest = c.gap;
-      pair.axis = p.frame.col(0);
-    }
+  // the points by pair, (a or −(wall + 1), b) as one key, each pair's points in their order
+  const int count = static_cast<int>(problem.points.size());
+  std::vector<std::pair<std::uint64_t, int>> by_pair(count);
+  for (int i = 0; i < count; ++i) {
+    const GrainContactPoint& p = problem.points[i];
+    const int first = p.constraint.body_a >= 0 ? p.constraint.body_a : p.pair.first;  // a wall: −(wall + 1)
+    by_pair[i] = {(std::uint64_t(std::uint32_t(first)) << 32) | std::uint32_t(p.constraint.body_b), i};
   }
+  std::sort(by_pair.begin(), by_pair.end());
+  std::vector<std::pair<int, ProjectedPair>> found;  // (its first point, the pair)
+  for (int g = 0; g < count;) {
+    const GrainContactPoint& p0 = problem.points[by_pair[g].second];
+    ProjectedPair pair;
+    pair.a = p0.constraint.body_a;
+    pair.b = p0.constraint.body_b;
+    pair.wall = pair.a >= 0 ? -1 : static_cast<int>(-p0.pair.first - 1);
+    pair.size = library[grains[pair.b].shape].bounding_radius;
+    if (pair.a >= 0) pair.size = std::min(pair.size, library[grains[pair.a].shape].bounding_radius);
+    int end = g;
+    for (; end < count && by_pair[end].first == by_pair[g].first; ++end) {
+      const GrainContactPoint& p = problem.points[by_pair[end].second];
+      if (p.constraint.gap < pair.deepest && std::abs(p.frame.col(0).norm() - 1.0) < 1e-9) {  // a unit normal
+        pair.deepest = p.constraint.gap;
+        pair.axis = p.frame.col(0);
+      }
+    }
+    found.push_back({by_pair[g].second, pair});
+    g = end;
+  }
+  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<ProjectedPair> pairs;
+  pairs.reserve(found.size());
+  for (const auto& f : found) pairs.push_back(f.second);
   return pairs;
 }
 
