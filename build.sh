@@ -21,7 +21,7 @@ JOBS="${JOBS:-$(nproc)}"
 PACKAGES=(
   build-essential cmake ccache patch dpkg-dev pkg-config
   openmpi-bin libopenmpi-dev
-  libeigen3-dev libcgal-dev libgsl-dev libvtk9-dev
+  libeigen3-dev libcgal-dev libgsl-dev libvtk9-dev libboost-dev
   libgtest-dev libgmock-dev
   libfclib-dev libsiconos-numerics-dev
   python3 python3-numpy python3-scipy python3-matplotlib python3-vtk9  # scipy: postprocess/janssen.py
