@@ -141,6 +141,31 @@ void expect_index_changes_nothing(BroadPhaseGrid hashed, const std::vector<Eigen
   expect_same_pairs(indexed, x, period, cutoff);
 }
 
+// assign(points) against insert of each point: the same visits, indexed or not (a point
+// far away refuses the dense index)
+void expect_assign_is_insert(BroadPhaseGrid empty, std::vector<Eigen::Vector3d> x, const Eigen::Vector3d& lo,
+                             const Eigen::Vector3d& hi, bool far_point) {
+  if (far_point) x.push_back(hi + Eigen::Vector3d(1e6, 0, 0));
+  BroadPhaseGrid inserted = empty, assigned = empty;
+  for (const auto& p : x) inserted.insert(p);
+  inserted.index();
+  assigned.assign(x);
+  ASSERT_EQ(assigned.size(), inserted.size());
+  ASSERT_EQ(assigned.indexed(), !far_point);
+  ASSERT_EQ(inserted.indexed(), !far_point);
+  long total = 0;
+  for (const auto& q : random_points(300, lo, hi, 23)) {
+    const auto a = visits(inserted, q), b = visits(assigned, q);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); k++) {
+      ASSERT_EQ(a[k].first, b[k].first);
+      ASSERT_EQ(a[k].second, b[k].second);
+    }
+    total += static_cast<long>(a.size());
+  }
+  EXPECT_GT(total, 300);
+}
+
 }  // namespace
 
 TEST(BroadPhase, DenseIndexVisitsTheSamePointsInTheSameOrder) {
@@ -184,4 +209,13 @@ TEST(BroadPhase, DenseIndexIsNotBuiltForAFarPointAndDroppedByAnInsert) {
   near.insert(x.back());
   EXPECT_FALSE(near.indexed());
   expect_same_pairs(near, x, Eigen::Vector3d::Zero(), 1.0);
+}
+
+TEST(BroadPhase, AssignedPointsAreVisitedAsInsertedOnes) {
+  const Eigen::Vector3d lo(-1, 2, 0), hi(4, 6, 3);
+  for (bool far_point : {false, true}) {
+    expect_assign_is_insert(BroadPhaseGrid::unbounded(0.7), random_points(400, lo, hi, 7), lo, hi, far_point);
+    expect_assign_is_insert(BroadPhaseGrid::box(lo, hi, {true, false, true}, 0.6), random_points(400, lo, hi, 9), lo, hi,
+                            false);
+  }
 }

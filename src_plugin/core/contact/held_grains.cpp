@@ -61,8 +61,10 @@ HeldGrains::HeldGrains(std::vector<HeldGrain> grains, const ShapeLibrary& librar
   grid_ = box.periodic[0] || box.periodic[1] || box.periodic[2]
               ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell)
               : BroadPhaseGrid::unbounded(cell);
-  for (const HeldGrain& g : grains_) grid_.insert(g.position);
-  grid_.index();
+  std::vector<Eigen::Vector3d> centres;
+  centres.reserve(grains_.size());
+  for (const HeldGrain& g : grains_) centres.push_back(g.position);
+  grid_.assign(std::move(centres));
 }
 
 int HeldGrains::index_of(long tag) const {

@@ -45,6 +45,14 @@ int BroadPhaseGrid::insert(const Eigen::Vector3d& x) {
   return index;
 }
 
+void BroadPhaseGrid::assign(std::vector<Eigen::Vector3d> points) {
+  points_ = std::move(points);
+  cells_.clear();
+  index();
+  if (!indexed_)  // the hash, as insert() fills it
+    for (int j = 0; j < size(); ++j) cells_[key(cell_of(points_[j]))].push_back(j);
+}
+
 void BroadPhaseGrid::index() {
   indexed_ = false;
   if (points_.empty()) return;

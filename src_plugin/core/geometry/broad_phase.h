@@ -43,6 +43,11 @@ class BroadPhaseGrid {
   // hash stays in use) when the box of the points' cells holds more than 8 N + 64 cells
   // for N points, e.g. one point far from the others. The next insert drops it.
   void index();
+  // The grid of exactly `points` (index j the j-th), indexed: the same grid as inserting
+  // them in order and calling index(), without filling the hash when the dense index is
+  // built (a grid rebuilt every step, e.g. a step's grains, then allocates nothing per
+  // point).
+  void assign(std::vector<Eigen::Vector3d> points);
   bool indexed() const { return indexed_; }
   int size() const { return static_cast<int>(points_.size()); }
   const Eigen::Vector3d& point(int index) const { return points_[index]; }

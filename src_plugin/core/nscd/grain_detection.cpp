@@ -106,8 +106,10 @@ void grid_candidates(const std::vector<GrainState>& grains, const ShapeLibrary& 
   // periodic dimensions: the grid wraps its cells (its box's other dimensions only place
   // the cells; a grain outside them falls into the end cell)
   BroadPhaseGrid grid = box.any() ? BroadPhaseGrid::box(box.lo, box.hi, box.periodic, cell) : BroadPhaseGrid::unbounded(cell);
-  for (const GrainState& g : grains) grid.insert(g.position);
-  grid.index();
+  std::vector<Eigen::Vector3d> centres;
+  centres.reserve(grains.size());
+  for (const GrainState& g : grains) centres.push_back(g.position);
+  grid.assign(std::move(centres));
   std::vector<int> near;
   for (int a = 0; a < n; a++) {
     const double ra = library[grains[a].shape].bounding_radius;
