@@ -10,7 +10,7 @@
 namespace wiregrain {
 
 // A polygon of the contact plane and a value or an index per vertex: a face's loop or a
-// clipped polygon, inline up to 16 vertices, so that a contact query allocates nothing.
+// clipped polygon, inline up to 16 vertices: clipping allocates nothing on the heap.
 using PlanePolygon = boost::container::small_vector<Eigen::Vector2d, 16>;
 using PolygonValues = boost::container::small_vector<double, 16>;
 using PolygonIndices = boost::container::small_vector<int, 16>;
