@@ -215,6 +215,7 @@ def main():
     n = TABLE1["grains"] / (TABLE1["width"] ** 2 * TABLE1["height"])
     # columns of the Table 1 grains at its packing, as grains and height (side = their square base)
     columns = [("Table 1", 915, 6.4), ("10x: 70 layers of the Table 1 column's", 9150, 64.0),
+               ("10x wide: the Table 1 column's 7 layers at R = 31.6", 9137, 6.4),
                ("100x: 70 layers of 10x the Table 1 column's", 91500, 64.0)]
     for name, grains, height in columns:
         side = math.sqrt(grains / (n * height))

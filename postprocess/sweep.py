@@ -13,9 +13,9 @@ run as `liggghts -in DECK -var PARAM VALUE -var seed S -var root REPOSITORY [--v
 with `mpirun -np NP` when NP > 1. A run is finished when its directory holds final.json
 (written here once the deck printed its "in.column final: ..." line and exited cleanly):
 finished runs are not repeated, so an interrupted sweep continues where it stopped, and a
-failed run (error.txt: its ERROR line) is tried again from the start. A run that was
-interrupted (killed, out of time: no final.json and no error.txt) continues from its latest
-restart file, as in.column's `resume` does: the wall phase's column_walls.restart (resume 3,
+failed run (one that printed an ERROR line; error.txt keeps it) is tried again from the start.
+A run that was interrupted (killed, out of time, or ended without an ERROR line: no final.json
+and no error.txt) continues from its latest restart file, as in.column's `resume` does: the wall phase's column_walls.restart (resume 3,
 written with --var t_restart T), else the relaxed column (resume 1), the deposit (resume 2)
 or the last layer's restart (resume 4, written with --var layer_restart 1); its earlier logs
 are kept as log.liggghts.1, .2, ... and its wall time is the parts' sum. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
@@ -153,7 +153,12 @@ def run_one(args, value, seed):
     final = parse_final(texts[0])
     if status != 0 or final is None:
         errors = [line for line in "\n".join(texts).splitlines() if line.startswith("ERROR")]
-        error = f"{where}: exit {status}; " + (errors[-1] if errors else "no final line in log.liggghts")
+        if not errors:
+            # killed (a signal, out of memory, the machine stopped) or crashed: its restart
+            # files are sound, so the next call continues it instead of starting over
+            return None, (f"{where}: exit {status}, no ERROR line and no final line: interrupted; "
+                          f"the next call continues it from its latest restart")
+        error = f"{where}: exit {status}; {errors[-1]}"
         with open(os.path.join(where, "error.txt"), "w") as f:
             f.write(error + "\n")
         return None, error
@@ -274,7 +279,7 @@ def main():
         todo = [(v, s) for v, s in todo if finished(args, v, s)]
         os.makedirs(args.out, exist_ok=True)
         write_summary(os.path.join(args.out, "summary.csv"), [run_one(args, v, s)[0] for v, s in todo])
-        print(f"{len(todo)} runs finished, {len(failed)} failed, {missing - len(failed)} not run or running; "
+        print(f"{len(todo)} runs finished, {len(failed)} failed, {missing - len(failed)} not run, running or interrupted; "
               f"table in {os.path.join(args.out, 'summary.csv')}")
         return 1 if failed else 0
     rows, failures = {}, []

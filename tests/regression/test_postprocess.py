@@ -98,6 +98,18 @@ class Sweep(DeckTestCase):
                 os.remove(os.path.join(where, name))
         with open(os.path.join(where, "column_layer.txt"), "w") as f:
             f.write("1\n")
+        # a LIGGGHTS killed before it prints anything (a signal, out of memory): no ERROR
+        # line, so the run is interrupted, not failed, and keeps its restart files
+        killed = os.path.join(self.work, "killed_liggghts")
+        with open(killed, "w") as f:
+            f.write("#!/bin/sh\nkill -9 $$\n")
+        os.chmod(killed, 0o755)
+        status, text = script("sweep.py", *[killed if a == LIGGGHTS else a for a in args], "--out", cut,
+                              cwd=self.work)
+        self.assertEqual(status, 1)
+        self.assertIn(f"FAILED v_wall=0.2 seed=11: {where}: exit -9, no ERROR line and no final line: interrupted; "
+                      "the next call continues it from its latest restart", text)
+        self.assertFalse(os.path.exists(os.path.join(where, "error.txt")))
         status, text = script("sweep.py", *args, "--out", cut, cwd=self.work)
         self.assertEqual(status, 0, text[-2000:])
         self.assertIn("v_wall=0.2 seed=11: continues with resume 4", text)
