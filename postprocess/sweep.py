@@ -15,8 +15,8 @@ with `mpirun -np NP` when NP > 1. A run is finished when its directory holds fin
 finished runs are not repeated, so an interrupted sweep continues where it stopped, and a
 failed run (one that printed an ERROR line; error.txt keeps it) is tried again from the start.
 A run that was interrupted (killed, out of time, or ended without an ERROR line: no final.json
-and no error.txt) continues from its latest restart file, as in.column's `resume` does: the wall phase's column_walls.restart (resume 3,
-written with --var t_restart T), else the relaxed column (resume 1), the deposit (resume 2)
+and no error.txt) continues from its latest restart file, as in.column's `resume` does: the
+wall phase's column_walls.restart (resume 3, written with --var t_restart T), else the relaxed column (resume 1), the deposit (resume 2)
 or the last layer's restart (resume 4, written with --var layer_restart 1); its earlier logs
 are kept as log.liggghts.1, .2, ... and its wall time is the parts' sum. --summary-only runs nothing and tabulates the finished runs. --jobs runs that many at once (default: cores / NP).
 
@@ -279,8 +279,8 @@ def main():
         todo = [(v, s) for v, s in todo if finished(args, v, s)]
         os.makedirs(args.out, exist_ok=True)
         write_summary(os.path.join(args.out, "summary.csv"), [run_one(args, v, s)[0] for v, s in todo])
-        print(f"{len(todo)} runs finished, {len(failed)} failed, {missing - len(failed)} not run, running or interrupted; "
-              f"table in {os.path.join(args.out, 'summary.csv')}")
+        print(f"{len(todo)} runs finished, {len(failed)} failed, {missing - len(failed)} not run, running or "
+              f"interrupted; table in {os.path.join(args.out, 'summary.csv')}")
         return 1 if failed else 0
     rows, failures = {}, []
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
